@@ -1,0 +1,39 @@
+// obscura: the command line. main only wires subcommands; each lives in its own file.
+#include <cstdio>
+#include <exception>
+
+#include <CLI/CLI.hpp>
+
+#include "obscura/math/error.h"
+#include "render_command.h"
+#include "usage_error.h"
+
+int main(int argc, char** argv) {
+  CLI::App app("Obscura: a physical camera that turns a 3D scene into an image.", "obscura");
+  app.set_version_flag("--version", "obscura " OBSCURA_VERSION);
+  app.require_subcommand(1);
+  obscura::app::add_render_command(app);
+
+  try {
+    app.parse(argc, argv);
+  } catch (const CLI::CallForHelp& e) {
+    return app.exit(e);
+  } catch (const CLI::CallForAllHelp& e) {
+    return app.exit(e);
+  } catch (const CLI::CallForVersion& e) {
+    return app.exit(e);
+  } catch (const CLI::ParseError& e) {
+    std::fprintf(stderr, "obscura: error: %s\nRun 'obscura --help' for usage.\n", e.what());
+    return 2;
+  } catch (const obscura::app::UsageError& e) {
+    std::fprintf(stderr, "obscura: error: %s\n", e.what());
+    return 2;
+  } catch (const obscura::Error& e) {
+    std::fprintf(stderr, "obscura: error: %s\n", e.what());
+    return 1;
+  } catch (const std::exception& e) {
+    std::fprintf(stderr, "obscura: internal error: %s\n", e.what());
+    return 1;
+  }
+  return 0;
+}

@@ -1,0 +1,104 @@
+#include "render_command.h"
+
+#include <cstdio>
+#include <memory>
+#include <optional>
+
+#include <tbb/global_control.h>
+
+#include "obscura/io/image_io.h"
+#include "obscura/math/error.h"
+#include "obscura/scene/builtin_scenes.h"
+#include "obscura/trace/direct_lighting.h"
+#include "obscura/trace/render.h"
+#include "progress_bar.h"
+#include "usage_error.h"
+
+namespace obscura::app {
+
+namespace {
+
+struct RenderOptions {
+  std::string scene;
+  std::string output = "render.png";
+  int width = 512, height = 512;
+  int spp = 32;
+  int threads = 0;
+  uint64_t seed = 0;
+  bool quiet = false;
+  bool list_scenes = false;
+};
+
+void validate(const RenderOptions& o) {
+  if (o.width <= 0) throw UsageError("--width must be a positive number of pixels; got " + std::to_string(o.width));
+  if (o.height <= 0) throw UsageError("--height must be a positive number of pixels; got " + std::to_string(o.height));
+  if (o.spp <= 0) throw UsageError("--spp must be a positive number of samples per pixel; got " + std::to_string(o.spp));
+  if (o.threads < 0) throw UsageError("--threads must be 0 (all cores) or positive; got " + std::to_string(o.threads));
+}
+
+Scene load_scene(const std::string& name) {
+  if (name.empty()) return make_builtin_scene(builtin_scene_names().front());
+  if (is_builtin_scene(name)) return make_builtin_scene(name);
+  std::string known;
+  for (const std::string& n : builtin_scene_names()) known += (known.empty() ? "" : ", ") + n;
+  throw Error(name, "not a built-in scene (built-in: " + known +
+                        "); scene files are not supported by this version yet");
+}
+
+void run_render(const RenderOptions& options) {
+  if (options.list_scenes) {
+    for (const std::string& name : builtin_scene_names()) std::printf("%s\n", name.c_str());
+    return;
+  }
+  validate(options);
+  check_output_path(options.output);  // fail before rendering, not after
+
+  std::optional<tbb::global_control> thread_limit;
+  if (options.threads > 0)
+    thread_limit.emplace(tbb::global_control::max_allowed_parallelism, size_t(options.threads));
+
+  Scene scene = load_scene(options.scene);
+  scene.camera.width = options.width;
+  scene.camera.height = options.height;
+  scene.validate();
+
+  auto device = std::make_shared<EmbreeDevice>();
+  TraceScene trace_scene(scene, device);
+  Film film(options.width, options.height);
+  RenderSettings settings{.samples_per_pixel = options.spp, .seed = options.seed};
+  ProgressBar bar("render", options.quiet);
+  RenderStats stats = render(trace_scene, scene.camera, DirectLightingIntegrator(), settings, film,
+                             [&](int done, int total) { bar.update(done, total); });
+  bar.finish();
+
+  write_image(options.output, film.to_image());
+  if (!options.quiet)
+    std::fprintf(stderr, "rendered %s: %dx%d, %d spp in %s (%.2f Mrays/s)\n", scene.name.c_str(),
+                 options.width, options.height, options.spp, format_seconds(stats.seconds).c_str(),
+                 stats.seconds > 0 ? stats.rays.total() / stats.seconds * 1e-6 : 0.0);
+  std::printf("%s\n", options.output.c_str());
+}
+
+}  // namespace
+
+void add_render_command(CLI::App& app) {
+  auto options = std::make_shared<RenderOptions>();
+  CLI::App* render = app.add_subcommand("render", "Render a scene to an image file");
+  render->add_option("scene", options->scene,
+                     "A built-in scene name (see --scene-list); default: the Cornell box");
+  render->add_option("-o,--output", options->output,
+                     "Output image; the format follows the extension: .png, .exr, .pfm")
+      ->capture_default_str();
+  render->add_option("--width", options->width, "Image width in pixels")->capture_default_str();
+  render->add_option("--height", options->height, "Image height in pixels")->capture_default_str();
+  render->add_option("--spp", options->spp, "Samples per pixel")->capture_default_str();
+  render->add_option("--threads", options->threads, "Worker threads (0 = all cores)")
+      ->capture_default_str();
+  render->add_option("--seed", options->seed, "Random seed: same seed, same image")
+      ->capture_default_str();
+  render->add_flag("-q,--quiet", options->quiet, "No progress or summary on stderr");
+  render->add_flag("--scene-list", options->list_scenes, "List the built-in scenes and exit");
+  render->callback([options] { run_render(*options); });
+}
+
+}  // namespace obscura::app

@@ -1,0 +1,35 @@
+// Warps from the unit square [0,1)² to other domains, each with its density.
+//
+// Directions on hemispheres are in a local frame whose +Z is the surface normal.
+#pragma once
+
+#include <numbers>
+
+#include "obscura/math/vector.h"
+
+namespace obscura {
+
+inline constexpr float kPi = std::numbers::pi_v<float>;
+inline constexpr float kInvPi = std::numbers::inv_pi_v<float>;
+
+// Uniform on the unit disk by Shirley–Chiu's concentric mapping (keeps strata compact, so it is
+// also the lens-sampling warp).
+Point2f sample_uniform_disk_concentric(Point2f u);
+// Uniform on the unit disk by polar mapping r = √u₀, φ = 2π·u₁.
+Point2f sample_uniform_disk_polar(Point2f u);
+inline constexpr float uniform_disk_pdf() { return kInvPi; }
+
+Vector3f sample_uniform_hemisphere(Point2f u);
+inline constexpr float uniform_hemisphere_pdf() { return 0.5f * kInvPi; }
+
+Vector3f sample_uniform_sphere(Point2f u);
+inline constexpr float uniform_sphere_pdf() { return 0.25f * kInvPi; }
+
+// Cosine-weighted hemisphere (Malley's method: project the concentric disk up).
+Vector3f sample_cosine_hemisphere(Point2f u);
+inline float cosine_hemisphere_pdf(float cos_theta) { return cos_theta * kInvPi; }
+
+// Uniform barycentric coordinates (b0, b1) on a triangle; b2 = 1 − b0 − b1.
+Point2f sample_uniform_triangle(Point2f u);
+
+}  // namespace obscura

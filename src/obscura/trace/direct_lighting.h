@@ -1,0 +1,16 @@
+// Direct lighting: emitted light seen directly plus one bounce of light from the area lights to a
+// Lambertian surface, estimated by sampling a point on the lights and casting a shadow ray.
+// This is the next-event-estimation step of a path tracer on its own.
+#pragma once
+
+#include "obscura/trace/integrator.h"
+
+namespace obscura {
+
+class DirectLightingIntegrator final : public Integrator {
+ public:
+  Rgb radiance(const TraceScene& scene, const Ray& ray, PixelSampler& sampler,
+               RayCounts& counts) const override;
+};
+
+}  // namespace obscura
