@@ -3,6 +3,10 @@
 #include <unistd.h>
 
 #include <algorithm>
+#include <bit>
+#include <cerrno>
+#include <cstdio>
+#include <cstring>
 #include <cmath>
 #include <cstdint>
 #include <filesystem>
@@ -47,6 +51,25 @@ std::vector<uint8_t> encode_srgb_8bit(const Image& image) {
   return out;
 }
 
+// PFM (Portable Float Map): "PF" (RGB) or "Pf" (grey), the size, a scale whose negative sign
+// means little-endian, then rows of 32-bit floats from the bottom of the image to the top.
+// OpenImageIO 2.4 reads PFM but has no writer for it, so it is written here.
+bool write_pfm(const fs::path& file, const Image& image) {
+  std::FILE* f = std::fopen(file.c_str(), "wb");
+  if (!f) return false;
+  std::fprintf(f, "PF\n%d %d\n-1.0\n", image.width, image.height);
+  std::vector<float> row(size_t(image.width) * 3);
+  bool ok = true;
+  for (int y = image.height - 1; y >= 0 && ok; --y) {
+    for (int x = 0; x < image.width; ++x)
+      for (int c = 0; c < 3; ++c) row[size_t(x) * 3 + c] = image.at(x, y, c);  // drops alpha
+    ok = std::fwrite(row.data(), sizeof(float), row.size(), f) == row.size();
+  }
+  return std::fclose(f) == 0 && ok;
+}
+
+static_assert(std::endian::native == std::endian::little, "the PFM writer assumes little-endian");
+
 }  // namespace
 
 ImageFormat image_format_for_path(const std::string& path) {
@@ -59,12 +82,12 @@ ImageFormat image_format_for_path(const std::string& path) {
 
 void check_output_path(const std::string& path) {
   if (path.empty()) throw Error("output path is empty");
-  image_format_for_path(path);
   fs::path target(path);
   std::error_code ec;
   if (fs::is_directory(target, ec))
     throw Error(path, "output path is a directory; expected a file name such as " +
                           (target / "render.png").string());
+  image_format_for_path(path);
   fs::path parent = target.parent_path().empty() ? fs::path(".") : target.parent_path();
   if (!fs::is_directory(parent, ec))
     throw Error(path, "output directory '" + parent.string() + "' does not exist");
@@ -81,21 +104,33 @@ void write_image(const std::string& path, const Image& image) {
                           "; expected a non-empty RGB or RGBA image");
   check_output_path(path);
   ImageFormat format = image_format_for_path(path);
-
-  auto out = OIIO::ImageOutput::create(path);
-  if (!out) throw Error(path, "no image writer: " + OIIO::geterror());
-  OIIO::TypeDesc type = format == ImageFormat::kPng ? OIIO::TypeDesc::UINT8 : OIIO::TypeDesc::FLOAT;
-  OIIO::ImageSpec spec(image.width, image.height, image.channels, type);
-  if (!image.channel_names.empty()) spec.channelnames = image.channel_names;
-  spec.attribute("oiio:ColorSpace", format == ImageFormat::kPng ? "sRGB" : "Linear");
-  spec.attribute("Software", "Obscura " OBSCURA_VERSION);
-
   fs::path tmp = temporary_path_for(path);
   auto fail = [&](const std::string& what) {
     std::error_code ignored;
     fs::remove(tmp, ignored);
     throw Error(path, what);
   };
+  auto move_into_place = [&] {
+    std::error_code ec;
+    fs::rename(tmp, path, ec);
+    if (ec) fail("cannot move the finished file into place: " + ec.message());
+  };
+
+  if (format == ImageFormat::kPfm) {
+    if (!write_pfm(tmp, image)) fail("cannot write: " + std::string(std::strerror(errno)));
+    move_into_place();
+    return;
+  }
+
+  auto out = OIIO::ImageOutput::create(path);
+  if (!out) throw Error(path, "no image writer: " + OIIO::geterror());
+  OIIO::TypeDesc type =
+      format == ImageFormat::kPng ? OIIO::TypeDesc::UINT8 : OIIO::TypeDesc::FLOAT;
+  OIIO::ImageSpec spec(image.width, image.height, image.channels, type);
+  if (!image.channel_names.empty()) spec.channelnames = image.channel_names;
+  spec.attribute("oiio:ColorSpace", format == ImageFormat::kPng ? "sRGB" : "Linear");
+  spec.attribute("Software", "Obscura " OBSCURA_VERSION);
+
   if (!out->open(tmp.string(), spec)) fail("cannot open for writing: " + out->geterror());
   bool ok;
   if (format == ImageFormat::kPng) {
@@ -110,9 +145,7 @@ void write_image(const std::string& path, const Image& image) {
     fail("write failed: " + message);
   }
   if (!out->close()) fail("write failed: " + out->geterror());
-  std::error_code ec;
-  fs::rename(tmp, path, ec);
-  if (ec) fail("cannot move the finished file into place: " + ec.message());
+  move_into_place();
 }
 
 Image read_image(const std::string& path) {
