@@ -1,0 +1,31 @@
+#!/usr/bin/env bash
+# The dependency rule of docs/architecture.md: each layer of src/obscura/ may include only the
+# layers listed for it. Prints every violation; exits 1 if there is any.
+set -euo pipefail
+root="${1:-$(dirname "$0")/..}"
+cd "$root/src/obscura"
+
+declare -A allowed=(
+  [math]="math"
+  [color]="color math"
+  [camera]="camera math"
+  [scene]="scene math color camera"
+  [film]="film math color"
+  [io]="io scene film color math camera"
+  [trace]="trace math color camera scene film"
+  [raster]="raster math color camera scene film"
+)
+
+status=0
+for layer in "${!allowed[@]}"; do
+  [ -d "$layer" ] || continue
+  while IFS= read -r line; do
+    file=${line%%:*}
+    included=$(sed -E 's/.*#include "obscura\/([a-z_]+)\/.*/\1/' <<<"$line")
+    if ! grep -qw -- "$included" <<<"${allowed[$layer]}"; then
+      echo "layering: src/obscura/$file includes obscura/$included/ (allowed for $layer: ${allowed[$layer]})"
+      status=1
+    fi
+  done < <(grep -rn '#include "obscura/[a-z_]*/' "$layer" || true)
+done
+exit $status
