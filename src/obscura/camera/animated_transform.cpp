@@ -4,6 +4,7 @@
 #include <cmath>
 #include <string>
 
+#include "obscura/camera/number_text.h"
 #include "obscura/math/error.h"
 
 namespace obscura {
@@ -44,7 +45,7 @@ Quaternion quaternion_from_rotation(const double r[3][3]) {
 
 Decomposed decompose(const Transform& t, size_t key_index) {
   const auto& m = t.matrix().m;
-  auto where = "camera motion key " + std::to_string(key_index);
+  auto where = "camera motion key " + number_text(key_index);
   if (m[3][0] != 0 || m[3][1] != 0 || m[3][2] != 0 || m[3][3] != 1)
     throw Error(where, "must be an affine transform (last row 0 0 0 1)");
   Decomposed d;
@@ -119,11 +120,11 @@ AnimatedTransform::AnimatedTransform(std::vector<Key> keys) : keys_(std::move(ke
   if (keys_.empty()) throw Error("camera motion", "needs at least one key");
   for (size_t i = 0; i < keys_.size(); ++i) {
     if (!std::isfinite(keys_[i].time_s))
-      throw Error("camera motion key " + std::to_string(i), "time is not finite");
+      throw Error("camera motion key " + number_text(i), "time is not finite");
     if (i > 0 && !(keys_[i].time_s > keys_[i - 1].time_s))
-      throw Error("camera motion key " + std::to_string(i),
-                  "times must increase; got " + std::to_string(keys_[i].time_s) + " after " +
-                      std::to_string(keys_[i - 1].time_s));
+      throw Error("camera motion key " + number_text(i),
+                  "times must increase; got " + number_text(keys_[i].time_s) + " after " +
+                      number_text(keys_[i - 1].time_s));
     if (keys_.size() > 1) decompose(keys_[i].transform, i);  // reject shear up front
   }
 }

@@ -4,6 +4,7 @@
 #include <numbers>
 #include <string>
 
+#include "obscura/camera/number_text.h"
 #include "obscura/math/error.h"
 
 namespace obscura {
@@ -73,7 +74,7 @@ double aperture_area(const Aperture& a) {
 void validate(const Aperture& a) {
   if (a.blades != 0 && a.blades < 3)
     throw Error("camera.aperture_blades",
-                "must be 0 (a circle) or at least 3; got " + std::to_string(a.blades));
+                "must be 0 (a circle) or at least 3; got " + number_text(a.blades));
   if (!std::isfinite(a.rotation_degrees))
     throw Error("camera.aperture_rotation_degrees", "must be finite");
 }

@@ -5,6 +5,7 @@
 #include <limits>
 #include <string>
 
+#include "obscura/camera/number_text.h"
 #include "obscura/math/error.h"
 
 namespace obscura {
@@ -62,10 +63,10 @@ void Camera::validate() const {
   bool orthographic = std::holds_alternative<Orthographic>(projection);
   if (orthographic ? !(near_m >= 0) : !(near_m > 0))
     throw Error("camera.near_m", std::string("must be ") + (orthographic ? "≥ 0" : "positive") +
-                                     "; got " + std::to_string(near_m));
+                                     "; got " + number_text(near_m));
   if (!(far_m > near_m))
-    throw Error("camera.far_m", "must exceed near (" + std::to_string(near_m) + " m); got " +
-                                    std::to_string(far_m));
+    throw Error("camera.far_m", "must exceed near (" + number_text(near_m) + " m); got " +
+                                    number_text(far_m));
   obscura::validate(lens, focal_length_mm());
   if (lens.depth_of_field && !std::holds_alternative<Perspective>(projection))
     throw Error("camera.depth_of_field", "needs a perspective projection; this camera is " +

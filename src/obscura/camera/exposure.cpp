@@ -4,6 +4,7 @@
 #include <iterator>
 #include <string>
 
+#include "obscura/camera/number_text.h"
 #include "obscura/math/error.h"
 
 namespace obscura {
@@ -38,12 +39,12 @@ double exposure_scale(const Exposure& e, double f_number, double exposure_time_s
 
 void validate(const Exposure& e, double exposure_time_s) {
   if (!std::isfinite(e.compensation_ev))
-    throw Error("camera.exposure_ev", "must be finite; got " + std::to_string(e.compensation_ev));
+    throw Error("camera.exposure_ev", "must be finite; got " + number_text(e.compensation_ev));
   if (!(e.iso > 0) || !std::isfinite(e.iso))
-    throw Error("camera.iso", "must be positive; got " + std::to_string(e.iso));
+    throw Error("camera.iso", "must be positive; got " + number_text(e.iso));
   if (e.mode == ExposureMode::physical && !(exposure_time_s > 0))
     throw Error("camera.shutter", "physical exposure needs the shutter open for some time; got " +
-                                      std::to_string(exposure_time_s) + " s");
+                                      number_text(exposure_time_s) + " s");
 }
 
 ExposureMode parse_exposure_mode(std::string_view text) {

@@ -3,6 +3,7 @@
 #include <cmath>
 #include <string>
 
+#include "obscura/camera/number_text.h"
 #include "obscura/math/error.h"
 
 namespace obscura {
@@ -14,15 +15,15 @@ Bounds2i FilmGeometry::crop_pixels() const {
 
 void validate(const FilmGeometry& film) {
   if (film.width_px <= 0 || film.height_px <= 0)
-    throw Error("camera.resolution", "must be positive; got " + std::to_string(film.width_px) +
-                                         "x" + std::to_string(film.height_px));
+    throw Error("camera.resolution", "must be positive; got " + number_text(film.width_px) +
+                                         "x" + number_text(film.height_px));
   if (!(film.pixel_aspect > 0) || !std::isfinite(film.pixel_aspect))
     throw Error("camera.pixel_aspect",
-                "must be positive; got " + std::to_string(film.pixel_aspect));
+                "must be positive; got " + number_text(film.pixel_aspect));
   const CropWindow& c = film.crop;
   auto in_unit = [](double v) { return v >= 0 && v <= 1; };
-  std::string crop_text = std::to_string(c.x_min) + "," + std::to_string(c.y_min) + "," +
-                          std::to_string(c.x_max) + "," + std::to_string(c.y_max);
+  std::string crop_text = number_text(c.x_min) + "," + number_text(c.y_min) + "," +
+                          number_text(c.x_max) + "," + number_text(c.y_max);
   if (!in_unit(c.x_min) || !in_unit(c.y_min) || !in_unit(c.x_max) || !in_unit(c.y_max))
     throw Error("camera.crop", "must lie within [0, 1]; got " + crop_text);
   Bounds2i pixels = film.crop_pixels();

@@ -5,6 +5,7 @@
 #include <numbers>
 #include <string>
 
+#include "obscura/camera/number_text.h"
 #include "obscura/math/error.h"
 
 namespace obscura {
@@ -12,10 +13,10 @@ namespace obscura {
 Camera from_gltf_perspective(const GltfPerspective& g, int width_px, int height_px) {
   if (!(g.yfov_radians > 0 && g.yfov_radians < std::numbers::pi))
     throw Error("camera.perspective.yfov",
-                "must be in (0, π) radians; got " + std::to_string(g.yfov_radians));
+                "must be in (0, π) radians; got " + number_text(g.yfov_radians));
   if (g.aspect_ratio && !(*g.aspect_ratio > 0))
     throw Error("camera.perspective.aspectRatio",
-                "must be positive; got " + std::to_string(*g.aspect_ratio));
+                "must be positive; got " + number_text(*g.aspect_ratio));
   Camera camera;
   camera.projection =
       Perspective::from_vertical_fov_degrees(g.yfov_radians * 180 / std::numbers::pi);
@@ -30,9 +31,9 @@ Camera from_gltf_perspective(const GltfPerspective& g, int width_px, int height_
 
 Camera from_gltf_orthographic(const GltfOrthographic& g, int width_px) {
   if (!(g.xmag_m > 0))
-    throw Error("camera.orthographic.xmag", "must be positive; got " + std::to_string(g.xmag_m));
+    throw Error("camera.orthographic.xmag", "must be positive; got " + number_text(g.xmag_m));
   if (!(g.ymag_m > 0))
-    throw Error("camera.orthographic.ymag", "must be positive; got " + std::to_string(g.ymag_m));
+    throw Error("camera.orthographic.ymag", "must be positive; got " + number_text(g.ymag_m));
   Camera camera;
   camera.projection = Orthographic{.view_height_m = 2 * g.ymag_m, .view_width_m = 2 * g.xmag_m};
   camera.near_m = g.znear_m;

@@ -4,6 +4,7 @@
 #include <numbers>
 #include <string>
 
+#include "obscura/camera/number_text.h"
 #include "obscura/math/error.h"
 
 namespace obscura {
@@ -15,12 +16,12 @@ constexpr double kDegreesPerRadian = 180 / std::numbers::pi;
 void check_fov(const char* name, double fov) {
   if (!(fov > 0 && fov < 180))
     throw Error(std::string("camera.") + name,
-                "must be in (0, 180) degrees; got " + std::to_string(fov));
+                "must be in (0, 180) degrees; got " + number_text(fov));
 }
 
 void check_positive(const char* name, double value) {
   if (!(value > 0) || !std::isfinite(value))
-    throw Error(std::string("camera.") + name, "must be positive; got " + std::to_string(value));
+    throw Error(std::string("camera.") + name, "must be positive; got " + number_text(value));
 }
 
 bool fits_horizontally(const Perspective& p, double image_aspect) {

@@ -5,6 +5,7 @@
 #include <string>
 
 #include "obscura/camera/projection.h"  // Overloaded
+#include "obscura/camera/number_text.h"
 #include "obscura/math/error.h"
 
 namespace obscura {
@@ -85,9 +86,9 @@ PixelFilter make_pixel_filter(std::string_view name, double radius_px) {
 void validate(const PixelFilter& f) {
   double r = filter_radius_px(f);
   if (!(r > 0) || !std::isfinite(r))
-    throw Error("camera.filter_radius_px", "must be positive; got " + std::to_string(r));
+    throw Error("camera.filter_radius_px", "must be positive; got " + number_text(r));
   if (auto* g = std::get_if<GaussianFilter>(&f); g && !(g->sigma_px > 0))
-    throw Error("camera.filter_sigma_px", "must be positive; got " + std::to_string(g->sigma_px));
+    throw Error("camera.filter_sigma_px", "must be positive; got " + number_text(g->sigma_px));
 }
 
 FilterSampler::FilterSampler(const PixelFilter& filter) : filter_(filter) {

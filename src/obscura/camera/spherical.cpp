@@ -4,6 +4,7 @@
 #include <numbers>
 #include <string>
 
+#include "obscura/camera/number_text.h"
 #include "obscura/math/error.h"
 
 namespace obscura {
@@ -15,7 +16,7 @@ constexpr double kPi = std::numbers::pi;
 void validate(const Fisheye& f) {
   if (!(f.fov_degrees > 0 && f.fov_degrees <= 360))
     throw Error("camera.fisheye_fov_degrees",
-                "must be in (0, 360]; got " + std::to_string(f.fov_degrees));
+                "must be in (0, 360]; got " + number_text(f.fov_degrees));
 }
 
 Vector3d equirectangular_direction(Point2d uv) {

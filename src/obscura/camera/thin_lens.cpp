@@ -3,6 +3,7 @@
 #include <cmath>
 #include <string>
 
+#include "obscura/camera/number_text.h"
 #include "obscura/math/error.h"
 
 namespace obscura {
@@ -36,18 +37,18 @@ double circle_of_confusion_mm(const ThinLens& lens, double focal_length_mm, doub
 
 void validate(const ThinLens& lens, double focal_length_mm) {
   if (!(lens.f_number > 0) || !std::isfinite(lens.f_number))
-    throw Error("camera.f_number", "must be positive; got " + std::to_string(lens.f_number));
+    throw Error("camera.f_number", "must be positive; got " + number_text(lens.f_number));
   if (lens.aperture_diameter_mm &&
       (!(*lens.aperture_diameter_mm > 0) || !std::isfinite(*lens.aperture_diameter_mm)))
     throw Error("camera.aperture_diameter_mm",
-                "must be positive; got " + std::to_string(*lens.aperture_diameter_mm));
+                "must be positive; got " + number_text(*lens.aperture_diameter_mm));
   if (!(lens.focus_distance_m > 0))
     throw Error("camera.focus_distance_m",
-                "must be positive; got " + std::to_string(lens.focus_distance_m));
+                "must be positive; got " + number_text(lens.focus_distance_m));
   if (lens.depth_of_field && !(lens.focus_distance_m * kMillimetresPerMetre > focal_length_mm))
     throw Error("camera.focus_distance_m",
-                "must exceed the focal length (" + std::to_string(focal_length_mm) +
-                    " mm) to focus; got " + std::to_string(lens.focus_distance_m) + " m");
+                "must exceed the focal length (" + number_text(focal_length_mm) +
+                    " mm) to focus; got " + number_text(lens.focus_distance_m) + " m");
   validate(lens.aperture);
 }
 
