@@ -58,13 +58,14 @@ void run_render(const RenderOptions& options) {
     thread_limit.emplace(tbb::global_control::max_allowed_parallelism, size_t(options.threads));
 
   Scene scene = load_scene(options.scene);
-  scene.camera.width = options.width;
-  scene.camera.height = options.height;
+  scene.camera.film.width_px = options.width;
+  scene.camera.film.height_px = options.height;
   scene.validate();
 
   auto device = std::make_shared<EmbreeDevice>();
   TraceScene trace_scene(scene, device);
-  Film film(options.width, options.height);
+  Bounds2i crop = scene.camera.film.crop_pixels();
+  Film film(crop.width(), crop.height());
   RenderSettings settings{.samples_per_pixel = options.spp, .seed = options.seed};
   ProgressBar bar("render", options.quiet);
   RenderStats stats = render(trace_scene, scene.camera, DirectLightingIntegrator(), settings, film,

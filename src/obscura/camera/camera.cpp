@@ -1,35 +1,299 @@
 #include "obscura/camera/camera.h"
 
+#include <algorithm>
 #include <cmath>
-#include <numbers>
+#include <limits>
 #include <string>
 
+#include "obscura/camera/number_text.h"
 #include "obscura/math/error.h"
 
 namespace obscura {
 
-void Camera::validate() const {
-  if (!(vertical_fov_degrees > 0 && vertical_fov_degrees < 180))
-    throw Error("camera.vertical_fov_degrees",
-                "must be in (0, 180); got " + std::to_string(vertical_fov_degrees));
-  if (width <= 0 || height <= 0)
-    throw Error("camera resolution",
-                "must be positive; got " + std::to_string(width) + "x" + std::to_string(height));
+namespace {
+
+constexpr double kMetresPerMillimetre = 0.001;
+constexpr double kDegreesPerRadian = 180 / 3.14159265358979323846;
+
+// The fisheye's image circle touches the shorter side of the image; its radius in raster units
+// of height (a raster x distance times pixel_aspect is in the same physical units).
+double fisheye_radius(const FilmGeometry& film) {
+  return 0.5 * std::min(film.width_px * film.pixel_aspect, double(film.height_px));
 }
 
-Ray Camera::generate_ray(Point2f film_point) const {
-  double tan_half = std::tan(vertical_fov_degrees * std::numbers::pi / 360.0);
-  double aspect = double(width) / height;
-  // Raster → normalized device coordinates in [−1, 1] (y up) → the image plane at z = −1.
-  double ndc_x = 2.0 * film_point.x / width - 1.0;
-  double ndc_y = 1.0 - 2.0 * film_point.y / height;
-  Vector3d direction_camera(ndc_x * tan_half * aspect, ndc_y * tan_half, -1.0);
-  Point3d origin_world = world_from_camera(Point3d(0, 0, 0));
-  Vector3d direction_world = normalize(world_from_camera(direction_camera));
+Point2d fisheye_centered_from_raster(const FilmGeometry& film, Point2d raster) {
+  double r = fisheye_radius(film);
+  return {(raster.x - 0.5 * film.width_px) * film.pixel_aspect / r,
+          (0.5 * film.height_px - raster.y) / r};
+}
+
+Point2d raster_from_fisheye_centered(const FilmGeometry& film, Point2d c) {
+  double r = fisheye_radius(film);
+  return {0.5 * film.width_px + c.x * r / film.pixel_aspect, 0.5 * film.height_px - c.y * r};
+}
+
+// Inside the film rectangle, edges included, with a hair of slack so that points exactly on the
+// frustum's boundary survive the rounding of tan() and friends.
+bool on_film(const FilmGeometry& film, Point2d p) {
+  constexpr double kSlackPx = 1e-9;
+  return p.x >= -kSlackPx && p.x <= film.width_px + kSlackPx && p.y >= -kSlackPx &&
+         p.y <= film.height_px + kSlackPx;
+}
+
+}  // namespace
+
+Ray CameraRay::to_ray() const {
   Ray ray;
-  ray.origin = Point3f(origin_world);
-  ray.direction = Vector3f(direction_world);
+  ray.origin = Point3f(origin);
+  ray.direction = Vector3f(direction);
+  ray.t_min = float(t_min);
+  ray.t_max = std::isinf(t_max) ? std::numeric_limits<float>::infinity() : float(t_max);
+  ray.time = float(time_s);
   return ray;
+}
+
+void Camera::validate() const {
+  std::visit(Overloaded{
+                 [](const Perspective& p) { obscura::validate(p); },
+                 [](const Orthographic& o) { obscura::validate(o); },
+                 [](const Equirectangular&) {},
+                 [](const Fisheye& f) { obscura::validate(f); },
+             },
+             projection);
+  bool orthographic = std::holds_alternative<Orthographic>(projection);
+  if (orthographic ? !(near_m >= 0) : !(near_m > 0))
+    throw Error("camera.near_m", std::string("must be ") + (orthographic ? "≥ 0" : "positive") +
+                                     "; got " + number_text(near_m));
+  if (!(far_m > near_m))
+    throw Error("camera.far_m", "must exceed near (" + number_text(near_m) + " m); got " +
+                                    number_text(far_m));
+  obscura::validate(lens, focal_length_mm());
+  if (lens.depth_of_field && !std::holds_alternative<Perspective>(projection))
+    throw Error("camera.depth_of_field", "needs a perspective projection; this camera is " +
+                                             std::string(projection_name(projection)));
+  obscura::validate(shutter);
+  obscura::validate(exposure, shutter.duration_s());
+  obscura::validate(film);
+}
+
+double Camera::focal_length_mm() const {
+  auto* p = std::get_if<Perspective>(&projection);
+  return p ? p->focal_length_mm : 0;
+}
+
+double Camera::image_distance_mm() const {
+  double f = focal_length_mm();
+  return lens.depth_of_field ? obscura::image_distance_mm(f, lens.focus_distance_m) : f;
+}
+
+Vector2d Camera::film_size_mm() const {
+  auto* p = std::get_if<Perspective>(&projection);
+  return p ? obscura::film_size_mm(*p, film.image_aspect()) : Vector2d();
+}
+
+ScreenWindow Camera::screen_window() const {
+  if (auto* p = std::get_if<Perspective>(&projection)) {
+    Vector2d size = obscura::film_size_mm(*p, film.image_aspect());
+    double fitted = fitted_film_dimension_mm(*p, film.image_aspect());
+    double v = image_distance_mm();
+    double cx = p->lens_shift.x * fitted, cy = p->lens_shift.y * fitted;
+    return {(cx - 0.5 * size.x) / v, (cx + 0.5 * size.x) / v, (cy - 0.5 * size.y) / v,
+            (cy + 0.5 * size.y) / v};
+  }
+  if (auto* o = std::get_if<Orthographic>(&projection)) {
+    double h = o->view_height_m;
+    double w = o->view_width_m ? *o->view_width_m : h * film.image_aspect();
+    return {-0.5 * w, 0.5 * w, -0.5 * h, 0.5 * h};
+  }
+  throw Error("camera.screen_window",
+              "a " + std::string(projection_name(projection)) + " camera has no screen window");
+}
+
+Point2d Camera::window_from_raster(Point2d raster) const {
+  ScreenWindow w = screen_window();
+  return {w.x_min + raster.x / film.width_px * (w.x_max - w.x_min),
+          w.y_max - raster.y / film.height_px * (w.y_max - w.y_min)};
+}
+
+Point2d Camera::raster_from_window(Point2d p) const {
+  ScreenWindow w = screen_window();
+  return {(p.x - w.x_min) / (w.x_max - w.x_min) * film.width_px,
+          (w.y_max - p.y) / (w.y_max - w.y_min) * film.height_px};
+}
+
+Vector2d Camera::fov_degrees() const {
+  return std::visit(
+      Overloaded{
+          [&](const Perspective&) {
+            ScreenWindow w = screen_window();
+            return Vector2d((std::atan(w.x_max) - std::atan(w.x_min)) * kDegreesPerRadian,
+                            (std::atan(w.y_max) - std::atan(w.y_min)) * kDegreesPerRadian);
+          },
+          [](const Orthographic&) { return Vector2d(0, 0); },
+          [](const Equirectangular&) { return Vector2d(360, 180); },
+          [&](const Fisheye& f) {
+            double r = fisheye_radius(film);
+            return Vector2d(
+                f.fov_degrees * std::min(1.0, film.width_px * film.pixel_aspect / (2 * r)),
+                f.fov_degrees * std::min(1.0, film.height_px / (2 * r)));
+          },
+      },
+      projection);
+}
+
+double Camera::lens_radius_m() const {
+  if (!lens.depth_of_field) return 0;
+  return 0.5 * aperture_diameter_mm(lens, focal_length_mm()) * kMetresPerMillimetre;
+}
+
+double Camera::f_number() const {
+  double f = focal_length_mm();
+  return f > 0 ? effective_f_number(lens, f) : lens.f_number;
+}
+
+double Camera::exposure_scale() const {
+  return obscura::exposure_scale(exposure, f_number(), shutter.duration_s());
+}
+
+double Camera::circle_of_confusion_px(double depth_m) const {
+  if (!lens.depth_of_field) return 0;
+  double c_mm = circle_of_confusion_mm(lens, focal_length_mm(), depth_m);
+  return c_mm / film_size_mm().x * film.width_px;
+}
+
+std::optional<CameraRay> Camera::generate_ray(Point2d film_point, Point2d lens_sample,
+                                              double time_s) const {
+  // 1. The ray in camera space: origin, unit direction, and its depth-per-t along −Z (for the
+  //    clipping planes) or, for spherical cameras, none (t is the distance).
+  Point3d origin;
+  Vector3d direction;
+  bool clip_by_depth = true;
+  if (std::holds_alternative<Perspective>(projection)) {
+    Point2d w = window_from_raster(film_point);
+    Vector3d pinhole(w.x, w.y, -1);
+    if (lens.depth_of_field) {
+      // Every lens point aims at the point of the focus plane the pinhole ray reaches.
+      Point3d focus = Point3d(0, 0, 0) + pinhole * lens.focus_distance_m;
+      Point2d l = sample_aperture(lens.aperture, lens_sample);
+      double r = lens_radius_m();
+      origin = Point3d(r * l.x, r * l.y, 0);
+      direction = normalize(focus - origin);
+    } else {
+      direction = normalize(pinhole);
+    }
+  } else if (std::holds_alternative<Orthographic>(projection)) {
+    Point2d w = window_from_raster(film_point);
+    origin = Point3d(w.x, w.y, 0);
+    direction = Vector3d(0, 0, -1);
+  } else if (std::holds_alternative<Equirectangular>(projection)) {
+    direction =
+        equirectangular_direction({film_point.x / film.width_px, film_point.y / film.height_px});
+    clip_by_depth = false;
+  } else {
+    auto d = fisheye_direction(std::get<Fisheye>(projection),
+                               fisheye_centered_from_raster(film, film_point));
+    if (!d) return std::nullopt;
+    direction = *d;
+    clip_by_depth = false;
+  }
+  double per_t = clip_by_depth ? -direction.z : 1.0;  // depth gained per unit of t
+
+  // 2. Into the world at this time; t keeps measuring world distance along the unit direction.
+  Transform world = world_from_camera.at(time_s);
+  Vector3d world_direction = world(direction);
+  double stretch = length(world_direction);
+  CameraRay ray;
+  ray.origin = world(origin);
+  ray.direction = world_direction / stretch;
+  ray.t_min = near_m / per_t * stretch;
+  ray.t_max = far_m / per_t * stretch;
+  ray.time_s = time_s;
+  return ray;
+}
+
+std::optional<FilmProjection> Camera::project(Point3d world, double time_s) const {
+  Point3d q = inverse(world_from_camera.at(time_s))(world);
+  FilmProjection result;
+  if (std::holds_alternative<Perspective>(projection) ||
+      std::holds_alternative<Orthographic>(projection)) {
+    result.depth_m = -q.z;
+    if (!(result.depth_m >= near_m && result.depth_m <= far_m)) return std::nullopt;
+    Point2d w = std::holds_alternative<Perspective>(projection)
+                    ? Point2d(q.x / result.depth_m, q.y / result.depth_m)
+                    : Point2d(q.x, q.y);
+    result.film_point = raster_from_window(w);
+  } else {
+    Vector3d d = to_vector(q);
+    result.depth_m = length(d);
+    if (!(result.depth_m > 0 && result.depth_m >= near_m && result.depth_m <= far_m))
+      return std::nullopt;
+    if (std::holds_alternative<Equirectangular>(projection)) {
+      Point2d uv = equirectangular_uv(d);
+      result.film_point = {uv.x * film.width_px, uv.y * film.height_px};
+    } else {
+      auto c = fisheye_centered(std::get<Fisheye>(projection), d);
+      if (!c) return std::nullopt;
+      result.film_point = raster_from_fisheye_centered(film, *c);
+    }
+  }
+  if (!on_film(film, result.film_point)) return std::nullopt;
+  return result;
+}
+
+std::optional<Point3d> Camera::unproject(Point2d film_point, double depth_m, double time_s) const {
+  Point3d q;
+  if (std::holds_alternative<Perspective>(projection)) {
+    Point2d w = window_from_raster(film_point);
+    q = {w.x * depth_m, w.y * depth_m, -depth_m};
+  } else if (std::holds_alternative<Orthographic>(projection)) {
+    Point2d w = window_from_raster(film_point);
+    q = {w.x, w.y, -depth_m};
+  } else {
+    std::optional<Vector3d> d;
+    if (std::holds_alternative<Equirectangular>(projection))
+      d = equirectangular_direction({film_point.x / film.width_px, film_point.y / film.height_px});
+    else
+      d = fisheye_direction(std::get<Fisheye>(projection),
+                            fisheye_centered_from_raster(film, film_point));
+    if (!d) return std::nullopt;
+    q = Point3d(0, 0, 0) + *d * depth_m;
+  }
+  return world_from_camera.at(time_s)(q);
+}
+
+Matrix4 Camera::view_matrix(double time_s) const {
+  return world_from_camera.at(time_s).inverse_matrix();
+}
+
+bool Camera::has_projection_matrix() const {
+  return std::holds_alternative<Perspective>(projection) ||
+         std::holds_alternative<Orthographic>(projection);
+}
+
+Matrix4 Camera::projection_matrix() const {
+  if (!has_projection_matrix())
+    throw Error("camera.projection_matrix", "a " + std::string(projection_name(projection)) +
+                                                " camera has no projection matrix");
+  ScreenWindow w = screen_window();
+  double sx = 2 / (w.x_max - w.x_min), sy = 2 / (w.y_max - w.y_min);
+  double ox = (w.x_max + w.x_min) / (w.x_max - w.x_min);
+  double oy = (w.y_max + w.y_min) / (w.y_max - w.y_min);
+  double n = near_m, f = far_m;
+  if (std::holds_alternative<Orthographic>(projection))  // glOrtho
+    return Matrix4::from_rows({{{sx, 0, 0, -ox},
+                                {0, sy, 0, -oy},
+                                {0, 0, -2 / (f - n), -(f + n) / (f - n)},
+                                {0, 0, 0, 1}}});
+  // glFrustum with (left, right, bottom, top) = near × the window on z = −1.
+  double a = std::isinf(f) ? -1 : -(f + n) / (f - n);
+  double b = std::isinf(f) ? -2 * n : -2 * f * n / (f - n);
+  return Matrix4::from_rows({{{sx, 0, ox, 0}, {0, sy, oy, 0}, {0, 0, a, b}, {0, 0, -1, 0}}});
+}
+
+Matrix4 Camera::raster_from_ndc() const {
+  double w = film.width_px, h = film.height_px;
+  return Matrix4::from_rows(
+      {{{0.5 * w, 0, 0, 0.5 * w}, {0, -0.5 * h, 0, 0.5 * h}, {0, 0, 1, 0}, {0, 0, 0, 1}}});
 }
 
 }  // namespace obscura

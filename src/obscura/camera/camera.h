@@ -1,27 +1,112 @@
-// The camera: where it is, how it projects, and the film it exposes.
+// The camera: one description that drives both renderers. The tracer asks it for rays
+// (generate_ray), the rasterizer for matrices (view_matrix, projection_matrix), and both map
+// back with project / unproject; all of them agree on which pixel a point lands on.
 //
-// For now a pinhole (perspective) camera given by its vertical field of view; the full camera
-// model (thin lens, orthographic, shutter, exposure, filters) extends this description.
-// Camera space: X right, Y up, looking down −Z. Raster space: pixels, (0,0) at the top-left
-// corner of the image, pixel centres at half-integers.
+// Spaces: world is right-handed, Y-up. Camera space: X right, Y up, looking down −Z, origin at
+// the lens centre. Raster space: pixels of the full image, (0, 0) the top-left corner, pixel
+// centres at half-integers, y down. NDC: OpenGL's cube [−1, 1]³, near → −1, far → +1.
+// The "screen window" is the film's rectangle in camera space: on the plane z = −1 for a
+// perspective camera (so its coordinates are tangents of angles), at any depth for an
+// orthographic one (in metres).
 #pragma once
 
+#include <optional>
+#include <string>
+
+#include "obscura/camera/animated_transform.h"
+#include "obscura/camera/exposure.h"
+#include "obscura/camera/film_geometry.h"
+#include "obscura/camera/projection.h"
+#include "obscura/camera/shutter.h"
+#include "obscura/camera/thin_lens.h"
+#include "obscura/math/matrix4.h"
 #include "obscura/math/ray.h"
 #include "obscura/math/transform.h"
 #include "obscura/math/vector.h"
 
 namespace obscura {
 
-struct Camera {
-  Transform world_from_camera;
-  double vertical_fov_degrees = 40;  // in (0, 180)
-  int width = 512, height = 512;     // film resolution in pixels, > 0
+// A primary ray in double precision (the tracer converts it with to_ray()).
+struct CameraRay {
+  Point3d origin;
+  Vector3d direction;  // unit length
+  // The stretch of the ray between the near and far clipping planes (perspective and
+  // orthographic: planes of constant depth; spherical cameras: distances).
+  double t_min = 0, t_max = 0;
+  double time_s = 0;
 
-  // Throws obscura::Error naming the first invalid parameter.
+  Ray to_ray() const;
+};
+
+// Where a world point lands on the film.
+struct FilmProjection {
+  Point2d film_point;  // raster coordinates (pixels)
+  // Perspective and orthographic: depth in front of the camera, along its −Z axis (the
+  // rasterizer's eye depth). Spherical cameras: distance from the camera.
+  double depth_m = 0;
+};
+
+struct ScreenWindow {
+  double x_min = -1, x_max = 1, y_min = -1, y_max = 1;
+};
+
+struct Camera {
+  std::string name;
+  AnimatedTransform world_from_camera;  // rigid motion over the shutter interval
+  Projection projection = Perspective{};
+  // Clipping planes: 0 < near < far (orthographic: 0 ≤ near); far may be infinite.
+  double near_m = 0.1, far_m = 1000;
+  ThinLens lens;  // depth of field (perspective only) and the f-number of the physical exposure
+  Shutter shutter;
+  Exposure exposure;
+  FilmGeometry film;
+
+  // Throws obscura::Error naming the first invalid parameter and its value.
   void validate() const;
 
-  // The primary ray through raster point `film_point` (pixels); the direction is unit length.
-  Ray generate_ray(Point2f film_point) const;
+  // --- the tracer ---
+  // The ray through raster point `film_point` at lens sample `lens_sample` ∈ [0,1)² (ignored
+  // without depth of field; (½, ½) is the lens centre) at time `time_s`. Nothing when the film
+  // point sees nothing (outside a fisheye's image circle).
+  std::optional<CameraRay> generate_ray(Point2d film_point, Point2d lens_sample = {0.5, 0.5},
+                                        double time_s = 0) const;
+  // The inverse of generate_ray through the lens centre, for every projection: where `world`
+  // lands on the film at time `time_s`; nothing when it is not visible (behind the camera,
+  // outside the near/far range, off the film or outside a fisheye's circle).
+  std::optional<FilmProjection> project(Point3d world, double time_s = 0) const;
+  // The world point at raster `film_point` and `depth_m` (as FilmProjection::depth_m); nothing
+  // outside a fisheye's circle. unproject(project(p)) = p.
+  std::optional<Point3d> unproject(Point2d film_point, double depth_m, double time_s = 0) const;
+
+  // --- the rasterizer ---
+  Matrix4 view_matrix(double time_s = 0) const;  // camera_from_world
+  // clip_from_camera with OpenGL's conventions (glFrustum / glOrtho, off-centre for lens
+  // shift; far = ∞ gives the infinite-far limit). Throws obscura::Error for spherical
+  // projections, which have no matrix (see has_projection_matrix).
+  Matrix4 projection_matrix() const;
+  bool has_projection_matrix() const;
+  // The viewport: NDC (x, y) → raster (x right, y down, pixels); z passes through.
+  Matrix4 raster_from_ndc() const;
+  // Circle of confusion for a point at `depth_m`, in pixels (0 without depth of field).
+  double circle_of_confusion_px(double depth_m) const;
+
+  // --- derived quantities ---
+  ScreenWindow screen_window() const;  // perspective and orthographic
+  // Focal length (perspective), else 0; image distance = where the sensor sits behind the lens:
+  // the focal length, or v = f·S_f/(S_f − f) with depth of field.
+  double focal_length_mm() const;
+  double image_distance_mm() const;
+  Vector2d film_size_mm() const;  // perspective: the sensor area the image covers
+  // Horizontal and vertical field of view, in degrees: the angle the screen window subtends
+  // (perspective), the full 360 × 180 (equirectangular), the circle's angle on each axis
+  // (fisheye), 0 (orthographic).
+  Vector2d fov_degrees() const;
+  double lens_radius_m() const;  // 0 without depth of field
+  double f_number() const;
+  double exposure_scale() const;  // see exposure.h
+
+  Point2d window_from_raster(Point2d raster) const;
+  Point2d raster_from_window(Point2d window) const;
 };
 
 }  // namespace obscura

@@ -4,6 +4,7 @@
 // (McGuire's); the light's colour follows its measured spectrum (more red than blue).
 #include <array>
 
+#include "obscura/camera/frames.h"
 #include "obscura/math/transform.h"
 #include "obscura/scene/builtin_scenes.h"
 
@@ -78,12 +79,17 @@ Scene make_cornell_box() {
                  {{{314, 0, 456}, {314, 330, 456}, {265, 330, 296}, {265, 0, 296}}},
                  {{{265, 0, 296}, {265, 330, 296}, {423, 330, 247}, {423, 0, 247}}}}),
   };
-  // Published camera: at (278, 273, −800) mm looking along +Z, 35 mm lens, 25 × 25 mm film:
-  // vertical FOV = 2·atan(12.5 / 35) = 39.3076°.
+  // Published camera: at (278, 273, −800) mm looking along +Z, a 35 mm lens on a 25 × 25 mm
+  // film (vertical FOV = 2·atan(12.5 / 35) = 39.3076°). The lens focuses on the box's centre
+  // (z = 279.6 mm) for when depth of field is switched on.
   Point3d eye(0.278, 0.273, -0.800);
-  scene.camera.world_from_camera =
-      inverse(Transform::look_at(eye, eye + Vector3d(0, 0, 1), Vector3d(0, 1, 0)));
-  scene.camera.vertical_fov_degrees = 39.307648;
+  scene.camera.name = "cornell";
+  scene.camera.world_from_camera = world_from_camera_look_at(eye, eye + Vector3d(0, 0, 1));
+  Perspective lens_and_film;
+  lens_and_film.focal_length_mm = 35;
+  lens_and_film.sensor_width_mm = lens_and_film.sensor_height_mm = 25;
+  scene.camera.projection = lens_and_film;
+  scene.camera.lens.focus_distance_m = 0.800 + 0.2796;
   return scene;
 }
 

@@ -22,10 +22,14 @@ struct RenderStats {
   double seconds = 0;
 };
 
-// Renders the camera's full film. Deterministic: every random number is a function of
-// (seed, pixel, sample, dimension), and each pixel sums its samples in order, so the image is
+// Renders the camera's crop window (the full image by default) into `film`, which must have
+// the crop's size. Each sample draws, in order, a filter offset (2D), a lens point (2D) and a
+// time in the shutter interval (1D) before the integrator's numbers; its radiance is scaled by
+// the camera's exposure. Deterministic: every random number is a function of
+// (seed, pixel, sample, dimension) and each pixel sums its own samples in order, so the image is
 // bit-identical for any thread count.
 RenderStats render(const TraceScene& scene, const Camera& camera, const Integrator& integrator,
-                   const RenderSettings& settings, Film& film, const ProgressCallback& progress = {});
+                   const RenderSettings& settings, Film& film,
+                   const ProgressCallback& progress = {});
 
 }  // namespace obscura

@@ -1,0 +1,38 @@
+// A transform that moves over time: keyframes (time, transform), interpolated between keys and
+// held constant before the first and after the last. Used for the camera's world_from_camera,
+// sampled over the shutter interval for motion blur.
+//
+// Each key is decomposed into translation, rotation and per-axis scale (M = T·R·S);
+// translation and scale interpolate linearly and rotation by quaternion slerp along the shorter
+// arc, so a spinning camera turns at a constant rate instead of shrinking mid-way as a
+// matrix lerp would. Keys with shear cannot be decomposed this way and are rejected.
+#pragma once
+
+#include <vector>
+
+#include "obscura/math/transform.h"
+
+namespace obscura {
+
+class AnimatedTransform {
+ public:
+  // A transform that does not move. Implicit on purpose: `camera.world_from_camera = t;`.
+  AnimatedTransform(const Transform& fixed = {}) : keys_{{0.0, fixed}} {}
+
+  struct Key {
+    double time_s;
+    Transform transform;
+  };
+  // Precondition: at least one key, times strictly increasing, finite; every key a translation,
+  // rotation and scale without shear. Throws obscura::Error naming the key otherwise.
+  explicit AnimatedTransform(std::vector<Key> keys);
+
+  Transform at(double time_s) const;
+  bool is_animated() const { return keys_.size() > 1; }
+  const std::vector<Key>& keys() const { return keys_; }
+
+ private:
+  std::vector<Key> keys_;
+};
+
+}  // namespace obscura

@@ -1,0 +1,82 @@
+#include "obscura/camera/aperture.h"
+
+#include <cmath>
+#include <numbers>
+#include <string>
+
+#include "obscura/camera/number_text.h"
+#include "obscura/math/error.h"
+
+namespace obscura {
+
+namespace {
+
+constexpr double kPi = std::numbers::pi;
+
+Point2d polygon_vertex(const Aperture& a, int k) {
+  double angle = a.rotation_degrees * (kPi / 180) + 2 * kPi * k / a.blades;
+  return {std::cos(angle), std::sin(angle)};
+}
+
+}  // namespace
+
+Point2d sample_aperture(const Aperture& a, Point2d u) {
+  double ox = 2 * u.x - 1, oy = 2 * u.y - 1;
+  if (ox == 0 && oy == 0) return {0, 0};
+  if (a.blades == 0) {  // Shirley–Chiu concentric square-to-disk
+    double r, theta;
+    if (std::abs(ox) > std::abs(oy)) {
+      r = ox;
+      theta = (kPi / 4) * (oy / ox);
+    } else {
+      r = oy;
+      theta = kPi / 2 - (kPi / 4) * (ox / oy);
+    }
+    return {r * std::cos(theta), r * std::sin(theta)};
+  }
+  // The square ring at max-norm r holds area ∝ r², as the polygon ring r·boundary does; along a
+  // ring, distance along the square's boundary maps linearly onto the polygon's edges, and a
+  // straight edge seen from the centre sweeps area linearly too, so the map preserves area.
+  double r = std::max(std::abs(ox), std::abs(oy));
+  double a_ = ox / r, b_ = oy / r;
+  double t;  // position along the square's boundary, counter-clockwise, in [0, 8)
+  if (a_ >= 1 && b_ < 1)
+    t = b_ + 1;
+  else if (b_ >= 1)
+    t = 2 + (1 - a_);
+  else if (a_ <= -1)
+    t = 4 + (1 - b_);
+  else
+    t = 6 + (a_ + 1);
+  double edge_position = t / 8 * a.blades;
+  int k = std::min(int(edge_position), a.blades - 1);
+  double s = edge_position - k;
+  Point2d v0 = polygon_vertex(a, k), v1 = polygon_vertex(a, k + 1);
+  return {r * (v0.x + (v1.x - v0.x) * s), r * (v0.y + (v1.y - v0.y) * s)};
+}
+
+bool aperture_contains(const Aperture& a, Point2d p) {
+  constexpr double kEpsilon = 1e-12;
+  if (a.blades == 0) return p.x * p.x + p.y * p.y <= 1 + kEpsilon;
+  for (int k = 0; k < a.blades; ++k) {
+    Point2d v0 = polygon_vertex(a, k), v1 = polygon_vertex(a, k + 1);
+    double side = (v1.x - v0.x) * (p.y - v0.y) - (v1.y - v0.y) * (p.x - v0.x);
+    if (side < -kEpsilon) return false;  // outside this (counter-clockwise) edge
+  }
+  return true;
+}
+
+double aperture_area(const Aperture& a) {
+  if (a.blades == 0) return kPi;
+  return 0.5 * a.blades * std::sin(2 * kPi / a.blades);
+}
+
+void validate(const Aperture& a) {
+  if (a.blades != 0 && a.blades < 3)
+    throw Error("camera.aperture_blades",
+                "must be 0 (a circle) or at least 3; got " + number_text(a.blades));
+  if (!std::isfinite(a.rotation_degrees))
+    throw Error("camera.aperture_rotation_degrees", "must be finite");
+}
+
+}  // namespace obscura

@@ -1,0 +1,27 @@
+// The shape of the lens opening, which is the shape out-of-focus highlights take (bokeh): a
+// circle, or a regular polygon of B straight blades turned by a rotation.
+#pragma once
+
+#include "obscura/math/vector.h"
+
+namespace obscura {
+
+struct Aperture {
+  int blades = 0;               // 0: a circle; otherwise ≥ 3, a regular polygon
+  double rotation_degrees = 0;  // turns the polygon counter-clockwise (seen from the film)
+};
+
+// A uniformly distributed point of the aperture inscribed in the unit circle, from u ∈ [0,1)².
+// Both shapes use a concentric mapping (Shirley–Chiu 1997, extended to polygons by following the
+// square's boundary onto the polygon's), so u = (½, ½) is the centre and nearby u stay nearby.
+Point2d sample_aperture(const Aperture& a, Point2d u);
+// Whether p (unit-circle coordinates) lies inside the aperture, boundary included.
+bool aperture_contains(const Aperture& a, Point2d p);
+// Area of the aperture inscribed in the unit circle: π for the circle, (B/2)·sin(2π/B) for B
+// blades.
+double aperture_area(const Aperture& a);
+
+// Throws obscura::Error naming the value when blades is neither 0 nor ≥ 3.
+void validate(const Aperture& a);
+
+}  // namespace obscura
