@@ -21,14 +21,15 @@ constexpr int kSize = 256;
 
 std::vector<Ray> primary_rays(const Camera& camera) {
   std::vector<Ray> rays;
-  for (int y = 0; y < camera.height; ++y)
-    for (int x = 0; x < camera.width; ++x) rays.push_back(camera.generate_ray({x + 0.5f, y + 0.5f}));
+  for (int y = 0; y < camera.film.height_px; ++y)
+    for (int x = 0; x < camera.film.width_px; ++x)
+      rays.push_back(camera.generate_ray({x + 0.5, y + 0.5})->to_ray());
   return rays;
 }
 
 Scene bench_scene() {
   Scene scene = make_cornell_box();
-  scene.camera.width = scene.camera.height = kSize;
+  scene.camera.film.width_px = scene.camera.film.height_px = kSize;
   return scene;
 }
 
