@@ -65,8 +65,8 @@ void Camera::validate() const {
     throw Error("camera.near_m", std::string("must be ") + (orthographic ? "≥ 0" : "positive") +
                                      "; got " + number_text(near_m));
   if (!(far_m > near_m))
-    throw Error("camera.far_m", "must exceed near (" + number_text(near_m) + " m); got " +
-                                    number_text(far_m));
+    throw Error("camera.far_m",
+                "must exceed near (" + number_text(near_m) + " m); got " + number_text(far_m));
   obscura::validate(lens, focal_length_mm());
   if (lens.depth_of_field && !std::holds_alternative<Perspective>(projection))
     throw Error("camera.depth_of_field", "needs a perspective projection; this camera is " +
