@@ -5,6 +5,7 @@
 #include <CLI/CLI.hpp>
 
 #include "obscura/math/error.h"
+#include "camera_command.h"
 #include "render_command.h"
 #include "usage_error.h"
 
@@ -13,6 +14,7 @@ int main(int argc, char** argv) {
   app.set_version_flag("--version", "obscura " OBSCURA_VERSION);
   app.require_subcommand(1);
   obscura::app::add_render_command(app);
+  obscura::app::add_camera_command(app);
 
   try {
     app.parse(argc, argv);

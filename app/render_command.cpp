@@ -11,6 +11,7 @@
 #include "obscura/scene/builtin_scenes.h"
 #include "obscura/trace/direct_lighting.h"
 #include "obscura/trace/render.h"
+#include "camera_options.h"
 #include "progress_bar.h"
 #include "usage_error.h"
 
@@ -27,6 +28,7 @@ struct RenderOptions {
   uint64_t seed = 0;
   bool quiet = false;
   bool list_scenes = false;
+  CameraOverrides camera;
 };
 
 void validate(const RenderOptions& o) {
@@ -36,6 +38,8 @@ void validate(const RenderOptions& o) {
   if (o.threads < 0) throw UsageError("--threads must be 0 (all cores) or positive; got " + std::to_string(o.threads));
 }
 
+}  // namespace
+
 Scene load_scene(const std::string& name) {
   if (name.empty()) return make_builtin_scene(builtin_scene_names().front());
   if (is_builtin_scene(name)) return make_builtin_scene(name);
@@ -44,6 +48,8 @@ Scene load_scene(const std::string& name) {
   throw Error(name, "not a built-in scene (built-in: " + known +
                         "); scene files are not supported by this version yet");
 }
+
+namespace {
 
 void run_render(const RenderOptions& options) {
   if (options.list_scenes) {
@@ -58,8 +64,7 @@ void run_render(const RenderOptions& options) {
     thread_limit.emplace(tbb::global_control::max_allowed_parallelism, size_t(options.threads));
 
   Scene scene = load_scene(options.scene);
-  scene.camera.film.width_px = options.width;
-  scene.camera.film.height_px = options.height;
+  scene.camera = resolve_camera(scene, options.camera, options.width, options.height);
   scene.validate();
 
   auto device = std::make_shared<EmbreeDevice>();
@@ -99,6 +104,7 @@ void add_render_command(CLI::App& app) {
       ->capture_default_str();
   render->add_flag("-q,--quiet", options->quiet, "No progress or summary on stderr");
   render->add_flag("--scene-list", options->list_scenes, "List the built-in scenes and exit");
+  add_camera_options(*render, options->camera);
   render->callback([options] { run_render(*options); });
 }
 

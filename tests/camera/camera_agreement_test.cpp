@@ -119,6 +119,29 @@ TEST(CameraAgreement, ProjectInvertsGenerateRayForEveryCameraType) {
   expect_round_trip(thin_lens, 7);
 }
 
+TEST(CameraAgreement, RoundTripHoldsAtEveryTimeOfAMovingCamera) {
+  Camera c = test_camera(Perspective{});
+  c.world_from_camera = AnimatedTransform(
+      {{0, world_from_camera_look_at({2, 1.5, 3}, {-0.5, 0.2, -1})},
+       {0.5, world_from_camera_look_at({1, 1.7, 3.5}, {0.5, 0, -1}, {0.3, 1, 0})}});
+  Pcg32 rng(8);
+  for (int i = 0; i < 500; ++i) {
+    double time = rng.next_float() * 0.5;
+    Point2d film(rng.next_float() * 640, rng.next_float() * 360);
+    auto ray = c.generate_ray(film, {0.5, 0.5}, time);
+    ASSERT_TRUE(ray);
+    EXPECT_EQ(ray->time_s, time);
+    auto projected = c.project(ray->origin + ray->direction * 3.0, time);
+    ASSERT_TRUE(projected);
+    EXPECT_NEAR(projected->film_point.x, film.x, 1e-4);
+    EXPECT_NEAR(projected->film_point.y, film.y, 1e-4);
+  }
+  // The pose at mid-shutter differs from both keys: the camera really moves.
+  Point3d mid = c.world_from_camera.at(0.25)(Point3d(0, 0, 0));
+  EXPECT_NEAR(mid.x, 1.5, 1e-12);
+  EXPECT_NEAR(mid.z, 3.25, 1e-12);
+}
+
 TEST(CameraAgreement, UnprojectInvertsProjectForEveryCameraType) {
   for (Projection p : {Projection(Perspective{}), Projection(Orthographic{}),
                        Projection(Equirectangular{}), Projection(Fisheye{})}) {

@@ -125,7 +125,13 @@ AnimatedTransform::AnimatedTransform(std::vector<Key> keys) : keys_(std::move(ke
       throw Error("camera motion key " + number_text(i),
                   "times must increase; got " + number_text(keys_[i].time_s) + " after " +
                       number_text(keys_[i - 1].time_s));
-    if (keys_.size() > 1) decompose(keys_[i].transform, i);  // reject shear up front
+  }
+  if (keys_.size() > 1) {
+    for (size_t i = 0; i < keys_.size(); ++i) {
+      Decomposed d = decompose(keys_[i].transform, i);  // rejects shear up front
+      parts_.push_back(
+          {d.translation, {d.rotation.w, d.rotation.x, d.rotation.y, d.rotation.z}, d.scale});
+    }
   }
 }
 
@@ -134,14 +140,14 @@ Transform AnimatedTransform::at(double time_s) const {
   if (time_s >= keys_.back().time_s) return keys_.back().transform;
   auto after = std::upper_bound(keys_.begin(), keys_.end(), time_s,
                                 [](double t, const Key& k) { return t < k.time_s; });
-  auto before = after - 1;
-  double s = (time_s - before->time_s) / (after->time_s - before->time_s);
-  Decomposed a = decompose(before->transform, size_t(before - keys_.begin()));
-  Decomposed b = decompose(after->transform, size_t(after - keys_.begin()));
+  size_t i = size_t(after - keys_.begin()) - 1;
+  double s = (time_s - keys_[i].time_s) / (keys_[i + 1].time_s - keys_[i].time_s);
+  const Parts &a = parts_[i], &b = parts_[i + 1];
   Decomposed d;
   d.translation = a.translation * (1 - s) + b.translation * s;
   d.scale = a.scale * (1 - s) + b.scale * s;
-  d.rotation = slerp(s, a.rotation, b.rotation);
+  d.rotation = slerp(s, {a.rotation[0], a.rotation[1], a.rotation[2], a.rotation[3]},
+                     {b.rotation[0], b.rotation[1], b.rotation[2], b.rotation[3]});
   return compose(d);
 }
 

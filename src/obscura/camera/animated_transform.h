@@ -32,7 +32,14 @@ class AnimatedTransform {
   const std::vector<Key>& keys() const { return keys_; }
 
  private:
+  // A key taken apart once, at construction: M = T · R(q) · S.
+  struct Parts {
+    Vector3d translation;
+    double rotation[4];  // unit quaternion (w, x, y, z)
+    Vector3d scale;
+  };
   std::vector<Key> keys_;
+  std::vector<Parts> parts_;  // one per key when animated
 };
 
 }  // namespace obscura

@@ -65,8 +65,8 @@ void Camera::validate() const {
     throw Error("camera.near_m", std::string("must be ") + (orthographic ? "≥ 0" : "positive") +
                                      "; got " + number_text(near_m));
   if (!(far_m > near_m))
-    throw Error("camera.far_m", "must exceed near (" + number_text(near_m) + " m); got " +
-                                    number_text(far_m));
+    throw Error("camera.far_m",
+                "must exceed near (" + number_text(near_m) + " m); got " + number_text(far_m));
   obscura::validate(lens, focal_length_mm());
   if (lens.depth_of_field && !std::holds_alternative<Perspective>(projection))
     throw Error("camera.depth_of_field", "needs a perspective projection; this camera is " +
@@ -163,102 +163,114 @@ double Camera::circle_of_confusion_px(double depth_m) const {
 
 std::optional<CameraRay> Camera::generate_ray(Point2d film_point, Point2d lens_sample,
                                               double time_s) const {
-  // 1. The ray in camera space: origin, unit direction, and its depth-per-t along −Z (for the
-  //    clipping planes) or, for spherical cameras, none (t is the distance).
-  Point3d origin;
-  Vector3d direction;
-  bool clip_by_depth = true;
-  if (std::holds_alternative<Perspective>(projection)) {
-    Point2d w = window_from_raster(film_point);
+  // 1. The ray in camera space. `depth_per_t` turns the clipping range into t: perspective and
+  //    orthographic rays clip at planes of constant depth along −Z, spherical ones by distance.
+  struct LocalRay {
+    Point3d origin;
+    Vector3d direction;  // unit
+    double depth_per_t;
+  };
+  auto pinhole_or_lens = [&](Point2d w) {
     Vector3d pinhole(w.x, w.y, -1);
-    if (lens.depth_of_field) {
-      // Every lens point aims at the point of the focus plane the pinhole ray reaches.
-      Point3d focus = Point3d(0, 0, 0) + pinhole * lens.focus_distance_m;
-      Point2d l = sample_aperture(lens.aperture, lens_sample);
-      double r = lens_radius_m();
-      origin = Point3d(r * l.x, r * l.y, 0);
-      direction = normalize(focus - origin);
-    } else {
-      direction = normalize(pinhole);
-    }
-  } else if (std::holds_alternative<Orthographic>(projection)) {
-    Point2d w = window_from_raster(film_point);
-    origin = Point3d(w.x, w.y, 0);
-    direction = Vector3d(0, 0, -1);
-  } else if (std::holds_alternative<Equirectangular>(projection)) {
-    direction =
-        equirectangular_direction({film_point.x / film.width_px, film_point.y / film.height_px});
-    clip_by_depth = false;
-  } else {
-    auto d = fisheye_direction(std::get<Fisheye>(projection),
-                               fisheye_centered_from_raster(film, film_point));
-    if (!d) return std::nullopt;
-    direction = *d;
-    clip_by_depth = false;
-  }
-  double per_t = clip_by_depth ? -direction.z : 1.0;  // depth gained per unit of t
+    if (!lens.depth_of_field) return LocalRay{{0, 0, 0}, normalize(pinhole), 0};
+    // Every lens point aims at the point of the focus plane that the pinhole ray reaches.
+    Point3d focus = Point3d(0, 0, 0) + pinhole * lens.focus_distance_m;
+    Point2d l = sample_aperture(lens.aperture, lens_sample);
+    Point3d origin(lens_radius_m() * l.x, lens_radius_m() * l.y, 0);
+    return LocalRay{origin, normalize(focus - origin), 0};
+  };
+  std::optional<LocalRay> local = std::visit(
+      Overloaded{
+          [&](const Perspective&) -> std::optional<LocalRay> {
+            LocalRay r = pinhole_or_lens(window_from_raster(film_point));
+            r.depth_per_t = -r.direction.z;
+            return r;
+          },
+          [&](const Orthographic&) -> std::optional<LocalRay> {
+            Point2d w = window_from_raster(film_point);
+            return LocalRay{{w.x, w.y, 0}, {0, 0, -1}, 1};
+          },
+          [&](const Equirectangular&) -> std::optional<LocalRay> {
+            Point2d uv(film_point.x / film.width_px, film_point.y / film.height_px);
+            return LocalRay{{0, 0, 0}, equirectangular_direction(uv), 1};
+          },
+          [&](const Fisheye& f) -> std::optional<LocalRay> {
+            auto d = fisheye_direction(f, fisheye_centered_from_raster(film, film_point));
+            if (!d) return std::nullopt;
+            return LocalRay{{0, 0, 0}, *d, 1};
+          },
+      },
+      projection);
+  if (!local) return std::nullopt;
 
   // 2. Into the world at this time; t keeps measuring world distance along the unit direction.
   Transform world = world_from_camera.at(time_s);
-  Vector3d world_direction = world(direction);
+  Vector3d world_direction = world(local->direction);
   double stretch = length(world_direction);
   CameraRay ray;
-  ray.origin = world(origin);
+  ray.origin = world(local->origin);
   ray.direction = world_direction / stretch;
-  ray.t_min = near_m / per_t * stretch;
-  ray.t_max = far_m / per_t * stretch;
+  ray.t_min = near_m / local->depth_per_t * stretch;
+  ray.t_max = far_m / local->depth_per_t * stretch;
   ray.time_s = time_s;
   return ray;
 }
 
 std::optional<FilmProjection> Camera::project(Point3d world, double time_s) const {
   Point3d q = inverse(world_from_camera.at(time_s))(world);
-  FilmProjection result;
-  if (std::holds_alternative<Perspective>(projection) ||
-      std::holds_alternative<Orthographic>(projection)) {
-    result.depth_m = -q.z;
-    if (!(result.depth_m >= near_m && result.depth_m <= far_m)) return std::nullopt;
-    Point2d w = std::holds_alternative<Perspective>(projection)
-                    ? Point2d(q.x / result.depth_m, q.y / result.depth_m)
-                    : Point2d(q.x, q.y);
-    result.film_point = raster_from_window(w);
-  } else {
-    Vector3d d = to_vector(q);
-    result.depth_m = length(d);
-    if (!(result.depth_m > 0 && result.depth_m >= near_m && result.depth_m <= far_m))
-      return std::nullopt;
-    if (std::holds_alternative<Equirectangular>(projection)) {
-      Point2d uv = equirectangular_uv(d);
-      result.film_point = {uv.x * film.width_px, uv.y * film.height_px};
-    } else {
-      auto c = fisheye_centered(std::get<Fisheye>(projection), d);
-      if (!c) return std::nullopt;
-      result.film_point = raster_from_fisheye_centered(film, *c);
-    }
-  }
-  if (!on_film(film, result.film_point)) return std::nullopt;
-  return result;
+  Vector3d d = to_vector(q);
+  // Depth along −Z for the planar projections, distance for the spherical ones; then the film
+  // point, or nothing outside a fisheye's circle.
+  bool planar = has_projection_matrix();
+  double depth = planar ? -q.z : length(d);
+  if (!(depth >= near_m && depth <= far_m) || (!planar && depth == 0)) return std::nullopt;
+  std::optional<Point2d> film_point =
+      std::visit(Overloaded{
+                     [&](const Perspective&) -> std::optional<Point2d> {
+                       return raster_from_window({q.x / depth, q.y / depth});
+                     },
+                     [&](const Orthographic&) -> std::optional<Point2d> {
+                       return raster_from_window({q.x, q.y});
+                     },
+                     [&](const Equirectangular&) -> std::optional<Point2d> {
+                       Point2d uv = equirectangular_uv(d);
+                       return Point2d(uv.x * film.width_px, uv.y * film.height_px);
+                     },
+                     [&](const Fisheye& f) -> std::optional<Point2d> {
+                       auto c = fisheye_centered(f, d);
+                       if (!c) return std::nullopt;
+                       return raster_from_fisheye_centered(film, *c);
+                     },
+                 },
+                 projection);
+  if (!film_point || !on_film(film, *film_point)) return std::nullopt;
+  return FilmProjection{*film_point, depth};
 }
 
 std::optional<Point3d> Camera::unproject(Point2d film_point, double depth_m, double time_s) const {
-  Point3d q;
-  if (std::holds_alternative<Perspective>(projection)) {
-    Point2d w = window_from_raster(film_point);
-    q = {w.x * depth_m, w.y * depth_m, -depth_m};
-  } else if (std::holds_alternative<Orthographic>(projection)) {
-    Point2d w = window_from_raster(film_point);
-    q = {w.x, w.y, -depth_m};
-  } else {
-    std::optional<Vector3d> d;
-    if (std::holds_alternative<Equirectangular>(projection))
-      d = equirectangular_direction({film_point.x / film.width_px, film_point.y / film.height_px});
-    else
-      d = fisheye_direction(std::get<Fisheye>(projection),
-                            fisheye_centered_from_raster(film, film_point));
-    if (!d) return std::nullopt;
-    q = Point3d(0, 0, 0) + *d * depth_m;
-  }
-  return world_from_camera.at(time_s)(q);
+  std::optional<Point3d> q = std::visit(
+      Overloaded{
+          [&](const Perspective&) -> std::optional<Point3d> {
+            Point2d w = window_from_raster(film_point);
+            return Point3d(w.x * depth_m, w.y * depth_m, -depth_m);
+          },
+          [&](const Orthographic&) -> std::optional<Point3d> {
+            Point2d w = window_from_raster(film_point);
+            return Point3d(w.x, w.y, -depth_m);
+          },
+          [&](const Equirectangular&) -> std::optional<Point3d> {
+            Point2d uv(film_point.x / film.width_px, film_point.y / film.height_px);
+            return Point3d(0, 0, 0) + equirectangular_direction(uv) * depth_m;
+          },
+          [&](const Fisheye& f) -> std::optional<Point3d> {
+            auto d = fisheye_direction(f, fisheye_centered_from_raster(film, film_point));
+            if (!d) return std::nullopt;
+            return Point3d(0, 0, 0) + *d * depth_m;
+          },
+      },
+      projection);
+  if (!q) return std::nullopt;
+  return world_from_camera.at(time_s)(*q);
 }
 
 Matrix4 Camera::view_matrix(double time_s) const {

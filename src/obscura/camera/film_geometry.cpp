@@ -15,11 +15,10 @@ Bounds2i FilmGeometry::crop_pixels() const {
 
 void validate(const FilmGeometry& film) {
   if (film.width_px <= 0 || film.height_px <= 0)
-    throw Error("camera.resolution", "must be positive; got " + number_text(film.width_px) +
-                                         "x" + number_text(film.height_px));
+    throw Error("camera.resolution", "must be positive; got " + number_text(film.width_px) + "x" +
+                                         number_text(film.height_px));
   if (!(film.pixel_aspect > 0) || !std::isfinite(film.pixel_aspect))
-    throw Error("camera.pixel_aspect",
-                "must be positive; got " + number_text(film.pixel_aspect));
+    throw Error("camera.pixel_aspect", "must be positive; got " + number_text(film.pixel_aspect));
   const CropWindow& c = film.crop;
   auto in_unit = [](double v) { return v >= 0 && v <= 1; };
   std::string crop_text = number_text(c.x_min) + "," + number_text(c.y_min) + "," +

@@ -27,8 +27,8 @@ Camera camera_from_intrinsics(const Intrinsics& k, int width_px, int height_px,
   if (!(k.fx > 0)) throw Error("intrinsics.fx", "must be positive; got " + number_text(k.fx));
   if (!(k.fy > 0)) throw Error("intrinsics.fy", "must be positive; got " + number_text(k.fy));
   if (width_px <= 0 || height_px <= 0)
-    throw Error("intrinsics resolution", "must be positive; got " + number_text(width_px) + "x" +
-                                             number_text(height_px));
+    throw Error("intrinsics resolution",
+                "must be positive; got " + number_text(width_px) + "x" + number_text(height_px));
   Camera camera;
   camera.film.width_px = width_px;
   camera.film.height_px = height_px;

@@ -4,8 +4,8 @@
 #include <cmath>
 #include <string>
 
-#include "obscura/camera/projection.h"  // Overloaded
 #include "obscura/camera/number_text.h"
+#include "obscura/camera/projection.h"  // Overloaded
 #include "obscura/math/error.h"
 
 namespace obscura {

@@ -29,10 +29,11 @@ class Film {
     p.weight_sum += weight;
   }
 
-  // The weighted mean of a pixel's samples; black for a pixel that received none.
+  // The weighted mean of a pixel's samples; black for a pixel that received none. Weights may be
+  // negative (filters with negative lobes), and so, with few samples, may their sum.
   Rgb pixel(Point2i p) const {
     const Pixel& px = pixels_[index(p)];
-    return px.weight_sum > 0 ? px.weighted_sum / px.weight_sum : Rgb();
+    return px.weight_sum != 0 ? px.weighted_sum / px.weight_sum : Rgb();
   }
   float weight(Point2i p) const { return pixels_[index(p)].weight_sum; }
 

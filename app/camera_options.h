@@ -1,0 +1,44 @@
+// Camera options shared by `obscura render` and `obscura camera`: pick a scene camera by name and
+// override its parameters from the command line.
+#pragma once
+
+#include <optional>
+#include <string>
+
+#include <CLI/CLI.hpp>
+
+#include "obscura/camera/camera.h"
+#include "obscura/scene/scene.h"
+
+namespace obscura::app {
+
+// Each field is set only when its option was given. Lengths in mm or m as named, angles in
+// degrees, as on the command line.
+struct CameraOverrides {
+  std::optional<std::string> camera_name;
+  std::optional<std::string> projection;  // perspective | orthographic | spherical | fisheye
+  std::optional<double> fov_degrees, horizontal_fov_degrees, focal_length_mm;
+  std::optional<std::string> sensor;  // "WxH" in mm
+  std::optional<std::string> sensor_fit;
+  std::optional<double> view_height_m;
+  std::optional<double> f_number, focus_distance_m, aperture_rotation_degrees;
+  std::optional<int> aperture_blades;
+  std::optional<std::string> shutter;  // "OPEN:CLOSE" in seconds, fractions allowed (0:1/60)
+  std::optional<double> iso, exposure_ev;
+  std::optional<std::string> exposure_mode;
+  std::optional<std::string> crop;  // "x0,y0,x1,y1"
+  std::optional<std::string> filter;
+  std::optional<double> filter_radius_px;
+  std::optional<double> near_m, far_m;
+};
+
+void add_camera_options(CLI::App& command, CameraOverrides& overrides);
+
+// The scene's camera named by --camera (or its only camera), with the overrides applied, at
+// width × height pixels when given, validated. A malformed option value throws UsageError;
+// an unknown camera or an invalid result throws obscura::Error.
+Camera resolve_camera(const Scene& scene, const CameraOverrides& overrides,
+                      std::optional<int> width_px = std::nullopt,
+                      std::optional<int> height_px = std::nullopt);
+
+}  // namespace obscura::app
