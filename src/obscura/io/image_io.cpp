@@ -3,9 +3,11 @@
 #include <unistd.h>
 
 #include <algorithm>
+#include <bit>
 #include <cfloat>
 #include <cmath>
 #include <cstdint>
+#include <cstdio>
 #include <filesystem>
 #include <memory>
 #include <system_error>
@@ -97,6 +99,20 @@ std::string colorspace_attribute(DisplaySpace d) {
   return "sRGB";
 }
 
+// Portable float map, written directly (this OpenImageIO has no PFM writer): "PF" (RGB) or "Pf"
+// (grey), width and height, a negative scale meaning little-endian, then rows bottom to top.
+bool write_pfm(const std::string& tmp, int width, int height, int channels,
+               const std::vector<float>& data) {
+  std::FILE* file = std::fopen(tmp.c_str(), "wb");
+  if (!file) return false;
+  std::fprintf(file, "%s\n%d %d\n-1.0\n", channels == 1 ? "Pf" : "PF", width, height);
+  bool ok = true;
+  for (int y = height - 1; y >= 0 && ok; --y)
+    ok = std::fwrite(data.data() + size_t(y) * width * channels, sizeof(float),
+                     size_t(width) * channels, file) == size_t(width) * channels;
+  return std::fclose(file) == 0 && ok;
+}
+
 WriteReport write_linear(const std::string& path, ImageFormat format, const Image& image,
                          const ImageWriteOptions& options) {
   WriteReport report;
@@ -104,12 +120,27 @@ WriteReport write_linear(const std::string& path, ImageFormat format, const Imag
   float largest = half ? 65504.f : FLT_MAX;
   std::vector<float> data = sanitized(image, largest, report.stats);
   int channels = image.channels;
-  if (format == ImageFormat::kHdr && channels != 3) {  // RGBE holds RGB only
+  if ((format == ImageFormat::kHdr || (format == ImageFormat::kPfm && channels == 4)) &&
+      channels != 3) {  // RGBE holds RGB only; PFM grey or RGB
     std::vector<float> rgb(size_t(image.width) * image.height * 3);
     for (size_t p = 0; p < rgb.size() / 3; ++p)
       for (int c = 0; c < 3; ++c) rgb[3 * p + c] = data[p * channels + (channels == 1 ? 0 : c)];
     data.swap(rgb);
     channels = 3;
+  }
+  if (format == ImageFormat::kPfm) {
+    static_assert(std::endian::native == std::endian::little, "PFM is written little-endian");
+    fs::path tmp = temporary_path_for(path);
+    std::error_code ec;
+    if (write_pfm(tmp.string(), image.width, image.height, channels, data))
+      fs::rename(tmp, path, ec);
+    else
+      ec = std::make_error_code(std::errc::io_error);
+    if (ec) {
+      fs::remove(tmp, ec);
+      throw Error(path, "cannot write the PFM file");
+    }
+    return report;
   }
   OIIO::ImageSpec spec(image.width, image.height, channels,
                        half ? OIIO::TypeDesc::HALF : OIIO::TypeDesc::FLOAT);
