@@ -10,7 +10,9 @@
 #include <tbb/combinable.h>
 #include <tbb/parallel_for.h>
 
+#include "obscura/color/blue_noise.h"
 #include "obscura/color/color_space.h"
+#include "obscura/color/display_kernel.h"
 #include "obscura/math/error.h"
 
 namespace obscura {
@@ -64,6 +66,7 @@ struct CodeTable {
       if (last > first + 1) return;  // more than one step inside: table not usable
       bucket_code[b] = uint16_t(first);
     }
+    bucket_code.push_back(bucket_code.back());  // padding for 32-bit gathers (display_kernel)
     valid = true;
   }
 
@@ -77,20 +80,22 @@ struct CodeTable {
 // The transfer curve sampled at every 2¹⁵-th float (256 samples per octave), interpolated
 // linearly: relative error below 1e-6, far below the noise a dither adds.
 struct EncodeTable {
-  std::vector<float> values;
+  std::vector<float> values, slopes;
   float top = 0;
 
   EncodeTable(const DisplaySpaceInfo& d, float top_) : top(top_) {
     uint32_t n = (std::bit_cast<uint32_t>(top) >> 15) + 2;
-    values.resize(n);
-    for (uint32_t i = 0; i < n; ++i)
+    values.resize(n + 1);
+    for (uint32_t i = 0; i <= n; ++i)
       values[i] = float(encode(d.transfer, double(std::bit_cast<float>(i << 15)) * d.linear_scale));
+    slopes.resize(n);
+    for (uint32_t i = 0; i < n; ++i)
+      slopes[i] = (values[i + 1] - values[i]) /
+                  (std::bit_cast<float>((i + 1) << 15) - std::bit_cast<float>(i << 15));
   }
   float encode_value(float v) const {  // v in [0, top]
-    uint32_t u = std::bit_cast<uint32_t>(v), i = u >> 15;
-    float x0 = std::bit_cast<float>(i << 15), x1 = std::bit_cast<float>((i + 1) << 15);
-    float t = (v - x0) / (x1 - x0);
-    return values[i] + (values[i + 1] - values[i]) * t;
+    uint32_t i = std::bit_cast<uint32_t>(v) >> 15;
+    return values[i] + slopes[i] * (v - std::bit_cast<float>(i << 15));
   }
 };
 
@@ -107,6 +112,10 @@ struct DisplayEncoder::Impl {
   std::unique_ptr<CodeTable> codes;    // fast exact path
   std::unique_ptr<EncodeTable> curve;  // dithered path
   bool fast = false;
+  bool simd = detail::has_avx2_kernel();
+  bool simd_dither = false;         // the kernel's dithered mode applies (set in the constructor)
+  int dither_period = 1;            // a power of two
+  std::vector<float> dither_table;  // [channel][y mod period][x mod period]
 
   explicit Impl(const DisplaySettings& s)
       : settings(s),
@@ -124,7 +133,18 @@ struct DisplayEncoder::Impl {
       codes = std::make_unique<CodeTable>(display, s.bits);
       fast = codes->valid;
     }
-    if (s.dither != Dither::kNone) curve = std::make_unique<EncodeTable>(display, white_limit);
+    if (s.dither != Dither::kNone) {
+      curve = std::make_unique<EncodeTable>(display, white_limit);
+      // The pattern's offsets for one period in x and y, per channel, read by encode_generic.
+      dither_period = s.dither == Dither::kBayer ? 8 : blue_noise_mask().size;
+      int p = dither_period;
+      dither_table.resize(size_t(3) * p * p);
+      for (int c = 0; c < 3; ++c)
+        for (int y = 0; y < p; ++y)
+          for (int x = 0; x < p; ++x)
+            dither_table[(size_t(c) * p + y) * p + x] = dither_offset(s.dither, x, y, c);
+      simd_dither = simd && s.exposure_ev == 0 && simple_tone && s.gamut == GamutMapping::kClip;
+    }
   }
 
   // Replaces non-finite values with defined ones; counts the pixel once.
@@ -154,16 +174,37 @@ struct DisplayEncoder::Impl {
     r = x, g = y, b = z;
   }
 
+  static constexpr float kGamutTolerance = 1e-6f;
   bool out_of_gamut(float r, float g, float b) const {
-    constexpr float kTolerance = 1e-6f;
-    float hi = white_limit * (1 + kTolerance);
-    return r < -kTolerance || g < -kTolerance || b < -kTolerance || r > hi || g > hi || b > hi;
+    float hi = white_limit * (1 + kGamutTolerance);
+    return std::min({r, g, b}) < -kGamutTolerance || std::max({r, g, b}) > hi;
   }
 
   template <typename Out>
   void encode_generic(const float* in, int count, int x0, int y, Out* out,
                       DevelopStats& stats) const {
+    detail::CodeKernel kernel{m,
+                              white_limit,
+                              nullptr,
+                              nullptr,
+                              -kGamutTolerance,
+                              white_limit * (1 + kGamutTolerance),
+                              settings.tonemap.op == ToneMap::kClamp};
+    if (curve) {
+      kernel.curve_values = curve->values.data(), kernel.curve_slopes = curve->slopes.data();
+      int p = dither_period;
+      for (int c = 0; c < 3; ++c)
+        kernel.dither_rows[c] = dither_table.data() + (size_t(c) * p + (y & (p - 1))) * p;
+      kernel.dither_period = p, kernel.max_code = float(max_code);
+    }
     for (int i = 0; i < count; ++i) {
+      if (simd_dither) {
+        size_t out_of_gamut = 0;
+        i += detail::encode_blocks_avx2(kernel, in + 3 * i, count - i, x0 + i, out + 3 * i,
+                                        out_of_gamut);
+        stats.out_of_gamut_pixels += out_of_gamut;
+        if (i >= count) break;
+      }
       float c[3] = {in[3 * i], in[3 * i + 1], in[3 * i + 2]};
       sanitize(c[0], c[1], c[2], stats);
       to_display(c[0], c[1], c[2]);
@@ -177,8 +218,10 @@ struct DisplayEncoder::Impl {
         if (fast) {
           q = codes->code(std::min(v, codes->top));
         } else if (curve) {
-          float offset = dither_offset(settings.dither, x0 + i, y, k);
-          q = quantize_dithered(curve->encode_value(v), settings.bits, offset);
+          int p = dither_period;
+          float offset = dither_table[(size_t(k) * p + (y & (p - 1))) * p + ((x0 + i) & (p - 1))];
+          float level = std::floor(curve->encode_value(v) * float(max_code) + 0.5f + offset);
+          q = uint32_t(std::clamp(level, 0.f, float(max_code)));
         } else {
           q = quantize(obscura::encode(display.transfer, double(v) * display.linear_scale),
                        settings.bits);
@@ -199,15 +242,24 @@ struct DisplayEncoder::Impl {
       c[k] = float(decode(display.transfer, mapped[k]) / display.linear_scale);
   }
 
-  // The fast path: clamp (optional), matrix, table lookup. Kept free of branches the compiler
-  // cannot turn into selects, apart from the rare non-finite pixel.
+  // The fast path: clamp (optional), matrix, table lookup; blocks of 8 pixels go through the
+  // AVX2 kernel where the CPU has it, the rest (tails, non-finite pixels) through this loop,
+  // which computes bit-identical results.
   template <bool kClamp, typename Out>
-  void encode_fast(const float* in, int count, Out* out, DevelopStats& stats) const {
+  void encode_fast(const float* in, int count, int x0, Out* out, DevelopStats& stats) const {
     const float top = codes->top;
     const float* thresholds = codes->thresholds.data();
     const uint16_t* bucket = codes->bucket_code.data();
     size_t out_of_gamut = 0;
-    for (int i = 0; i < count; ++i) {
+    detail::CodeKernel kernel{
+        m, top, thresholds, bucket, -kGamutTolerance, white_limit * (1 + kGamutTolerance), kClamp};
+    for (int i = 0; i < count;) {
+      if (simd) {
+        int done = detail::encode_blocks_avx2(kernel, in + 3 * i, count - i, x0 + i, out + 3 * i,
+                                              out_of_gamut);
+        i += done;
+        if (i >= count) break;
+      }
       float r = in[3 * i], g = in[3 * i + 1], b = in[3 * i + 2];
       sanitize(r, g, b, stats);
       if (kClamp) r = std::min(r, 1.f), g = std::min(g, 1.f), b = std::min(b, 1.f);
@@ -219,6 +271,7 @@ struct DisplayEncoder::Impl {
         uint32_t c = bucket[std::bit_cast<uint32_t>(v) >> 16];
         out[3 * i + k] = Out(c + (v >= thresholds[c + 1]));
       }
+      ++i;
     }
     stats.out_of_gamut_pixels += out_of_gamut;
   }
@@ -228,9 +281,9 @@ struct DisplayEncoder::Impl {
   template <typename Out>
   void encode(const float* in, int count, int x0, int y, Out* out, DevelopStats& stats) const {
     if (fast && settings.tonemap.op == ToneMap::kNone)
-      encode_fast<false>(in, count, out, stats);
+      encode_fast<false>(in, count, x0, out, stats);
     else if (fast)
-      encode_fast<true>(in, count, out, stats);
+      encode_fast<true>(in, count, x0, out, stats);
     else
       encode_generic(in, count, x0, y, out, stats);
   }
