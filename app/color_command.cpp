@@ -123,15 +123,21 @@ void run_convert(const ConvertOptions& o) {
 // ---- wavelength and temperature ---------------------------------------------------------------
 
 // A displayable version of a colour too bright or saturated to show: CSS chroma compression in
-// sRGB after scaling the brightest linear channel to 1.
+// sRGB (constant OKLab lightness and hue), then scaled so that its brightest channel is 1, so
+// that every colour is shown at full brightness.
 std::vector<double> displayable_srgb(const Vec3d& xyz) {
+  const ColorSpaceInfo& srgb = color_space("srgb");
   const ColorSpaceInfo& linear = color_space("srgb-linear");
   std::vector<double> rgb = from_xyz_d65(linear, xyz);
   double peak = std::max({rgb[0], rgb[1], rgb[2], 1e-30});
-  Vec3d scaled{xyz[0] / peak, xyz[1] / peak, xyz[2] / peak};
-  std::vector<double> e = from_xyz_d65(color_space("srgb"), scaled);
-  Vec3d mapped = gamut_map_css({e[0], e[1], e[2]}, color_space("srgb"));
-  return {mapped[0], mapped[1], mapped[2]};
+  std::vector<double> e = from_xyz_d65(srgb, {xyz[0] / peak, xyz[1] / peak, xyz[2] / peak});
+  Vec3d mapped = gamut_map_css({e[0], e[1], e[2]}, srgb);
+  Vec3d mapped_linear;
+  for (int k = 0; k < 3; ++k) mapped_linear[k] = decode(TransferFunction::kSrgb, mapped[k]);
+  double top = std::max({mapped_linear[0], mapped_linear[1], mapped_linear[2], 1e-30});
+  std::vector<double> out(3);
+  for (int k = 0; k < 3; ++k) out[k] = encode(TransferFunction::kSrgb, mapped_linear[k] / top);
+  return out;
 }
 
 std::string hex(const std::vector<double>& encoded) {
