@@ -55,8 +55,8 @@ void report_write(const std::string& path, const WriteReport& report, bool quiet
   const DevelopStats& s = report.stats;
   if (s.nan_pixels || s.inf_pixels)  // always reported: the image has a problem
     std::fprintf(stderr,
-                 "warning: %s: %zu pixel(s) with NaN written as 0, %zu with Inf written as "
-                 "white (+Inf) or 0 (-Inf)\n",
+                 "warning: %s: %zu pixel(s) with NaN and %zu with Inf on the film, written as "
+                 "black\n",
                  path.c_str(), s.nan_pixels, s.inf_pixels);
   if (!quiet && s.out_of_gamut_pixels)
     std::fprintf(stderr, "note: %s: %zu pixel(s) outside the display gamut\n", path.c_str(),

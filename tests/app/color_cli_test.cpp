@@ -1,10 +1,6 @@
 // The `color` and `image` subcommands, run as a user would: exit codes, output, errors.
-#include <sys/wait.h>
-#include <unistd.h>
-
-#include <array>
-#include <cstdio>
 #include <filesystem>
+#include <fstream>
 #include <sstream>
 #include <string>
 #include <vector>
@@ -12,6 +8,7 @@
 #include <gtest/gtest.h>
 #include <nlohmann/json.hpp>
 
+#include "run_command.h"
 #include "test_paths.h"
 
 namespace obscura {
@@ -24,17 +21,18 @@ struct Result {
   std::string out;  // stdout and stderr together
 };
 
-// Runs `obscura <arguments>` through the shell, optionally with `input` on stdin.
+// Runs `obscura <arguments>`, with `input` (if any) on standard input.
 Result run(const std::string& arguments, const std::string& input = "") {
-  std::string command = test::cli_path() + " " + arguments + " 2>&1";
-  if (!input.empty()) command = "printf '" + input + "' | " + command;
-  FILE* pipe = popen(command.c_str(), "r");
-  std::string out;
-  std::array<char, 4096> buffer;
-  for (size_t n; (n = fread(buffer.data(), 1, buffer.size(), pipe)) > 0;)
-    out.append(buffer.data(), n);
-  int status = pclose(pipe);
-  return {WIFEXITED(status) ? WEXITSTATUS(status) : -1, out};
+  std::string redirect;
+  if (!input.empty()) {
+    static const std::string dir = test::make_temp_dir("obscura-color-cli-stdin");
+    static int count = 0;
+    std::string file = dir + "/input" + std::to_string(count++) + ".txt";
+    std::ofstream(file) << input;
+    redirect = " < " + file;
+  }
+  test::CommandResult r = test::run_cli(arguments + redirect);
+  return {r.exit_code, r.output};
 }
 
 std::vector<double> numbers(const std::string& line) {
@@ -63,7 +61,7 @@ TEST(ColorCli, ConvertPrintsValuesAndGamut) {
 }
 
 TEST(ColorCli, ConvertBatchFromStdinOneResultPerLine) {
-  Result r = run("color convert --from srgb --to srgb-linear", "1 1 1\\n0.5 0.5 0.5\\n\\n0 0 0\\n");
+  Result r = run("color convert --from srgb --to srgb-linear", "1 1 1\n0.5 0.5 0.5\n\n0 0 0\n");
   ASSERT_EQ(r.exit_code, 0) << r.out;
   std::istringstream lines(r.out);
   std::vector<std::string> out;
@@ -71,13 +69,13 @@ TEST(ColorCli, ConvertBatchFromStdinOneResultPerLine) {
   ASSERT_EQ(out.size(), 3u) << r.out;
   EXPECT_NEAR(numbers(out[1])[0], 0.2140411, 1e-6);
 
-  Result json = run("color convert --from srgb --to lab-d50 --json", "1 1 1\\n");
+  Result json = run("color convert --from srgb --to lab-d50 --json", "1 1 1\n");
   ASSERT_EQ(json.exit_code, 0) << json.out;
   nlohmann::json j = nlohmann::json::parse(json.out);
   EXPECT_NEAR(j["output"][0].get<double>(), 100, 1e-6);
   EXPECT_EQ(j["in_gamut"], true);
 
-  Result bad = run("color convert --from srgb --to xyz-d65", "1 2\\n");
+  Result bad = run("color convert --from srgb --to xyz-d65", "1 2\n");
   EXPECT_EQ(bad.exit_code, 1);
   EXPECT_NE(bad.out.find("stdin:1"), std::string::npos) << bad.out;
 }
@@ -127,8 +125,7 @@ TEST(ColorCli, WavelengthAndTemperature) {
 }
 
 TEST(ColorCli, ImageConvertAndDiff) {
-  fs::path dir = fs::temp_directory_path() / ("obscura-color-cli-" + std::to_string(getpid()));
-  fs::create_directories(dir);
+  fs::path dir = test::make_temp_dir("obscura-color-cli");
   std::string exr = (dir / "a.exr").string(), png = (dir / "a.png").string();
   ASSERT_EQ(run("render --width 32 --height 24 --spp 2 -q -o " + exr).exit_code, 0);
   Result convert = run("image convert " + exr + " " + png +
@@ -160,8 +157,7 @@ TEST(ColorCli, ImageConvertAndDiff) {
 }
 
 TEST(ColorCli, RenderTakesDisplayOptions) {
-  fs::path dir = fs::temp_directory_path() / ("obscura-render-display-" + std::to_string(getpid()));
-  fs::create_directories(dir);
+  fs::path dir = test::make_temp_dir("obscura-render-display");
   std::string out = (dir / "r.png").string();
   Result r =
       run("render --width 16 --height 16 --spp 1 -q --display rec2020-pq --tonemap hable "

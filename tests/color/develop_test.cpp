@@ -101,7 +101,7 @@ TEST(Develop, NanAndInfAreCountedAndWrittenAsDefinedValues) {
     EXPECT_EQ(out.stats.nan_pixels, 2u);
     EXPECT_EQ(out.stats.inf_pixels, 2u);
     EXPECT_EQ(out.codes[3 * 3 + 0], 0);    // NaN → 0
-    EXPECT_EQ(out.codes[3 * 4 + 0], 255);  // +Inf → white
+    EXPECT_EQ(out.codes[3 * 4 + 0], 0);    // +Inf → 0 as well
     EXPECT_EQ(out.codes[3 * 9 + 0], 0);    // −Inf → 0
     EXPECT_EQ(out.codes[3 * 9 + 2], 0);
     EXPECT_EQ(out.codes[3 * 10 + 1], 0);

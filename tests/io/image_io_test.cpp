@@ -2,14 +2,14 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <cstring>
 #include <filesystem>
 #include <fstream>
-#include <sstream>
-#include <algorithm>
 #include <limits>
+#include <sstream>
 
 #include <OpenImageIO/imageio.h>
 
@@ -114,8 +114,7 @@ TEST_F(ImageIo, PfmRoundTripsAndFollowsTheFormat) {
   ASSERT_TRUE(in.good());
   for (int row = 0; row < 3; ++row)
     for (int x = 0; x < 5; ++x)
-      for (int c = 0; c < 3; ++c)
-        EXPECT_EQ(raw[(row * 5 + x) * 3 + c], image.at(x, 2 - row, c));
+      for (int c = 0; c < 3; ++c) EXPECT_EQ(raw[(row * 5 + x) * 3 + c], image.at(x, 2 - row, c));
 }
 
 TEST_F(ImageIo, RejectsBadPathsBeforeWriting) {

@@ -157,7 +157,7 @@ struct DisplayEncoder::Impl {
       if (std::isnan(*c))
         *c = 0;
       else if (std::isinf(*c))
-        *c = *c > 0 ? FLT_MAX : 0;
+        *c = 0;
     }
   }
 

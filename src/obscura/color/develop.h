@@ -1,9 +1,10 @@
 // Developing the film: linear, scene-referred RGB → the integer codes a display or file holds.
 //
-// Per pixel, in order: non-finite values are counted and replaced (NaN → 0, +Inf → the largest
-// float, −Inf → 0), exposure (×2^EV), tone mapping (in the working space, linear Rec.709), the
-// matrix to the display's primaries, gamut handling (clip, or CSS Color 4 chroma compression),
-// the display's transfer function, then quantization to N bits with optional dithering.
+// Per pixel, in order: non-finite values are counted and replaced by 0 (black: a NaN or Inf is a
+// numerical failure, and a black dot shows it without spreading it), exposure (×2^EV), tone mapping
+// (in the working space, linear Rec.709), the matrix to the display's primaries, gamut handling
+// (clip, or CSS Color 4 chroma compression), the display's transfer function, then quantization to
+// N bits with optional dithering.
 //
 // The common case (no exposure change, clamp or no tone map, clip, ≤ 8 bits, no dither) runs a
 // table-driven path that is exact to the standard: each channel's code comes from comparing the

@@ -75,7 +75,7 @@ std::vector<float> sanitized(const Image& image, float largest, DevelopStats& st
       if (std::isnan(v))
         nan = true, v = 0;
       else if (std::isinf(v))
-        inf = true, v = v > 0 ? largest : 0;
+        inf = true, v = 0;
       else if (v > largest)
         v = largest;
     }
@@ -182,12 +182,12 @@ bool is_display_format(ImageFormat f) {
 
 void check_output_path(const std::string& path) {
   if (path.empty()) throw Error("output path is empty");
-  image_format_for_path(path);
   fs::path target(path);
   std::error_code ec;
   if (fs::is_directory(target, ec))
     throw Error(path, "output path is a directory; expected a file name such as " +
                           (target / "render.png").string());
+  image_format_for_path(path);
   fs::path parent = target.parent_path().empty() ? fs::path(".") : target.parent_path();
   if (!fs::is_directory(parent, ec))
     throw Error(path, "output directory '" + parent.string() + "' does not exist");

@@ -10,8 +10,8 @@
 //   video: .y4m (one frame; see y4m_writer.h for sequences).
 // Files are written to a temporary name beside the target and renamed when complete, so a failed
 // or interrupted write never leaves a partial file behind. NaN and ±Inf never reach a file as
-// garbage: they are counted (WriteReport) and written as NaN → 0, +Inf → the brightest value
-// the file can hold, −Inf → 0.
+// garbage: they are counted (WriteReport) and written as 0 (black); finite values beyond what a
+// half-float EXR holds are clamped to its largest value.
 #pragma once
 
 #include <string>
