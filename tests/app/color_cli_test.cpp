@@ -1,6 +1,7 @@
 // The `color` and `image` subcommands, run as a user would: exit codes, output, errors.
 #include <filesystem>
 #include <fstream>
+#include <limits>
 #include <sstream>
 #include <string>
 #include <vector>
@@ -8,6 +9,7 @@
 #include <gtest/gtest.h>
 #include <nlohmann/json.hpp>
 
+#include "obscura/io/image_io.h"
 #include "run_command.h"
 #include "test_paths.h"
 
@@ -153,6 +155,28 @@ TEST(ColorCli, ImageConvertAndDiff) {
   Result sizes = run("image diff " + exr + " " + small);
   EXPECT_EQ(sizes.exit_code, 1);
   EXPECT_NE(sizes.out.find("cannot compare"), std::string::npos) << sizes.out;
+  fs::remove_all(dir);
+}
+
+TEST(ColorCli, NonFiniteInputPixelsAreReportedAndWrittenBlack) {
+  // A PFM written by hand (Obscura's own writers never store NaN): 3×1 pixels, NaN, +Inf, grey.
+  fs::path dir = test::make_temp_dir("obscura-color-cli-nan");
+  std::string in = (dir / "bad.pfm").string(), out = (dir / "bad.png").string();
+  {
+    std::ofstream f(in, std::ios::binary);
+    f << "PF\n3 1\n-1.0\n";
+    const float nan = std::numeric_limits<float>::quiet_NaN();
+    const float inf = std::numeric_limits<float>::infinity();
+    const float pixels[9] = {nan, 0.5f, 0.5f, inf, inf, inf, 0.5f, 0.5f, 0.5f};
+    f.write(reinterpret_cast<const char*>(pixels), sizeof pixels);
+  }
+  Result r = run("image convert " + in + " " + out);
+  ASSERT_EQ(r.exit_code, 0) << r.out;
+  EXPECT_NE(r.out.find("1 pixel(s) with NaN and 1 with Inf"), std::string::npos) << r.out;
+  Image png = read_image(out);
+  EXPECT_EQ(png.data[0], 0.f);          // NaN → black
+  EXPECT_EQ(png.data[3], 0.f);          // +Inf → black
+  EXPECT_EQ(png.data[6], 188.f / 255);  // linear 0.5 → sRGB 188
   fs::remove_all(dir);
 }
 
