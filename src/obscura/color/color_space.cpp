@@ -15,6 +15,8 @@ ColorSpaceInfo rgb_space(std::string name, const RgbPrimaries& p, TransferFuncti
   ColorSpaceInfo s;
   s.name = std::move(name), s.model = ColorModel::kRgb;
   s.primaries = p, s.transfer = f, s.linear_scale = linear_scale;
+  s.xyz_d65_from_rgb = xyz_d65_from_rgb(p);
+  s.rgb_from_xyz_d65 = s.xyz_d65_from_rgb.inverse();
   s.description = std::move(description);
   return s;
 }
@@ -144,7 +146,7 @@ Vec3d xyz_d65_from(const ColorSpaceInfo& s, const std::vector<double>& values) {
     case ColorModel::kRgb: {
       Vec3d linear;
       for (int i = 0; i < 3; ++i) linear[i] = decode(s.transfer, v[i]) / s.linear_scale;
-      return xyz_d65_from_rgb(s.primaries) * linear;
+      return s.xyz_d65_from_rgb * linear;
     }
     case ColorModel::kXyz:
       return is_d65(s.white) ? v : bradford_adaptation(s.white, white::kD65) * v;
@@ -186,7 +188,7 @@ Vec3d xyz_d65_from(const ColorSpaceInfo& s, const std::vector<double>& values) {
 std::vector<double> from_xyz_d65(const ColorSpaceInfo& s, const Vec3d& xyz) {
   switch (s.model) {
     case ColorModel::kRgb: {
-      Vec3d linear = xyz_d65_from_rgb(s.primaries).inverse() * xyz;
+      Vec3d linear = s.rgb_from_xyz_d65 * xyz;
       std::vector<double> out(3);
       for (int i = 0; i < 3; ++i) out[i] = encode(s.transfer, linear[i] * s.linear_scale);
       return out;

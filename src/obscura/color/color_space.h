@@ -37,7 +37,8 @@ struct ColorSpaceInfo {
   std::string name;
   ColorModel model;
   int components = 3;
-  RgbPrimaries primaries = primaries::kRec709;            // kRgb
+  RgbPrimaries primaries = primaries::kRec709;  // kRgb
+  Matrix3d xyz_d65_from_rgb, rgb_from_xyz_d65;  // kRgb: derived from `primaries` at start-up
   TransferFunction transfer = TransferFunction::kLinear;  // kRgb
   double linear_scale = 1;  // kRgb: linear value that means diffuse white (PQ: 203 / 10 000)
   Chromaticity white = white::kD65;  // kXyz, kLab
