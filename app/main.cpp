@@ -6,6 +6,8 @@
 
 #include "obscura/math/error.h"
 #include "camera_command.h"
+#include "color_command.h"
+#include "image_command.h"
 #include "render_command.h"
 #include "usage_error.h"
 
@@ -15,6 +17,8 @@ int main(int argc, char** argv) {
   app.require_subcommand(1);
   obscura::app::add_render_command(app);
   obscura::app::add_camera_command(app);
+  obscura::app::add_color_command(app);
+  obscura::app::add_image_command(app);
 
   try {
     app.parse(argc, argv);

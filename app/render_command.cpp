@@ -12,6 +12,7 @@
 #include "obscura/trace/direct_lighting.h"
 #include "obscura/trace/render.h"
 #include "camera_options.h"
+#include "display_options.h"
 #include "progress_bar.h"
 #include "usage_error.h"
 
@@ -29,6 +30,7 @@ struct RenderOptions {
   bool quiet = false;
   bool list_scenes = false;
   CameraOverrides camera;
+  DisplayOptions display;
 };
 
 void validate(const RenderOptions& o) {
@@ -77,7 +79,9 @@ void run_render(const RenderOptions& options) {
                              [&](int done, int total) { bar.update(done, total); });
   bar.finish();
 
-  write_image(options.output, film.to_image());
+  report_write(options.output,
+               write_image(options.output, film.to_image(), image_write_options(options.display)),
+               options.quiet);
   if (!options.quiet)
     std::fprintf(stderr, "rendered %s: %dx%d, %d spp in %s (%.2f Mrays/s)\n", scene.name.c_str(),
                  options.width, options.height, options.spp, format_seconds(stats.seconds).c_str(),
@@ -105,6 +109,7 @@ void add_render_command(CLI::App& app) {
   render->add_flag("-q,--quiet", options->quiet, "No progress or summary on stderr");
   render->add_flag("--scene-list", options->list_scenes, "List the built-in scenes and exit");
   add_camera_options(*render, options->camera);
+  add_display_options(render, options->display);
   render->callback([options] { run_render(*options); });
 }
 

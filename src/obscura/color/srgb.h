@@ -1,4 +1,5 @@
 // The sRGB transfer function (IEC 61966-2-1): encoding linear light for 8-bit displays and files.
+// Shorthands for encode/decode(TransferFunction::kSrgb, …) in transfer.h.
 #pragma once
 
 namespace obscura {

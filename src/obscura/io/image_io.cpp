@@ -4,11 +4,10 @@
 
 #include <algorithm>
 #include <bit>
-#include <cerrno>
-#include <cstdio>
-#include <cstring>
+#include <cfloat>
 #include <cmath>
 #include <cstdint>
+#include <cstdio>
 #include <filesystem>
 #include <memory>
 #include <system_error>
@@ -16,7 +15,8 @@
 
 #include <OpenImageIO/imageio.h>
 
-#include "obscura/color/srgb.h"
+#include "obscura/color/quantize.h"
+#include "obscura/io/y4m_writer.h"
 #include "obscura/math/error.h"
 
 namespace obscura {
@@ -27,57 +27,157 @@ namespace {
 
 std::string lowercase_extension(const std::string& path) {
   std::string ext = fs::path(path).extension().string();
-  std::transform(ext.begin(), ext.end(), ext.begin(), [](unsigned char c) { return std::tolower(c); });
+  std::transform(ext.begin(), ext.end(), ext.begin(),
+                 [](unsigned char c) { return std::tolower(c); });
   return ext;
 }
 
-// A name in the target's directory, hidden, unique to this process.
+// A name in the target's directory, hidden, unique to this process, keeping the extension so
+// that OpenImageIO picks the right writer.
 fs::path temporary_path_for(const fs::path& target) {
   // (Appended piece by piece: GCC 12 warns falsely (-Wrestrict) on `"." + std::string`.)
   std::string name(1, '.');
-  name.append(target.filename().string()).append(".tmp-").append(std::to_string(getpid()));
+  name.append(target.stem().string()).append(".tmp-").append(std::to_string(getpid()));
+  name.append(target.extension().string());
   return target.parent_path() / name;
 }
 
-std::vector<uint8_t> encode_srgb_8bit(const Image& image) {
-  std::vector<uint8_t> out(image.data.size());
-  for (size_t i = 0; i < image.data.size(); ++i) {
-    bool is_alpha = image.channels == 4 && i % 4 == 3;
-    float v = image.data[i];
-    if (!std::isfinite(v)) v = 0;  // NaN/Inf never reach the file as garbage
-    float e = is_alpha ? v : srgb_encode(v);
-    out[i] = uint8_t(std::lround(std::clamp(e, 0.f, 1.f) * 255.f));
+// Opens `tmp`, lets `write` fill it, closes and renames it over `path`; removes it on failure.
+template <typename Write>
+void write_through_temporary(const std::string& path, const OIIO::ImageSpec& spec, Write write) {
+  fs::path tmp = temporary_path_for(path);
+  auto out = OIIO::ImageOutput::create(path);
+  if (!out) throw Error(path, "no image writer: " + OIIO::geterror());
+  auto fail = [&](const std::string& what) {
+    std::error_code ignored;
+    fs::remove(tmp, ignored);
+    throw Error(path, what);
+  };
+  if (!out->open(tmp.string(), spec)) fail("cannot open for writing: " + out->geterror());
+  if (!write(*out)) {
+    std::string message = out->geterror();
+    out->close();
+    fail("write failed: " + message);
   }
-  return out;
+  if (!out->close()) fail("write failed: " + out->geterror());
+  std::error_code ec;
+  fs::rename(tmp, path, ec);
+  if (ec) fail("cannot move the finished file into place: " + ec.message());
 }
 
-// PFM (Portable Float Map): "PF" (RGB) or "Pf" (grey), the size, a scale whose negative sign
-// means little-endian, then rows of 32-bit floats from the bottom of the image to the top.
-// OpenImageIO 2.4 reads PFM but has no writer for it, so it is written here.
-bool write_pfm(const fs::path& file, const Image& image) {
-  std::FILE* f = std::fopen(file.c_str(), "wb");
-  if (!f) return false;
-  std::fprintf(f, "PF\n%d %d\n-1.0\n", image.width, image.height);
-  std::vector<float> row(size_t(image.width) * 3);
+// Linear values with NaN/Inf replaced by defined ones (and counted).
+std::vector<float> sanitized(const Image& image, float largest, DevelopStats& stats) {
+  std::vector<float> data = image.data;
+  for (size_t p = 0; p < data.size(); p += image.channels) {
+    bool nan = false, inf = false;
+    for (int c = 0; c < image.channels; ++c) {
+      float& v = data[p + c];
+      if (std::isnan(v))
+        nan = true, v = 0;
+      else if (std::isinf(v))
+        inf = true, v = 0;
+      else if (v > largest)
+        v = largest;
+    }
+    if (nan)
+      stats.nan_pixels++;
+    else if (inf)
+      stats.inf_pixels++;
+  }
+  return data;
+}
+
+std::string colorspace_attribute(DisplaySpace d) {
+  switch (d) {
+    case DisplaySpace::kSrgb:
+      return "sRGB";
+    case DisplaySpace::kDisplayP3:
+      return "Display P3";
+    case DisplaySpace::kRec2020Pq:
+      return "Rec2100-PQ";
+  }
+  return "sRGB";
+}
+
+// Portable float map, written directly (this OpenImageIO has no PFM writer): "PF" (RGB) or "Pf"
+// (grey), width and height, a negative scale meaning little-endian, then rows bottom to top.
+bool write_pfm(const std::string& tmp, int width, int height, int channels,
+               const std::vector<float>& data) {
+  std::FILE* file = std::fopen(tmp.c_str(), "wb");
+  if (!file) return false;
+  std::fprintf(file, "%s\n%d %d\n-1.0\n", channels == 1 ? "Pf" : "PF", width, height);
   bool ok = true;
-  for (int y = image.height - 1; y >= 0 && ok; --y) {
-    for (int x = 0; x < image.width; ++x)
-      for (int c = 0; c < 3; ++c) row[size_t(x) * 3 + c] = image.at(x, y, c);  // drops alpha
-    ok = std::fwrite(row.data(), sizeof(float), row.size(), f) == row.size();
-  }
-  return std::fclose(f) == 0 && ok;
+  for (int y = height - 1; y >= 0 && ok; --y)
+    ok = std::fwrite(data.data() + size_t(y) * width * channels, sizeof(float),
+                     size_t(width) * channels, file) == size_t(width) * channels;
+  return std::fclose(file) == 0 && ok;
 }
 
-static_assert(std::endian::native == std::endian::little, "the PFM writer assumes little-endian");
+WriteReport write_linear(const std::string& path, ImageFormat format, const Image& image,
+                         const ImageWriteOptions& options) {
+  WriteReport report;
+  bool half = format == ImageFormat::kExr && options.exr_half;
+  float largest = half ? 65504.f : FLT_MAX;
+  std::vector<float> data = sanitized(image, largest, report.stats);
+  int channels = image.channels;
+  if ((format == ImageFormat::kHdr || (format == ImageFormat::kPfm && channels == 4)) &&
+      channels != 3) {  // RGBE holds RGB only; PFM grey or RGB
+    std::vector<float> rgb(size_t(image.width) * image.height * 3);
+    for (size_t p = 0; p < rgb.size() / 3; ++p)
+      for (int c = 0; c < 3; ++c) rgb[3 * p + c] = data[p * channels + (channels == 1 ? 0 : c)];
+    data.swap(rgb);
+    channels = 3;
+  }
+  if (format == ImageFormat::kPfm) {
+    static_assert(std::endian::native == std::endian::little, "PFM is written little-endian");
+    fs::path tmp = temporary_path_for(path);
+    std::error_code ec;
+    if (write_pfm(tmp.string(), image.width, image.height, channels, data))
+      fs::rename(tmp, path, ec);
+    else
+      ec = std::make_error_code(std::errc::io_error);
+    if (ec) {
+      fs::remove(tmp, ec);
+      throw Error(path, "cannot write the PFM file");
+    }
+    return report;
+  }
+  OIIO::ImageSpec spec(image.width, image.height, channels,
+                       half ? OIIO::TypeDesc::HALF : OIIO::TypeDesc::FLOAT);
+  if (!image.channel_names.empty() && channels == image.channels)
+    spec.channelnames = image.channel_names;
+  spec.attribute("oiio:ColorSpace", "Linear");
+  spec.attribute("Software", "Obscura " OBSCURA_VERSION);
+  if (format == ImageFormat::kExr) {
+    // The film's working space: Rec.709 primaries, D65 white (x, y of R, G, B, white).
+    const float chromaticities[8] = {0.64f, 0.33f, 0.30f, 0.60f, 0.15f, 0.06f, 0.3127f, 0.3290f};
+    spec.attribute("chromaticities", OIIO::TypeDesc(OIIO::TypeDesc::FLOAT, 8), chromaticities);
+    spec.attribute("compression", "zip");
+  }
+  write_through_temporary(path, spec, [&](OIIO::ImageOutput& out) {
+    return out.write_image(OIIO::TypeDesc::FLOAT, data.data());
+  });
+  return report;
+}
 
 }  // namespace
 
 ImageFormat image_format_for_path(const std::string& path) {
   std::string ext = lowercase_extension(path);
   if (ext == ".png") return ImageFormat::kPng;
+  if (ext == ".jpg" || ext == ".jpeg") return ImageFormat::kJpeg;
+  if (ext == ".tif" || ext == ".tiff") return ImageFormat::kTiff;
   if (ext == ".exr") return ImageFormat::kExr;
+  if (ext == ".hdr") return ImageFormat::kHdr;
   if (ext == ".pfm") return ImageFormat::kPfm;
-  throw Error(path, "unsupported image extension '" + ext + "'; expected .png, .exr or .pfm");
+  if (ext == ".y4m") return ImageFormat::kY4m;
+  throw Error(path, "unsupported image extension '" + ext +
+                        "'; expected .png, .jpg, .tif, .exr, .hdr, .pfm or .y4m");
+}
+
+bool is_display_format(ImageFormat f) {
+  return f == ImageFormat::kPng || f == ImageFormat::kJpeg || f == ImageFormat::kTiff ||
+         f == ImageFormat::kY4m;
 }
 
 void check_output_path(const std::string& path) {
@@ -97,55 +197,57 @@ void check_output_path(const std::string& path) {
     throw Error(path, "output file exists and is not writable");
 }
 
-void write_image(const std::string& path, const Image& image) {
-  if (image.width <= 0 || image.height <= 0 || (image.channels != 3 && image.channels != 4))
-    throw Error(path, "cannot write an image of " + std::to_string(image.width) + "x" +
-                          std::to_string(image.height) + "x" + std::to_string(image.channels) +
-                          "; expected a non-empty RGB or RGBA image");
+void write_display_image(const std::string& path, const DisplayImage& image) {
   check_output_path(path);
   ImageFormat format = image_format_for_path(path);
-  fs::path tmp = temporary_path_for(path);
-  auto fail = [&](const std::string& what) {
-    std::error_code ignored;
-    fs::remove(tmp, ignored);
-    throw Error(path, what);
-  };
-  auto move_into_place = [&] {
-    std::error_code ec;
-    fs::rename(tmp, path, ec);
-    if (ec) fail("cannot move the finished file into place: " + ec.message());
-  };
-
-  if (format == ImageFormat::kPfm) {
-    if (!write_pfm(tmp, image)) fail("cannot write: " + std::string(std::strerror(errno)));
-    move_into_place();
+  if (format == ImageFormat::kY4m) {
+    Y4mWriter writer(path, image.width, image.height);
+    writer.write_frame(image);
+    writer.close();
     return;
   }
-
-  auto out = OIIO::ImageOutput::create(path);
-  if (!out) throw Error(path, "no image writer: " + OIIO::geterror());
-  OIIO::TypeDesc type =
-      format == ImageFormat::kPng ? OIIO::TypeDesc::UINT8 : OIIO::TypeDesc::FLOAT;
-  OIIO::ImageSpec spec(image.width, image.height, image.channels, type);
-  if (!image.channel_names.empty()) spec.channelnames = image.channel_names;
-  spec.attribute("oiio:ColorSpace", format == ImageFormat::kPng ? "sRGB" : "Linear");
+  if (!is_display_format(format))
+    throw Error(path,
+                "developed codes go to .png, .jpg, .tif or .y4m; linear formats take the "
+                "film image itself");
+  // Container depth: 8 bits up to 8 (JPEG: always 8), else 16; codes of fewer bits are spread
+  // over the container's range exactly (q·(2ᴹ−1)/(2ᴺ−1), rounded), so 5-bit banding stays visible.
+  int container = image.bits <= 8 || format == ImageFormat::kJpeg ? 8 : 16;
+  OIIO::ImageSpec spec(image.width, image.height, image.channels,
+                       container == 8 ? OIIO::TypeDesc::UINT8 : OIIO::TypeDesc::UINT16);
+  spec.attribute("oiio:ColorSpace", colorspace_attribute(image.display));
+  spec.attribute("obscura:display", display_space_info(image.display).name);
+  spec.attribute("obscura:bits", image.bits);
   spec.attribute("Software", "Obscura " OBSCURA_VERSION);
+  if (format == ImageFormat::kJpeg) spec.attribute("Compression", "jpeg:95");
+  std::vector<uint16_t> codes(image.codes.size());
+  for (size_t i = 0; i < codes.size(); ++i)
+    codes[i] =
+        uint16_t(image.bits == container ? image.codes[i]
+                                         : requantize(image.codes[i], image.bits, container));
+  write_through_temporary(path, spec, [&](OIIO::ImageOutput& out) {
+    if (container == 16) return out.write_image(OIIO::TypeDesc::UINT16, codes.data());
+    std::vector<uint8_t> bytes(codes.begin(), codes.end());
+    return out.write_image(OIIO::TypeDesc::UINT8, bytes.data());
+  });
+}
 
-  if (!out->open(tmp.string(), spec)) fail("cannot open for writing: " + out->geterror());
-  bool ok;
-  if (format == ImageFormat::kPng) {
-    std::vector<uint8_t> bytes = encode_srgb_8bit(image);
-    ok = out->write_image(OIIO::TypeDesc::UINT8, bytes.data());
-  } else {
-    ok = out->write_image(OIIO::TypeDesc::FLOAT, image.data.data());
-  }
-  if (!ok) {
-    std::string message = out->geterror();
-    out->close();
-    fail("write failed: " + message);
-  }
-  if (!out->close()) fail("write failed: " + out->geterror());
-  move_into_place();
+WriteReport write_image(const std::string& path, const Image& image,
+                        const ImageWriteOptions& options) {
+  if (image.width <= 0 || image.height <= 0 ||
+      (image.channels != 1 && image.channels != 3 && image.channels != 4))
+    throw Error(path, "cannot write an image of " + std::to_string(image.width) + "x" +
+                          std::to_string(image.height) + "x" + std::to_string(image.channels) +
+                          "; expected a non-empty grey, RGB or RGBA image");
+  check_output_path(path);
+  ImageFormat format = image_format_for_path(path);
+  if (!is_display_format(format)) return write_linear(path, format, image, options);
+  ImageWriteOptions o = options;
+  if (format == ImageFormat::kJpeg || format == ImageFormat::kY4m)
+    o.display.bits = std::min(o.display.bits, 8);
+  DisplayImage developed = develop(pixels_of(image), o.display);
+  write_display_image(path, developed);
+  return {developed.stats};
 }
 
 Image read_image(const std::string& path) {

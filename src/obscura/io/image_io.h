@@ -1,32 +1,62 @@
 // Reading and writing image files through OpenImageIO.
 //
-// The format follows the file's extension: .png (8-bit, sRGB-encoded), .exr (linear 32-bit float),
-// .pfm (linear 32-bit float). Files are written to a temporary name beside the target and renamed
-// when complete, so a failed or interrupted write never leaves a partial file behind.
+// The format follows the file's extension:
+//   display-referred (developed: exposure, tone map, display encoding, N bits, dither):
+//     .png (8-bit, or 16-bit when more than 8 bits are asked for), .jpg/.jpeg (8-bit), .tif/.tiff
+//     (8 or 16-bit);
+//   scene-referred (linear Rec.709 values as they are):
+//     .exr (32-bit float or half, with the Rec.709/D65 chromaticities), .hdr (Radiance RGBE),
+//     .pfm (32-bit float);
+//   video: .y4m (one frame; see y4m_writer.h for sequences).
+// Files are written to a temporary name beside the target and renamed when complete, so a failed
+// or interrupted write never leaves a partial file behind. NaN and ±Inf never reach a file as
+// garbage: they are counted (WriteReport) and written as 0 (black); finite values beyond what a
+// half-float EXR holds are clamped to its largest value.
 #pragma once
 
 #include <string>
 
+#include "obscura/color/develop.h"
 #include "obscura/film/image.h"
 
 namespace obscura {
 
-enum class ImageFormat { kPng, kExr, kPfm };
+enum class ImageFormat { kPng, kJpeg, kTiff, kExr, kHdr, kPfm, kY4m };
 
 // The format for a path's extension (case-insensitive); throws obscura::Error naming the
 // extension and the supported ones otherwise.
 ImageFormat image_format_for_path(const std::string& path);
+// Whether the format stores display-encoded codes (PNG, JPEG, TIFF, Y4M) rather than linear light.
+bool is_display_format(ImageFormat f);
 
 // Checks before any work is done that `path` can be written: a supported extension, not a
 // directory, and a parent directory that exists and is writable. Throws obscura::Error.
 void check_output_path(const std::string& path);
 
-// Writes a linear RGB(A) image. PNG values are sRGB-encoded, clamped to [0, 1] and rounded to
-// 8 bits; EXR and PFM store the linear values unchanged.
-void write_image(const std::string& path, const Image& linear_image);
+struct ImageWriteOptions {
+  DisplaySettings display;  // for display formats; default: sRGB, clamp, 8 bits
+  bool exr_half = false;    // EXR: 16-bit half instead of 32-bit float
+};
 
-// Reads an image as stored: 8-bit files give values in [0, 1] still encoded (no decoding is
-// applied), float files their float values.
+struct WriteReport {
+  DevelopStats stats;  // non-finite and out-of-gamut pixel counts
+};
+
+// Writes a linear RGB(A) image (grey images are written as grey where the format allows).
+WriteReport write_image(const std::string& path, const Image& linear_image,
+                        const ImageWriteOptions& options = {});
+
+// Writes already developed codes to a display format (PNG, JPEG, TIFF).
+void write_display_image(const std::string& path, const DisplayImage& image);
+
+// Reads an image as stored: 8/16-bit files give values in [0, 1] still encoded (no decoding is
+// applied), float files their float values. Formats: PNG, JPEG, EXR, HDR, TIFF, PFM, and anything
+// else OpenImageIO reads.
 Image read_image(const std::string& path);
+
+// The view develop() takes, of an Image.
+inline LinearPixels pixels_of(const Image& image) {
+  return {image.data.data(), image.width, image.height, image.channels};
+}
 
 }  // namespace obscura

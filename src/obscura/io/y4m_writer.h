@@ -1,0 +1,44 @@
+// A YUV4MPEG2 (.y4m) writer: uncompressed 8-bit Y′CbCr frames that video encoders read directly
+// (`ffmpeg -i frames.y4m out.mp4`), so a sequence of renders becomes a video without an
+// intermediate image per frame. The file is written to a temporary name and renamed on close().
+#pragma once
+
+#include <cstdio>
+#include <string>
+
+#include "obscura/color/chroma_subsampling.h"
+#include "obscura/color/develop.h"
+
+namespace obscura {
+
+struct Y4mSettings {
+  int fps_numerator = 24, fps_denominator = 1;
+  ChromaSubsampling subsampling = ChromaSubsampling::k420;
+  YcbcrMatrix matrix = YcbcrMatrix::kBt709;
+  YcbcrRange range = YcbcrRange::kLimited;  // what players assume unless told otherwise
+};
+
+class Y4mWriter {
+ public:
+  // Preconditions (throw obscura::Error): width, height > 0; even sizes for subsampled chroma;
+  // a writable path.
+  Y4mWriter(const std::string& path, int width, int height, const Y4mSettings& settings = {});
+  ~Y4mWriter();  // an unclosed writer removes its temporary file
+  Y4mWriter(const Y4mWriter&) = delete;
+  Y4mWriter& operator=(const Y4mWriter&) = delete;
+
+  // Appends one frame of developed 8-bit codes (bits ≤ 8; fewer bits are spread to 8).
+  void write_frame(const DisplayImage& frame);
+  // Finishes the file and moves it into place.
+  void close();
+  int frames() const { return frames_; }
+
+ private:
+  std::string path_, temporary_;
+  int width_, height_;
+  Y4mSettings settings_;
+  std::FILE* file_ = nullptr;
+  int frames_ = 0;
+};
+
+}  // namespace obscura
