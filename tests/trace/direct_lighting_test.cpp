@@ -50,7 +50,7 @@ TEST(DirectLighting, FloorUnderASquareLightMatchesTheFormFactor) {
   double sum = 0, sum2 = 0;
   RayCounts counts;
   for (int i = 0; i < kN; ++i) {
-    PixelSampler sampler(1, {0, 0}, uint32_t(i));
+    Sampler sampler(SamplerType::kIndependent, 1, {0, 0}, uint32_t(i));
     double v = integrator.radiance(scene, down, sampler, counts).g;
     sum += v, sum2 += v * v;
   }
@@ -70,13 +70,13 @@ TEST(DirectLighting, BlockedLightCastsShadowAndEmittersAreSeenOneSided) {
   TraceScene scene(setup.scene, device);
   DirectLightingIntegrator integrator;
   RayCounts counts;
-  PixelSampler sampler(1, {0, 0}, 0);
+  Sampler sampler(SamplerType::kIndependent, 1, {0, 0}, 0);
 
   Ray under_blocker;
   under_blocker.origin = {0, 0.25f, 0};
   under_blocker.direction = {0, -1, 0};
   for (int i = 0; i < 100; ++i) {
-    PixelSampler s(1, {0, 0}, uint32_t(i));
+    Sampler s(SamplerType::kIndependent, 1, {0, 0}, uint32_t(i));
     EXPECT_EQ(integrator.radiance(scene, under_blocker, s, counts), Rgb());
   }
 

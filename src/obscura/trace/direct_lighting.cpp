@@ -5,7 +5,7 @@
 namespace obscura {
 
 Rgb DirectLightingIntegrator::radiance(const TraceScene& scene, const Ray& ray,
-                                       PixelSampler& sampler, RayCounts& counts) const {
+                                       Sampler& sampler, RayCounts& counts) const {
   // The light sample's numbers are drawn even on a miss, so dimensions stay aligned per sample.
   float u_light = sampler.next_1d();
   Point2f u_point = sampler.next_2d();

@@ -9,7 +9,7 @@ namespace obscura {
 
 class DirectLightingIntegrator final : public Integrator {
  public:
-  Rgb radiance(const TraceScene& scene, const Ray& ray, PixelSampler& sampler,
+  Rgb radiance(const TraceScene& scene, const Ray& ray, Sampler& sampler,
                RayCounts& counts) const override;
 };
 

@@ -6,7 +6,7 @@
 
 #include "obscura/color/rgb.h"
 #include "obscura/math/ray.h"
-#include "obscura/math/rng.h"
+#include "obscura/math/sampler.h"
 #include "obscura/trace/trace_scene.h"
 
 namespace obscura {
@@ -25,7 +25,7 @@ class Integrator {
  public:
   virtual ~Integrator() = default;
   // Radiance along `ray`; draws its random numbers from `sampler` (after the camera's).
-  virtual Rgb radiance(const TraceScene& scene, const Ray& ray, PixelSampler& sampler,
+  virtual Rgb radiance(const TraceScene& scene, const Ray& ray, Sampler& sampler,
                        RayCounts& counts) const = 0;
 };
 

@@ -37,7 +37,7 @@ RenderStats render(const TraceScene& scene, const Camera& camera, const Integrat
             // pixels the full render would.
             Point2i pixel{x + crop.min.x, y + crop.min.y};
             for (int s = 0; s < settings.samples_per_pixel; ++s) {
-              PixelSampler sampler(settings.seed, pixel, uint32_t(s));
+              Sampler sampler(settings.sampler, settings.seed, pixel, uint32_t(s));
               // 1. A film point around the pixel centre, distributed as the reconstruction filter.
               Point2f u_filter = sampler.next_2d();
               FilterSample fs = filter.sample({u_filter.x, u_filter.y});

@@ -14,6 +14,7 @@ namespace obscura {
 struct RenderSettings {
   int samples_per_pixel = 16;  // > 0
   uint64_t seed = 0;
+  SamplerType sampler = SamplerType::kSobol;
   int tile_size = 16;
 };
 
