@@ -45,14 +45,18 @@ class Sampler {
   uint32_t dimension() const { return dimension_; }
 
  private:
-  float sobol_component(uint32_t pair, int component) const {
-    uint64_t pixel_key = (uint64_t(uint32_t(pixel_.y)) << 32) | uint32_t(pixel_.x);
-    uint64_t key = hash_words(seed_, pixel_key, pair, 0x50b01u);
-    // Shuffle which Sobol point this sample gets: scrambling the index from its high bits down
-    // maps the first 2^k indices onto an aligned block of 2^k, whose points form a net too.
-    uint32_t index = owen_scramble(sample_index_, uint32_t(key));
-    uint32_t bits = sobol_bits(index, component);
-    uint32_t scramble_seed = component == 0 ? uint32_t(key >> 32) : uint32_t(mix_bits(key));
+  float sobol_component(uint32_t pair, int component) {
+    if (pair != pair_) {
+      pair_ = pair;
+      uint64_t pixel_key = (uint64_t(uint32_t(pixel_.y)) << 32) | uint32_t(pixel_.x);
+      pair_key_ = hash_words(seed_, pixel_key, pair, 0x50b01u);
+      // Shuffle which Sobol point this sample gets: scrambling the index from its high bits
+      // down maps the first 2^k indices onto an aligned block of 2^k, whose points form a net.
+      pair_index_ = owen_scramble(sample_index_, uint32_t(pair_key_));
+    }
+    uint32_t bits = sobol_bits(pair_index_, component);
+    uint32_t scramble_seed =
+        component == 0 ? uint32_t(pair_key_ >> 32) : uint32_t(mix_bits(pair_key_));
     return fraction_to_float(owen_scramble(bits, scramble_seed));
   }
 
@@ -61,6 +65,9 @@ class Sampler {
   Point2i pixel_;
   uint32_t sample_index_;
   uint32_t dimension_ = 0;
+  // The current pair's hash and shuffled index, computed once for its two components.
+  uint32_t pair_ = ~0u, pair_index_ = 0;
+  uint64_t pair_key_ = 0;
 };
 
 }  // namespace obscura

@@ -49,15 +49,32 @@ constexpr DirectionNumbers make_direction_numbers() {
   return v;
 }
 
-constexpr DirectionNumbers kDirections = make_direction_numbers();
+// A point is the XOR of the direction numbers of the index's set bits, which is linear over
+// GF(2): tabulate the XOR for every value of each of the index's four bytes.
+using ByteTables = std::array<std::array<std::array<uint32_t, 256>, 4>, kSobolDimensions>;
+
+constexpr ByteTables make_byte_tables() {
+  DirectionNumbers v = make_direction_numbers();
+  ByteTables t{};
+  for (int d = 0; d < kSobolDimensions; ++d)
+    for (int byte = 0; byte < 4; ++byte)
+      for (uint32_t value = 0; value < 256; ++value) {
+        uint32_t x = 0;
+        for (int bit = 0; bit < 8; ++bit)
+          if ((value >> bit) & 1) x ^= v[d][8 * byte + bit];
+        t[d][byte][value] = x;
+      }
+  return t;
+}
+
+constexpr ByteTables kTables = make_byte_tables();
 
 }  // namespace
 
 uint32_t sobol_bits(uint32_t index, int dimension) {
-  uint32_t result = 0;
-  for (int k = 0; index != 0; ++k, index >>= 1)
-    if (index & 1) result ^= kDirections[dimension][k];
-  return result;
+  const auto& t = kTables[dimension];
+  return t[0][index & 0xff] ^ t[1][(index >> 8) & 0xff] ^ t[2][(index >> 16) & 0xff] ^
+         t[3][index >> 24];
 }
 
 }  // namespace obscura

@@ -6,6 +6,7 @@
 
 #include "obscura/trace/conductor_bsdf.h"
 #include "obscura/trace/dielectric_bsdf.h"
+#include "obscura/trace/fresnel.h"
 #include "obscura/trace/lambertian_bsdf.h"
 #include "obscura/trace/metallic_roughness_bsdf.h"
 #include "obscura/trace/phong_bsdf.h"
@@ -39,10 +40,24 @@ class AnyBsdf {
   }
   // Transmits light to the other side, so the frame must not be flipped towards the viewer.
   bool is_transmissive() const { return std::holds_alternative<DielectricBsdf>(model_); }
+  // The surface's colour for the albedo AOV (what a denoiser wants): reflectance at normal
+  // incidence, roughly.
+  Rgb albedo() const;
   const Model& model() const { return model_; }
 
  private:
   Model model_;
 };
+
+inline Rgb AnyBsdf::albedo() const {
+  struct Visitor {
+    Rgb operator()(const LambertianBsdf& b) const { return b.reflectance; }
+    Rgb operator()(const PhongBsdf& b) const { return b.diffuse + b.specular; }
+    Rgb operator()(const ConductorBsdf& b) const { return fresnel_conductor(1, b.eta, b.k); }
+    Rgb operator()(const DielectricBsdf& b) const { return b.transmittance; }
+    Rgb operator()(const MetallicRoughnessBsdf& b) const { return b.params.base_color; }
+  };
+  return std::visit(Visitor{}, model_);
+}
 
 }  // namespace obscura

@@ -6,17 +6,27 @@
 namespace obscura {
 
 TraceScene::TraceScene(const Scene& scene, std::shared_ptr<const EmbreeDevice> device)
-    : embree_(std::move(device)), meshes_(scene.meshes), materials_(scene.materials) {
+    : embree_(std::move(device)), meshes_(scene.meshes) {
   scene.validate();
   for (const Mesh& mesh : meshes_) embree_.add_triangle_mesh(mesh.positions, mesh.indices);
   embree_.commit();
-  lights_ = AreaLights(meshes_, materials_);
+  for (const Material& m : scene.materials) materials_.push_back(TraceMaterial::from_scene(m));
   Bounds3f b = scene.bounds();
   if (!b.empty()) {
     float extent = std::max({std::abs(b.min.x), std::abs(b.min.y), std::abs(b.min.z),
                              std::abs(b.max.x), std::abs(b.max.y), std::abs(b.max.z)});
     ray_epsilon_ = std::max(1e-6f, 1e-5f * extent);
+    radius_ = std::max(1e-3f, 0.5f * distance(b.min, b.max));
   }
+  lights_ = LightSet(AreaLights(meshes_, scene.materials), std::nullopt, radius_);
+}
+
+void TraceScene::set_material(uint32_t index, TraceMaterial material) {
+  materials_.at(index) = std::move(material);
+}
+
+void TraceScene::set_environment(std::optional<EnvironmentLight> environment) {
+  lights_ = LightSet(lights_.area_lights(), std::move(environment), radius_);
 }
 
 std::optional<SurfaceHit> TraceScene::intersect(const Ray& ray) const {
@@ -29,7 +39,10 @@ std::optional<SurfaceHit> TraceScene::intersect(const Ray& ray) const {
   s.t = hit->t;
   s.position = ray.at(hit->t);
   s.geometric_normal = Normal3f(normalize(cross(p1 - p0, p2 - p0)));
+  s.shading_normal = s.geometric_normal;
   s.material = mesh.material;
+  s.mesh = hit->geometry_id;
+  s.primitive = hit->primitive_id;
   return s;
 }
 
