@@ -16,7 +16,8 @@ double corner_form_factor(double X, double Y) {
 }
 
 Mesh quad(const char* name, uint32_t material, Point3f a, Point3f b, Point3f c, Point3f d) {
-  return {.name = name, .positions = {a, b, c, d}, .indices = {0, 1, 2, 0, 2, 3}, .material = material};
+  return {
+      .name = name, .positions = {a, b, c, d}, .indices = {0, 1, 2, 0, 2, 3}, .material = material};
 }
 
 struct LitFloor {

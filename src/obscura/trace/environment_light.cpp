@@ -36,7 +36,7 @@ EnvironmentLight::EnvironmentLight(const Image& map, Rgb scale,
 }
 
 Point2f EnvironmentLight::uv_from_direction(Vector3f d) const {
-  float theta = std::acos(std::clamp(d.y, -1.f, 1.f));
+  float theta = std::atan2(std::sqrt(d.x * d.x + d.z * d.z), d.y);  // better than acos near poles
   float phi = std::atan2(d.x, -d.z);  // 0 along −Z, growing towards +X
   float u = 0.5f + phi * (0.5f * kInvPi);
   return {u - std::floor(u), theta * kInvPi};
@@ -68,7 +68,7 @@ EnvironmentSample EnvironmentLight::sample(Point2f u) const {
   float pdf_uv;
   Point2f uv = distribution_.sample(u, &pdf_uv);
   Vector3f local = direction_from_uv(uv);
-  float sin_theta = std::sin(kPi * uv.y);
+  float sin_theta = std::sqrt(local.x * local.x + local.z * local.z);
   if (sin_theta <= 0 || pdf_uv <= 0) return {local, Rgb(), 0};
   // dω = 2π² sin θ du dv.
   float pdf = pdf_uv / (2 * kPi * kPi * sin_theta);
@@ -79,7 +79,7 @@ float EnvironmentLight::pdf(Vector3f world_direction) const {
   if (!map_) return uniform_sphere_pdf();
   Vector3f local = normalize(inverse(world_from_environment_)(world_direction));
   Point2f uv = uv_from_direction(local);
-  float sin_theta = std::sin(kPi * uv.y);
+  float sin_theta = std::sqrt(local.x * local.x + local.z * local.z);
   if (sin_theta <= 0) return 0;
   return distribution_.pdf(uv) / (2 * kPi * kPi * sin_theta);
 }

@@ -30,7 +30,8 @@ std::optional<LightSample> LightSet::sample(Point3f p, float u_select, Point2f u
   if (kind == kEnvironment) {
     EnvironmentSample s = environment_->sample(u);
     if (s.pdf <= 0) return std::nullopt;
-    return LightSample{.wi = s.wi, .radiance = s.radiance, .pdf = s.pdf * p_kind};
+    return LightSample{
+        .wi = s.wi, .radiance = s.radiance, .pdf = s.pdf * p_kind, .position = {}, .normal = {}};
   }
   AreaLightSample s = area_.sample(std::max(0.f, u_inner), u);
   Vector3f to_light = s.position - p;
@@ -40,8 +41,12 @@ std::optional<LightSample> LightSet::sample(Point3f p, float u_select, Point2f u
   Vector3f wi = to_light / d;
   float cos_light = -dot(s.normal, wi);
   if (cos_light <= 0) return std::nullopt;  // lights emit from their front face only
-  return LightSample{
-      .wi = wi, .distance = d, .radiance = s.radiance, .pdf = s.pdf_area * d2 / cos_light * p_kind};
+  return LightSample{.wi = wi,
+                     .distance = d,
+                     .radiance = s.radiance,
+                     .pdf = s.pdf_area * d2 / cos_light * p_kind,
+                     .position = s.position,
+                     .normal = s.normal};
 }
 
 float LightSet::pdf_area_light(Point3f p, uint32_t mesh, uint32_t primitive, Point3f light_point,

@@ -17,6 +17,10 @@ struct LightSample {
   Rgb radiance;           // arriving along −wi (for delta lights: irradiance-like intensity/d²)
   float pdf = 0;          // solid angle density, the light's selection probability included
   bool is_delta = false;  // a point or directional light: no BSDF sample can hit it
+  // For lights at a finite distance: the point sampled and the light's normal there (zero for
+  // point lights), so that shadow rays can stop just in front of the light's surface.
+  Point3f position;
+  Normal3f normal;
 };
 
 class LightSet {

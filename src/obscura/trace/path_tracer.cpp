@@ -102,8 +102,7 @@ Rgb PathTracer::radiance(const TraceScene& scene, const Ray& camera_ray, Sampler
         Rgb f = bsdf.f(wo_local, wi_local) * std::abs(wi_local.z);
         bool transmission = wi_local.z * wo_local.z < 0;
         if (!f.is_black() && consistent_sides(*hit, wo, ls->wi, transmission)) {
-          Ray shadow = spawn_ray(scene, *hit, ls->wi);
-          shadow.t_max = std::isinf(ls->distance) ? ls->distance : ls->distance * (1 - 1e-4f);
+          Ray shadow = shadow_ray(scene, *hit, *ls);
           ++counts.shadow;
           if (!scene.occluded(shadow)) {
             float weight = ls->is_delta || !use_bsdf_hits

@@ -61,3 +61,22 @@ Point3f offset_ray_origin(Point3f p, Normal3f n, Vector3f w, float epsilon) {
 }
 
 }  // namespace obscura
+
+namespace obscura {
+
+Ray shadow_ray(const TraceScene& scene, const SurfaceHit& hit, const LightSample& light) {
+  Ray ray;
+  ray.origin = offset_ray_origin(hit.position, hit.geometric_normal, light.wi, scene.ray_epsilon());
+  if (std::isinf(light.distance)) {
+    ray.direction = light.wi;
+    return ray;
+  }
+  Point3f target = light.position;
+  if (light.normal != Normal3f())
+    target = offset_ray_origin(target, light.normal, -light.wi, scene.ray_epsilon());
+  ray.direction = target - ray.origin;
+  ray.t_max = 1 - 1e-4f;
+  return ray;
+}
+
+}  // namespace obscura

@@ -53,8 +53,7 @@ Rgb WhittedIntegrator::trace(const TraceScene& scene, const Ray& ray, Sampler& s
       Rgb f = bsdf.f(wo_local, wi_local) * std::abs(wi_local.z);
       if (!f.is_black() &&
           dot(hit->geometric_normal, wo) * dot(hit->geometric_normal, ls->wi) > 0) {
-        Ray shadow = spawn_ray(scene, *hit, ls->wi);
-        shadow.t_max = std::isinf(ls->distance) ? ls->distance : ls->distance * (1 - 1e-4f);
+        Ray shadow = shadow_ray(scene, *hit, *ls);
         ++counts.shadow;
         if (!scene.occluded(shadow)) L += f * ls->radiance / ls->pdf;
       }
