@@ -125,7 +125,12 @@ std::optional<RayHit> EmbreeScene::intersect(const Ray& ray) const {
   query.hit.instID[0] = RTC_INVALID_GEOMETRY_ID;
   rtcIntersect1(scene_, &context, &query);
   if (query.hit.geomID == RTC_INVALID_GEOMETRY_ID) return std::nullopt;
-  return RayHit{query.ray.tfar, query.hit.geomID, query.hit.primID, {query.hit.u, query.hit.v}};
+  // Embree's Ng is e2 × e1 with e1 = p0 − p1, e2 = p2 − p0, i.e. (p1 − p0) × (p2 − p0).
+  return RayHit{query.ray.tfar,
+                query.hit.geomID,
+                query.hit.primID,
+                {query.hit.u, query.hit.v},
+                {query.hit.Ng_x, query.hit.Ng_y, query.hit.Ng_z}};
 }
 
 bool EmbreeScene::occluded(const Ray& ray) const {
