@@ -107,3 +107,52 @@ TEST(Aovs, FirstHitAlbedoNormalDepthAndId) {
 
 }  // namespace
 }  // namespace obscura
+
+namespace obscura {
+namespace {
+
+// A floor at y = 0 (albedo 0.5) and nothing else.
+TraceScene lone_floor() {
+  Scene scene;
+  scene.name = "floor";
+  scene.materials = {{.name = "floor", .diffuse = Rgb(0.5f), .emission = {}}};
+  const float s = 100;
+  scene.meshes = {quad("floor", 0, {-s, 0, -s}, {-s, 0, s}, {s, 0, s}, {s, 0, -s})};
+  return TraceScene(scene, device());
+}
+
+TEST(PunctualLights, PointSpotAndDirectionalIlluminateByTheInverseSquareAndCosineLaws) {
+  // Radiance of a Lambertian floor: ρ/π · E, E = I·cos θ/d² (point) or E·cos θ (directional).
+  const double rho_over_pi = 0.5 / std::numbers::pi;
+  TraceScene scene = lone_floor();
+  // A point light 2 m up and 1 m aside of the looked-at point: cos θ = 2/√5, d² = 5.
+  scene.set_punctual_lights({PunctualLight::point({1, 2, 0}, Rgb(10.f))});
+  for (const Integrator* integrator :
+       std::initializer_list<const Integrator*>{new WhittedIntegrator(), new PathTracer()}) {
+    Rgb L = centre_radiance(scene, {0, 1, 0.001}, {0, 0, 0}, *integrator);
+    EXPECT_NEAR(L.g, rho_over_pi * 10 * (2 / std::sqrt(5.0)) / 5, 1e-4);
+    delete integrator;
+  }
+  // The sun from 60° off the zenith: E·cos 60°.
+  scene.set_punctual_lights(
+      {PunctualLight::directional(normalize(Vector3f(0, -0.5f, -0.8660254f)), Rgb(3.f))});
+  EXPECT_NEAR(centre_radiance(scene, {0, 1, 0.001}, {0, 0, 0}, WhittedIntegrator()).g,
+              rho_over_pi * 3 * 0.5, 1e-4);
+  // A spot straight down: full inside its inner cone, dark outside the outer one.
+  scene.set_punctual_lights({PunctualLight::spot({0, 2, 0}, {0, -1, 0}, Rgb(8.f), 0.2f, 0.3f)});
+  EXPECT_NEAR(centre_radiance(scene, {0, 1, 0.001}, {0, 0, 0}, WhittedIntegrator()).g,
+              rho_over_pi * 8 / 4, 1e-4);
+  EXPECT_EQ(centre_radiance(scene, {1.5, 1, 0.001}, {1.5, 0, 0}, WhittedIntegrator()).g, 0.f);
+}
+
+TEST(PunctualLights, SpotFalloffRampsBetweenTheCones) {
+  PunctualLight spot = PunctualLight::spot({0, 0, 0}, {0, 0, -1}, Rgb(1.f), 0.1f, 0.5f);
+  EXPECT_FLOAT_EQ(spot.spot_falloff({0, 0, -1}), 1.f);
+  EXPECT_EQ(spot.spot_falloff(normalize(Vector3f(1, 0, -1))), 0.f);  // 45° > 0.5 rad
+  float mid = spot.spot_falloff({std::sin(0.3f), 0, -std::cos(0.3f)});
+  EXPECT_GT(mid, 0.f);
+  EXPECT_LT(mid, 1.f);
+}
+
+}  // namespace
+}  // namespace obscura

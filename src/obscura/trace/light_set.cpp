@@ -1,6 +1,6 @@
 #include "obscura/trace/light_set.h"
 
-#include <array>
+#include <algorithm>
 #include <cmath>
 
 #include "obscura/math/sampling.h"
@@ -8,25 +8,41 @@
 namespace obscura {
 
 LightSet::LightSet(AreaLights area_lights, std::optional<EnvironmentLight> environment,
-                   float scene_radius)
-    : area_(std::move(area_lights)), environment_(std::move(environment)) {
-  std::array<float, kKinds> power{};
+                   std::vector<PunctualLight> punctual, float scene_radius)
+    : area_(std::move(area_lights)),
+      environment_(std::move(environment)),
+      punctual_(std::move(punctual)) {
+  std::vector<float> power(kFirstPunctual + punctual_.size(), 0.f);
   power[kArea] = float(area_.power());
   // Distant light crossing the scene's bounding disk: π r² · π L̄.
   if (environment_)
     power[kEnvironment] =
         kPi * scene_radius * scene_radius * kPi * environment_->average_luminance();
-  if (power[kArea] > 0 || power[kEnvironment] > 0) selection_ = Distribution1D(power);
+  for (size_t i = 0; i < punctual_.size(); ++i)
+    power[kFirstPunctual + i] = punctual_[i].power(scene_radius);
+  if (std::any_of(power.begin(), power.end(), [](float p) { return p > 0; }))
+    selection_ = Distribution1D(power);
 }
 
 std::optional<LightSample> LightSet::sample(Point3f p, float u_select, Point2f u) const {
   if (empty()) return std::nullopt;
   float p_kind;
-  auto kind = Kind(selection_.sample_discrete(u_select, &p_kind));
-  // Reuse the selection number inside the chosen kind (rescaled to [0, 1)).
-  float u_inner =
-      std::min((u_select - float(kind == kArea ? 0 : 1 - p_kind)) / p_kind, 0x1.fffffep-1f);
+  auto kind = int(selection_.sample_discrete(u_select, &p_kind));
   if (p_kind <= 0) return std::nullopt;
+  // Area lights are entry 0, spanning [0, p_kind) of u_select: reuse it, rescaled, to pick the
+  // triangle.
+  float u_inner = std::min(u_select / p_kind, 0x1.fffffep-1f);
+  if (kind >= kFirstPunctual) {
+    std::optional<PunctualLight::Incident> in = punctual_[kind - kFirstPunctual].incident(p);
+    if (!in) return std::nullopt;
+    return LightSample{.wi = in->wi,
+                       .distance = in->distance,
+                       .radiance = in->radiance,
+                       .pdf = p_kind,
+                       .is_delta = true,
+                       .position = p + in->wi * in->distance,
+                       .normal = {}};
+  }
   if (kind == kEnvironment) {
     EnvironmentSample s = environment_->sample(u);
     if (s.pdf <= 0) return std::nullopt;

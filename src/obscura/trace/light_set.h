@@ -1,6 +1,7 @@
 // All the scene's emitters behind one interface for the integrators: one light is chosen in
 // proportion to an estimate of its power, then sampled. Area lights are the emissive triangles
-// (area_lights.h), the environment is infinitely far (environment_light.h).
+// (area_lights.h), the environment is infinitely far (environment_light.h), point, spot and
+// directional lights have no area (punctual_light.h).
 #pragma once
 
 #include <limits>
@@ -8,6 +9,7 @@
 
 #include "obscura/trace/area_lights.h"
 #include "obscura/trace/environment_light.h"
+#include "obscura/trace/punctual_light.h"
 
 namespace obscura {
 
@@ -27,7 +29,8 @@ class LightSet {
  public:
   LightSet() = default;
   // `scene_radius` (m) sizes the disk through which distant light enters the scene.
-  LightSet(AreaLights area_lights, std::optional<EnvironmentLight> environment, float scene_radius);
+  LightSet(AreaLights area_lights, std::optional<EnvironmentLight> environment,
+           std::vector<PunctualLight> punctual, float scene_radius);
 
   bool empty() const { return selection_.size() == 0; }
   std::optional<LightSample> sample(Point3f p, float u_select, Point2f u) const;
@@ -41,12 +44,15 @@ class LightSet {
 
   const AreaLights& area_lights() const { return area_; }
   const EnvironmentLight* environment() const { return environment_ ? &*environment_ : nullptr; }
+  const std::vector<PunctualLight>& punctual() const { return punctual_; }
 
  private:
-  enum Kind : int { kArea, kEnvironment, kKinds };
+  // Selection entries: 0 = all area lights, 1 = the environment, 2 + i = punctual light i.
+  enum Entry : int { kArea, kEnvironment, kFirstPunctual };
   AreaLights area_;
   std::optional<EnvironmentLight> environment_;
-  Distribution1D selection_;  // over Kind
+  std::vector<PunctualLight> punctual_;
+  Distribution1D selection_;
 };
 
 }  // namespace obscura

@@ -18,7 +18,7 @@ TraceScene::TraceScene(const Scene& scene, std::shared_ptr<const EmbreeDevice> d
     ray_epsilon_ = std::max(1e-6f, 1e-5f * extent);
     radius_ = std::max(1e-3f, 0.5f * distance(b.min, b.max));
   }
-  lights_ = LightSet(AreaLights(meshes_, scene.materials), std::nullopt, radius_);
+  lights_ = LightSet(AreaLights(meshes_, scene.materials), std::nullopt, {}, radius_);
 }
 
 void TraceScene::set_material(uint32_t index, TraceMaterial material) {
@@ -26,7 +26,13 @@ void TraceScene::set_material(uint32_t index, TraceMaterial material) {
 }
 
 void TraceScene::set_environment(std::optional<EnvironmentLight> environment) {
-  lights_ = LightSet(lights_.area_lights(), std::move(environment), radius_);
+  lights_ = LightSet(lights_.area_lights(), std::move(environment), lights_.punctual(), radius_);
+}
+
+void TraceScene::set_punctual_lights(std::vector<PunctualLight> lights) {
+  std::optional<EnvironmentLight> environment;
+  if (lights_.environment()) environment = *lights_.environment();
+  lights_ = LightSet(lights_.area_lights(), std::move(environment), std::move(lights), radius_);
 }
 
 std::optional<SurfaceHit> TraceScene::intersect(const Ray& ray) const {

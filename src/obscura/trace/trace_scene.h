@@ -34,6 +34,7 @@ class TraceScene {
   // Replace a material or the environment after compilation (tests, tools), before rendering.
   void set_material(uint32_t index, TraceMaterial material);
   void set_environment(std::optional<EnvironmentLight> environment);
+  void set_punctual_lights(std::vector<PunctualLight> lights);
 
  private:
   EmbreeScene embree_;
