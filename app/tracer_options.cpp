@@ -27,10 +27,10 @@ void add_tracer_options(CLI::App& render, TracerOptions& o) {
       ->capture_default_str();
   render.add_option("--sampler", o.sampler, "sobol (Owen-scrambled) or independent")
       ->capture_default_str();
-  render
-      .add_option("--max-depth", o.max_depth,
-                  "path: scattering events per path; whitted: mirror/refraction depth")
-      ->capture_default_str();
+  o.max_depth_option = render.add_option(
+      "--max-depth", o.max_depth,
+      "path: scattering events per path (default 65); whitted: mirror/refraction depth "
+      "(default 8)");
   render.add_option("--time-limit", o.time_limit_s,
                     "Stop after about this many seconds (without --spp: as many samples as fit)");
   render.add_flag("--aovs", o.aovs,
@@ -42,7 +42,8 @@ void validate(const TracerOptions& o) {
     throw UsageError("--renderer must be path, whitted or direct; got '" + o.renderer + "'");
   if (o.sampler != "sobol" && o.sampler != "independent")
     throw UsageError("--sampler must be sobol or independent; got '" + o.sampler + "'");
-  if (o.max_depth < 1)
+  bool depth_given = o.max_depth_option && o.max_depth_option->count() > 0;
+  if (depth_given && o.max_depth < 1)
     throw UsageError("--max-depth must be at least 1; got " + std::to_string(o.max_depth));
   if (!(o.time_limit_s >= 0))
     throw UsageError("--time-limit must be a number of seconds ≥ 0; got " +
@@ -54,10 +55,13 @@ SamplerType sampler_type(const TracerOptions& o) {
 }
 
 std::unique_ptr<Integrator> make_integrator(const TracerOptions& o) {
+  bool depth_given = o.max_depth_option && o.max_depth_option->count() > 0;
   if (o.renderer == "whitted")
-    return std::make_unique<WhittedIntegrator>(WhittedSettings{o.max_depth});
+    return std::make_unique<WhittedIntegrator>(
+        WhittedSettings{.max_depth = depth_given ? o.max_depth : WhittedSettings().max_depth});
   if (o.renderer == "direct") return std::make_unique<DirectLightingIntegrator>();
-  return std::make_unique<PathTracer>(PathTracerSettings{.max_depth = o.max_depth});
+  return std::make_unique<PathTracer>(
+      PathTracerSettings{.max_depth = depth_given ? o.max_depth : PathTracerSettings().max_depth});
 }
 
 int samples_per_pixel(const TracerOptions& o, int spp) {

@@ -21,6 +21,7 @@ struct TracerOptions {
   double time_limit_s = 0;            // 0 = none
   bool aovs = false;                  // also write <output>.albedo/.normal/.depth/.id.exr
   CLI::Option* spp_option = nullptr;  // to know whether --spp was given
+  CLI::Option* max_depth_option = nullptr;  // and --max-depth
 };
 
 void add_tracer_options(CLI::App& render, TracerOptions& options);
