@@ -9,11 +9,11 @@
 #include "obscura/io/image_io.h"
 #include "obscura/math/error.h"
 #include "obscura/scene/builtin_scenes.h"
-#include "obscura/trace/direct_lighting.h"
 #include "obscura/trace/render.h"
 #include "camera_options.h"
 #include "display_options.h"
 #include "progress_bar.h"
+#include "tracer_options.h"
 #include "usage_error.h"
 
 namespace obscura::app {
@@ -31,6 +31,7 @@ struct RenderOptions {
   bool list_scenes = false;
   CameraOverrides camera;
   DisplayOptions display;
+  TracerOptions tracer;
 };
 
 void validate(const RenderOptions& o) {
@@ -59,6 +60,7 @@ void run_render(const RenderOptions& options) {
     return;
   }
   validate(options);
+  validate(options.tracer);
   check_output_path(options.output);  // fail before rendering, not after
 
   std::optional<tbb::global_control> thread_limit;
@@ -73,20 +75,34 @@ void run_render(const RenderOptions& options) {
   TraceScene trace_scene(scene, device);
   Bounds2i crop = scene.camera.film.crop_pixels();
   Film film(crop.width(), crop.height());
-  RenderSettings settings{.samples_per_pixel = options.spp, .seed = options.seed};
+  InterruptGuard interrupt;
+  RenderSettings settings{.samples_per_pixel = samples_per_pixel(options.tracer, options.spp),
+                          .seed = options.seed,
+                          .sampler = sampler_type(options.tracer),
+                          .time_limit_s = options.tracer.time_limit_s,
+                          .cancel = &InterruptGuard::requested()};
+  std::optional<AovBuffers> aovs;
+  if (options.tracer.aovs) aovs.emplace(crop.width(), crop.height());
   ProgressBar bar("render", options.quiet);
-  RenderStats stats = render(trace_scene, scene.camera, DirectLightingIntegrator(), settings, film,
-                             [&](int done, int total) { bar.update(done, total); });
+  RenderStats stats = render(trace_scene, scene.camera, *make_integrator(options.tracer), settings,
+                             film, [&](int done, int total) { bar.update(done, total); },
+                             aovs ? &*aovs : nullptr);
   bar.finish();
 
   report_write(options.output,
                write_image(options.output, film.to_image(), image_write_options(options.display)),
                options.quiet);
   if (!options.quiet)
-    std::fprintf(stderr, "rendered %s: %dx%d, %d spp in %s (%.2f Mrays/s)\n", scene.name.c_str(),
-                 options.width, options.height, options.spp, format_seconds(stats.seconds).c_str(),
-                 stats.seconds > 0 ? stats.rays.total() / stats.seconds * 1e-6 : 0.0);
+    std::fprintf(stderr, "rendered %s: %dx%d, %d spp (%s) in %s (%.2f Mrays/s)%s\n",
+                 scene.name.c_str(), options.width, options.height, stats.samples_per_pixel,
+                 options.tracer.renderer.c_str(), format_seconds(stats.seconds).c_str(),
+                 stats.seconds > 0 ? stats.rays.total() / stats.seconds * 1e-6 : 0.0,
+                 stats.cancelled ? " [partial: interrupted]"
+                 : stats.partial ? " [partial: time limit]"
+                                 : "");
   std::printf("%s\n", options.output.c_str());
+  if (aovs)
+    for (const std::string& path : write_aovs(options.output, *aovs)) std::printf("%s\n", path.c_str());
 }
 
 }  // namespace
@@ -101,7 +117,8 @@ void add_render_command(CLI::App& app) {
       ->capture_default_str();
   render->add_option("--width", options->width, "Image width in pixels")->capture_default_str();
   render->add_option("--height", options->height, "Image height in pixels")->capture_default_str();
-  render->add_option("--spp", options->spp, "Samples per pixel")->capture_default_str();
+  options->tracer.spp_option =
+      render->add_option("--spp", options->spp, "Samples per pixel")->capture_default_str();
   render->add_option("--threads", options->threads, "Worker threads (0 = all cores)")
       ->capture_default_str();
   render->add_option("--seed", options->seed, "Random seed: same seed, same image")
@@ -110,6 +127,7 @@ void add_render_command(CLI::App& app) {
   render->add_flag("--scene-list", options->list_scenes, "List the built-in scenes and exit");
   add_camera_options(*render, options->camera);
   add_display_options(render, options->display);
+  add_tracer_options(*render, options->tracer);
   render->callback([options] { run_render(*options); });
 }
 

@@ -16,7 +16,8 @@ double corner_form_factor(double X, double Y) {
 }
 
 Mesh quad(const char* name, uint32_t material, Point3f a, Point3f b, Point3f c, Point3f d) {
-  return {.name = name, .positions = {a, b, c, d}, .indices = {0, 1, 2, 0, 2, 3}, .material = material};
+  return {
+      .name = name, .positions = {a, b, c, d}, .indices = {0, 1, 2, 0, 2, 3}, .material = material};
 }
 
 struct LitFloor {
@@ -50,7 +51,7 @@ TEST(DirectLighting, FloorUnderASquareLightMatchesTheFormFactor) {
   double sum = 0, sum2 = 0;
   RayCounts counts;
   for (int i = 0; i < kN; ++i) {
-    PixelSampler sampler(1, {0, 0}, uint32_t(i));
+    Sampler sampler(SamplerType::kIndependent, 1, {0, 0}, uint32_t(i));
     double v = integrator.radiance(scene, down, sampler, counts).g;
     sum += v, sum2 += v * v;
   }
@@ -70,13 +71,13 @@ TEST(DirectLighting, BlockedLightCastsShadowAndEmittersAreSeenOneSided) {
   TraceScene scene(setup.scene, device);
   DirectLightingIntegrator integrator;
   RayCounts counts;
-  PixelSampler sampler(1, {0, 0}, 0);
+  Sampler sampler(SamplerType::kIndependent, 1, {0, 0}, 0);
 
   Ray under_blocker;
   under_blocker.origin = {0, 0.25f, 0};
   under_blocker.direction = {0, -1, 0};
   for (int i = 0; i < 100; ++i) {
-    PixelSampler s(1, {0, 0}, uint32_t(i));
+    Sampler s(SamplerType::kIndependent, 1, {0, 0}, uint32_t(i));
     EXPECT_EQ(integrator.radiance(scene, under_blocker, s, counts), Rgb());
   }
 

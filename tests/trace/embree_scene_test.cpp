@@ -66,6 +66,22 @@ TEST(EmbreeScene, ClosestOfSeveralMeshesWins) {
   EXPECT_EQ(from_below->geometry_id, far_id);
 }
 
+TEST(EmbreeScene, GeometricNormalFollowsTheWinding) {
+  // Counter-clockwise seen from +Z: (p1 − p0) × (p2 − p0) = +Z, whichever side the ray comes from.
+  EmbreeScene scene(device());
+  std::vector<Point3f> p = {{0, 0, 0}, {4, 0, 0}, {0, 4, 0}};
+  std::vector<uint32_t> i = {0, 1, 2};
+  scene.add_triangle_mesh(p, i);
+  scene.commit();
+  for (float side : {1.f, -1.f}) {
+    std::optional<RayHit> hit = scene.intersect(ray_from({1, 1, 2 * side}, {0, 0, -side}));
+    ASSERT_TRUE(hit);
+    EXPECT_EQ(hit->normal.x, 0.f);
+    EXPECT_EQ(hit->normal.y, 0.f);
+    EXPECT_GT(hit->normal.z, 0.f);
+  }
+}
+
 TEST(EmbreeScene, RejectsIndicesPastTheVertices) {
   EmbreeScene scene(device());
   std::vector<Point3f> p = {{0, 0, 0}, {1, 0, 0}, {0, 1, 0}};

@@ -4,8 +4,8 @@
 
 namespace obscura {
 
-Rgb DirectLightingIntegrator::radiance(const TraceScene& scene, const Ray& ray,
-                                       PixelSampler& sampler, RayCounts& counts) const {
+Rgb DirectLightingIntegrator::radiance(const TraceScene& scene, const Ray& ray, Sampler& sampler,
+                                       RayCounts& counts, FirstHit* first_hit) const {
   // The light sample's numbers are drawn even on a miss, so dimensions stay aligned per sample.
   float u_light = sampler.next_1d();
   Point2f u_point = sampler.next_2d();
@@ -13,15 +13,18 @@ Rgb DirectLightingIntegrator::radiance(const TraceScene& scene, const Ray& ray,
   ++counts.camera;
   std::optional<SurfaceHit> hit = scene.intersect(ray);
   if (!hit) return {};
-  const Material& material = scene.material(hit->material);
-  Vector3f wo = -ray.direction;
+  record_first_hit(scene, *hit, ray.direction, first_hit);
+  const TraceMaterial& material = scene.material(hit->material);
+  Vector3f wo = normalize(-ray.direction);
 
   // Light emitted by the surface itself (one-sided: the front face emits).
   Rgb result = dot(hit->geometric_normal, wo) > 0 ? material.emission : Rgb();
-  if (scene.lights().empty() || material.diffuse.is_black()) return result;
+  AnyBsdf bsdf = material.bsdf_at(*hit);
+  if (scene.lights().empty() || bsdf.is_delta()) return result;
 
   // Surfaces are two-sided for reflection: shade with the normal facing the viewer.
   Normal3f n = face_forward(hit->geometric_normal, wo);
+  ShadingFrame frame = ShadingFrame::from_normal(to_vector(n));
   AreaLightSample light = scene.lights().sample(u_light, u_point);
   Vector3f to_light = light.position - hit->position;
   float distance2 = length_squared(to_light);
@@ -35,9 +38,10 @@ Rgb DirectLightingIntegrator::radiance(const TraceScene& scene, const Ray& ray,
   Point3f origin = offset_ray_origin(hit->position, n, wi, scene.ray_epsilon());
   if (scene.occluded(origin, light.position)) return result;
 
-  // L = f · Le · cosθ · cosθ' / d² / p_A, with the Lambertian f = ρ / π.
+  // L = f · Le · cosθ · cosθ' / d² / p_A.
   float geometry = cos_surface * cos_light / distance2;
-  result += material.diffuse * light.radiance * (kInvPi * geometry / light.pdf_area);
+  Rgb f = bsdf.f(frame.to_local(wo), frame.to_local(wi));
+  result += f * light.radiance * (geometry / light.pdf_area);
   return result;
 }
 

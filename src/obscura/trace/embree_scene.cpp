@@ -48,12 +48,15 @@ RTCRay to_rtc_ray(const Ray& ray) {
 
 EmbreeDevice::EmbreeDevice() {
   device_ = rtcNewDevice(nullptr);
-  if (!device_) throw Error("cannot create the Embree device (error " +
-                            std::to_string(int(rtcGetDeviceError(nullptr))) + ")");
+  if (!device_)
+    throw Error("cannot create the Embree device (error " +
+                std::to_string(int(rtcGetDeviceError(nullptr))) + ")");
   rtcSetDeviceErrorFunction(device_, on_embree_error, &error_slot());
 }
 
-EmbreeDevice::~EmbreeDevice() { rtcReleaseDevice(device_); }
+EmbreeDevice::~EmbreeDevice() {
+  rtcReleaseDevice(device_);
+}
 
 void EmbreeDevice::throw_if_error(const char* during) const {
   ErrorSlot& slot = error_slot();
@@ -72,7 +75,9 @@ EmbreeScene::EmbreeScene(std::shared_ptr<const EmbreeDevice> device) : device_(s
   device_->throw_if_error("creating the Embree scene");
 }
 
-EmbreeScene::~EmbreeScene() { rtcReleaseScene(scene_); }
+EmbreeScene::~EmbreeScene() {
+  rtcReleaseScene(scene_);
+}
 
 uint32_t EmbreeScene::add_triangle_mesh(std::span<const Point3f> positions,
                                         std::span<const uint32_t> indices) {
@@ -88,9 +93,9 @@ uint32_t EmbreeScene::add_triangle_mesh(std::span<const Point3f> positions,
   // Embree may read 16 bytes at the last vertex, so its own buffers (padded) are used.
   auto* vertices = static_cast<float*>(rtcSetNewGeometryBuffer(
       geometry, RTC_BUFFER_TYPE_VERTEX, 0, RTC_FORMAT_FLOAT3, 3 * sizeof(float), positions.size()));
-  auto* triangles = static_cast<uint32_t*>(rtcSetNewGeometryBuffer(
-      geometry, RTC_BUFFER_TYPE_INDEX, 0, RTC_FORMAT_UINT3, 3 * sizeof(uint32_t),
-      indices.size() / 3));
+  auto* triangles = static_cast<uint32_t*>(
+      rtcSetNewGeometryBuffer(geometry, RTC_BUFFER_TYPE_INDEX, 0, RTC_FORMAT_UINT3,
+                              3 * sizeof(uint32_t), indices.size() / 3));
   device_->throw_if_error("allocating Embree geometry buffers");
   for (size_t i = 0; i < positions.size(); ++i) {
     vertices[3 * i + 0] = positions[i].x;
@@ -120,7 +125,12 @@ std::optional<RayHit> EmbreeScene::intersect(const Ray& ray) const {
   query.hit.instID[0] = RTC_INVALID_GEOMETRY_ID;
   rtcIntersect1(scene_, &context, &query);
   if (query.hit.geomID == RTC_INVALID_GEOMETRY_ID) return std::nullopt;
-  return RayHit{query.ray.tfar, query.hit.geomID, query.hit.primID, {query.hit.u, query.hit.v}};
+  // Embree's Ng is e2 × e1 with e1 = p0 − p1, e2 = p2 − p0, i.e. (p1 − p0) × (p2 − p0).
+  return RayHit{query.ray.tfar,
+                query.hit.geomID,
+                query.hit.primID,
+                {query.hit.u, query.hit.v},
+                {query.hit.Ng_x, query.hit.Ng_y, query.hit.Ng_z}};
 }
 
 bool EmbreeScene::occluded(const Ray& ray) const {

@@ -33,10 +33,12 @@ class EmbreeDevice {
 };
 
 struct RayHit {
-  float t;              // distance along the ray, in multiples of its direction
-  uint32_t geometry_id;  // as returned by add_triangle_mesh
+  float t;                // distance along the ray, in multiples of its direction
+  uint32_t geometry_id;   // as returned by add_triangle_mesh
   uint32_t primitive_id;  // triangle index within that mesh
   Point2f barycentric;    // (b1, b2): the hit point is (1−b1−b2)·p0 + b1·p1 + b2·p2
+  Vector3f normal;        // the triangle's geometric normal as Embree computed it, not unit;
+                          // along (p1 − p0) × (p2 − p0)
 };
 
 class EmbreeScene {

@@ -6,7 +6,7 @@
 
 #include "obscura/color/rgb.h"
 #include "obscura/math/ray.h"
-#include "obscura/math/rng.h"
+#include "obscura/math/sampler.h"
 #include "obscura/trace/trace_scene.h"
 
 namespace obscura {
@@ -21,12 +21,26 @@ struct RayCounts {
   }
 };
 
+// What the camera ray met first: the auxiliary outputs (AOVs) denoisers and compositors use.
+struct FirstHit {
+  bool hit = false;
+  Rgb albedo;       // the surface's reflectance (see AnyBsdf::albedo)
+  Normal3f normal;  // world-space shading normal, facing the camera
+  float depth = 0;  // distance from the ray origin (m)
+  uint32_t id = 0;  // the mesh hit
+};
+
 class Integrator {
  public:
   virtual ~Integrator() = default;
-  // Radiance along `ray`; draws its random numbers from `sampler` (after the camera's).
-  virtual Rgb radiance(const TraceScene& scene, const Ray& ray, PixelSampler& sampler,
-                       RayCounts& counts) const = 0;
+  // Radiance along `ray`; draws its random numbers from `sampler` (after the camera's). When
+  // `first_hit` is given, it receives the first surface the ray met.
+  virtual Rgb radiance(const TraceScene& scene, const Ray& ray, Sampler& sampler, RayCounts& counts,
+                       FirstHit* first_hit = nullptr) const = 0;
 };
+
+// Fills `first_hit` (if not null) from a hit of a ray with unit direction `direction`.
+void record_first_hit(const TraceScene& scene, const SurfaceHit& hit, Vector3f direction,
+                      FirstHit* first_hit);
 
 }  // namespace obscura

@@ -1,5 +1,6 @@
 #include "obscura/trace/render.h"
 
+#include <algorithm>
 #include <chrono>
 #include <mutex>
 #include <string>
@@ -9,11 +10,28 @@
 
 namespace obscura {
 
+namespace {
+
+using Clock = std::chrono::steady_clock;
+
+double seconds_since(Clock::time_point start) {
+  return std::chrono::duration<double>(Clock::now() - start).count();
+}
+
+bool cancelled(const RenderSettings& settings) {
+  return settings.cancel && settings.cancel->load(std::memory_order_relaxed);
+}
+
+}  // namespace
+
 RenderStats render(const TraceScene& scene, const Camera& camera, const Integrator& integrator,
-                   const RenderSettings& settings, Film& film, const ProgressCallback& progress) {
+                   const RenderSettings& settings, Film& film, const ProgressCallback& progress,
+                   AovBuffers* aovs) {
   if (settings.samples_per_pixel <= 0)
     throw Error("samples per pixel",
                 "must be positive; got " + std::to_string(settings.samples_per_pixel));
+  if (settings.time_limit_s < 0)
+    throw Error("time limit", "must be ≥ 0 seconds; got " + std::to_string(settings.time_limit_s));
   camera.validate();
   Bounds2i crop = camera.film.crop_pixels();
   if (film.width() != crop.width() || film.height() != crop.height())
@@ -23,43 +41,79 @@ RenderStats render(const TraceScene& scene, const Camera& camera, const Integrat
                               ")");
   const FilterSampler filter(camera.film.filter);
   const auto exposure = float(camera.exposure_scale());
-  auto start = std::chrono::steady_clock::now();
+  auto start = Clock::now();
   RenderStats stats;
   std::mutex stats_mutex;
+  const int tile_count = int(make_tiles(film.bounds(), settings.tile_size).size());
+  const int spp = settings.samples_per_pixel;
 
-  for_each_tile_parallel(
-      film.bounds(), settings.tile_size,
-      [&](const Bounds2i& tile) {
-        RayCounts counts;
-        for (int y = tile.min.y; y < tile.max.y; ++y) {
-          for (int x = tile.min.x; x < tile.max.x; ++x) {
-            // Random numbers are keyed on the full image's pixel, so a crop renders exactly the
-            // pixels the full render would.
-            Point2i pixel{x + crop.min.x, y + crop.min.y};
-            for (int s = 0; s < settings.samples_per_pixel; ++s) {
-              PixelSampler sampler(settings.seed, pixel, uint32_t(s));
-              // 1. A film point around the pixel centre, distributed as the reconstruction filter.
-              Point2f u_filter = sampler.next_2d();
-              FilterSample fs = filter.sample({u_filter.x, u_filter.y});
-              Point2d film_point(pixel.x + 0.5 + fs.offset_px.x, pixel.y + 0.5 + fs.offset_px.y);
-              // 2. A point on the lens and a time in the shutter interval.
-              Point2f u_lens = sampler.next_2d();
-              double time = camera.shutter.time_at(sampler.next_1d());
-              // 3. The radiance along the ray, exposed, into this pixel with the filter's weight.
-              std::optional<CameraRay> ray =
-                  camera.generate_ray(film_point, {u_lens.x, u_lens.y}, time);
-              Rgb radiance =
-                  ray ? integrator.radiance(scene, ray->to_ray(), sampler, counts) : Rgb();
-              film.add_sample({x, y}, radiance * exposure, float(fs.weight));
-            }
-          }
+  auto render_samples = [&](const Bounds2i& tile, int first_sample, int end_sample) {
+    RayCounts counts;
+    for (int y = tile.min.y; y < tile.max.y; ++y) {
+      for (int x = tile.min.x; x < tile.max.x; ++x) {
+        // Random numbers are keyed on the full image's pixel, so a crop renders exactly the
+        // pixels the full render would.
+        Point2i pixel{x + crop.min.x, y + crop.min.y};
+        for (int s = first_sample; s < end_sample; ++s) {
+          Sampler sampler(settings.sampler, settings.seed, pixel, uint32_t(s));
+          // 1. A film point around the pixel centre, distributed as the reconstruction filter.
+          Point2f u_filter = sampler.next_2d();
+          FilterSample fs = filter.sample({u_filter.x, u_filter.y});
+          Point2d film_point(pixel.x + 0.5 + fs.offset_px.x, pixel.y + 0.5 + fs.offset_px.y);
+          // 2. A point on the lens and a time in the shutter interval.
+          Point2f u_lens = sampler.next_2d();
+          double time = camera.shutter.time_at(sampler.next_1d());
+          // 3. The radiance along the ray, exposed, into this pixel with the filter's weight.
+          std::optional<CameraRay> ray =
+              camera.generate_ray(film_point, {u_lens.x, u_lens.y}, time);
+          FirstHit first;
+          Rgb radiance = ray ? integrator.radiance(scene, ray->to_ray(), sampler, counts,
+                                                   aovs ? &first : nullptr)
+                             : Rgb();
+          film.add_sample({x, y}, radiance * exposure, float(fs.weight));
+          if (aovs)
+            aovs->add_sample({x, y}, first.hit, first.albedo, first.normal, first.depth, first.id);
         }
-        std::lock_guard lock(stats_mutex);
-        stats.rays += counts;
-      },
-      progress);
+      }
+    }
+    std::lock_guard lock(stats_mutex);
+    stats.rays += counts;
+  };
 
-  stats.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  // Passes of 1, 1, 2, 4, … samples (at most 64), each over every tile.
+  int done = 0;
+  int pass_size = 1;
+  while (done < spp) {
+    int end = std::min(spp, done + pass_size);
+    double pass_start = seconds_since(start);
+    int pass_first = done;
+    for_each_tile_parallel(
+        film.bounds(), settings.tile_size,
+        [&](const Bounds2i& tile) {
+          if (!cancelled(settings)) render_samples(tile, pass_first, end);
+        },
+        progress ? ProgressCallback([&](int tiles_done, int) {
+          // Progress in samples × tiles over the whole render.
+          progress(pass_first * tile_count + (end - pass_first) * tiles_done, spp * tile_count);
+        })
+                 : ProgressCallback());
+    if (cancelled(settings)) {
+      stats.cancelled = stats.partial = true;
+      break;
+    }
+    done = end;
+    double now = seconds_since(start), pass_seconds = now - pass_start;
+    if (done > 1) pass_size = std::min(64, pass_size * 2);
+    // Would the next pass (about twice as long as this one) overrun the limit?
+    double next_seconds =
+        pass_seconds * std::min(spp - done, pass_size) / std::max(1, end - pass_first);
+    if (done < spp && settings.time_limit_s > 0 && now + next_seconds > settings.time_limit_s) {
+      stats.partial = true;
+      break;
+    }
+  }
+  stats.samples_per_pixel = done;
+  stats.seconds = seconds_since(start);
   return stats;
 }
 

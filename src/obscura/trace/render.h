@@ -2,9 +2,11 @@
 // camera ray per sample, the pixel's mean into the film.
 #pragma once
 
+#include <atomic>
 #include <cstdint>
 
 #include "obscura/camera/camera.h"
+#include "obscura/film/aov_buffers.h"
 #include "obscura/film/film.h"
 #include "obscura/film/tiles.h"
 #include "obscura/trace/integrator.h"
@@ -12,24 +14,36 @@
 namespace obscura {
 
 struct RenderSettings {
-  int samples_per_pixel = 16;  // > 0
+  int samples_per_pixel = 16;  // > 0; the most a time-limited render takes
   uint64_t seed = 0;
+  SamplerType sampler = SamplerType::kSobol;
   int tile_size = 16;
+  // Stop starting new passes once the next one would end after this many seconds (0 = no
+  // limit). At least one pass is always rendered.
+  double time_limit_s = 0;
+  // Set from another thread (a signal handler) to stop: tiles not yet started are skipped.
+  const std::atomic<bool>* cancel = nullptr;
 };
 
 struct RenderStats {
   RayCounts rays;
   double seconds = 0;
+  int samples_per_pixel = 0;  // completed in every pixel
+  bool partial = false;       // stopped early: by the time limit or by `cancel`
+  bool cancelled = false;     // `cancel` was set (some pixels may have fewer samples)
 };
 
-// Renders the camera's crop window (the full image by default) into `film`, which must have
-// the crop's size. Each sample draws, in order, a filter offset (2D), a lens point (2D) and a
-// time in the shutter interval (1D) before the integrator's numbers; its radiance is scaled by
-// the camera's exposure. Deterministic: every random number is a function of
-// (seed, pixel, sample, dimension) and each pixel sums its own samples in order, so the image is
-// bit-identical for any thread count.
+// Renders the camera's crop window (the full image by default) into `film` (and `aovs`, if
+// given), which must have the crop's size. Each sample draws, in order, a filter offset (2D), a
+// lens point (2D) and a time in the shutter interval (1D) before the integrator's numbers; its
+// radiance is scaled by the camera's exposure.
+//
+// Samples are rendered in passes (1, 1, 2, 4, … samples per pixel) so that a time limit or a
+// cancellation leaves an evenly sampled image. Deterministic: every random number is a function
+// of (seed, pixel, sample, dimension) and each pixel sums its own samples in order, so the image
+// is bit-identical for any thread count (for time-limited renders: for the same pass count).
 RenderStats render(const TraceScene& scene, const Camera& camera, const Integrator& integrator,
                    const RenderSettings& settings, Film& film,
-                   const ProgressCallback& progress = {});
+                   const ProgressCallback& progress = {}, AovBuffers* aovs = nullptr);
 
 }  // namespace obscura

@@ -1,0 +1,99 @@
+#include "tracer_options.h"
+
+#include <csignal>
+#include <limits>
+
+#include "obscura/io/image_io.h"
+#include "obscura/trace/direct_lighting.h"
+#include "obscura/trace/path_tracer.h"
+#include "obscura/trace/whitted.h"
+#include "usage_error.h"
+
+namespace obscura::app {
+
+namespace {
+
+std::atomic<bool> interrupt_requested{false};
+
+extern "C" void on_sigint(int) {
+  interrupt_requested.store(true);
+  std::signal(SIGINT, SIG_DFL);  // a second Ctrl-C ends the process at once
+}
+
+}  // namespace
+
+void add_tracer_options(CLI::App& render, TracerOptions& o) {
+  render.add_option("--renderer", o.renderer, "path (physically based), whitted, or direct")
+      ->capture_default_str();
+  render.add_option("--sampler", o.sampler, "sobol (Owen-scrambled) or independent")
+      ->capture_default_str();
+  o.max_depth_option = render.add_option(
+      "--max-depth", o.max_depth,
+      "path: scattering events per path (default 65); whitted: mirror/refraction depth "
+      "(default 8)");
+  render.add_option("--time-limit", o.time_limit_s,
+                    "Stop after about this many seconds (without --spp: as many samples as fit)");
+  render.add_flag("--aovs", o.aovs,
+                  "Also write albedo, normal, depth and id images beside the output (.exr)");
+}
+
+void validate(const TracerOptions& o) {
+  if (o.renderer != "path" && o.renderer != "whitted" && o.renderer != "direct")
+    throw UsageError("--renderer must be path, whitted or direct; got '" + o.renderer + "'");
+  if (o.sampler != "sobol" && o.sampler != "independent")
+    throw UsageError("--sampler must be sobol or independent; got '" + o.sampler + "'");
+  bool depth_given = o.max_depth_option && o.max_depth_option->count() > 0;
+  if (depth_given && o.max_depth < 1)
+    throw UsageError("--max-depth must be at least 1; got " + std::to_string(o.max_depth));
+  if (!(o.time_limit_s >= 0))
+    throw UsageError("--time-limit must be a number of seconds ≥ 0; got " +
+                     std::to_string(o.time_limit_s));
+}
+
+SamplerType sampler_type(const TracerOptions& o) {
+  return o.sampler == "independent" ? SamplerType::kIndependent : SamplerType::kSobol;
+}
+
+std::unique_ptr<Integrator> make_integrator(const TracerOptions& o) {
+  bool depth_given = o.max_depth_option && o.max_depth_option->count() > 0;
+  if (o.renderer == "whitted")
+    return std::make_unique<WhittedIntegrator>(
+        WhittedSettings{.max_depth = depth_given ? o.max_depth : WhittedSettings().max_depth});
+  if (o.renderer == "direct") return std::make_unique<DirectLightingIntegrator>();
+  return std::make_unique<PathTracer>(
+      PathTracerSettings{.max_depth = depth_given ? o.max_depth : PathTracerSettings().max_depth});
+}
+
+int samples_per_pixel(const TracerOptions& o, int spp) {
+  bool spp_given = o.spp_option && o.spp_option->count() > 0;
+  return o.time_limit_s > 0 && !spp_given ? std::numeric_limits<int>::max() / 2 : spp;
+}
+
+std::vector<std::string> write_aovs(const std::string& output, const AovBuffers& aovs) {
+  std::string stem = output.substr(0, output.find_last_of('.'));
+  std::vector<std::string> paths;
+  auto write = [&](const char* name, const Image& image) {
+    paths.push_back(stem + "." + name + ".exr");
+    write_image(paths.back(), image);
+  };
+  write("albedo", aovs.albedo());
+  write("normal", aovs.normal());
+  write("depth", aovs.depth());
+  write("id", aovs.id());
+  return paths;
+}
+
+InterruptGuard::InterruptGuard() {
+  interrupt_requested.store(false);
+  std::signal(SIGINT, on_sigint);
+}
+
+InterruptGuard::~InterruptGuard() {
+  std::signal(SIGINT, SIG_DFL);
+}
+
+const std::atomic<bool>& InterruptGuard::requested() {
+  return interrupt_requested;
+}
+
+}  // namespace obscura::app

@@ -1,0 +1,48 @@
+// The tracer's part of `obscura render`: which integrator and sampler, how deep, for how long,
+// which auxiliary outputs, and Ctrl-C handling.
+#pragma once
+
+#include <atomic>
+#include <memory>
+#include <string>
+
+#include <CLI/CLI.hpp>
+
+#include "obscura/film/aov_buffers.h"
+#include "obscura/math/sampler.h"
+#include "obscura/trace/integrator.h"
+
+namespace obscura::app {
+
+struct TracerOptions {
+  std::string renderer = "path";      // path | whitted | direct
+  std::string sampler = "sobol";      // sobol | independent
+  int max_depth = 65;                 // path: scattering events per path; whitted: recursion depth
+  double time_limit_s = 0;            // 0 = none
+  bool aovs = false;                  // also write <output>.albedo/.normal/.depth/.id.exr
+  CLI::Option* spp_option = nullptr;  // to know whether --spp was given
+  CLI::Option* max_depth_option = nullptr;  // and --max-depth
+};
+
+void add_tracer_options(CLI::App& render, TracerOptions& options);
+// Throws UsageError for an unknown renderer or sampler, or a bad depth or time limit.
+void validate(const TracerOptions& options);
+SamplerType sampler_type(const TracerOptions& options);
+std::unique_ptr<Integrator> make_integrator(const TracerOptions& options);
+// With --time-limit and no --spp, samples are unlimited (until the time is up).
+int samples_per_pixel(const TracerOptions& options, int spp);
+// Writes the AOV images beside `output` (render.png → render.albedo.exr, …); returns the paths.
+std::vector<std::string> write_aovs(const std::string& output, const AovBuffers& aovs);
+
+// While alive, SIGINT (Ctrl-C) sets `requested()` instead of killing the process, so the
+// render stops and the image rendered so far is still written. A second Ctrl-C kills.
+class InterruptGuard {
+ public:
+  InterruptGuard();
+  ~InterruptGuard();
+  InterruptGuard(const InterruptGuard&) = delete;
+  InterruptGuard& operator=(const InterruptGuard&) = delete;
+  static const std::atomic<bool>& requested();
+};
+
+}  // namespace obscura::app

@@ -1,0 +1,286 @@
+// The tracer's ray throughput next to raw Embree on the same rays, and the path tracer's time to
+// reach Cycles' error on the reference Cornell box.
+//   rays/<scene>/<kind>/<obscura|embree_raw>/<threads>: primary (one per pixel of a 640×360
+//     view), shadow (from each primary hit towards a point above the scene) and incoherent
+//     bounce rays (cosine-distributed about the hit normal). "obscura" goes through
+//     TraceScene::intersect (closest hit + the SurfaceHit shading needs) and
+//     TraceScene::occluded; "embree_raw" calls rtcIntersect1/rtcOccluded1 on an Embree scene
+//     built with the same flags.
+//   cornell/path/<spp>: renders ../shared/reference/cornell at 128², reports RMSE vs the
+//     16,384-spp Cycles reference.
+// Scenes: the Stanford bunny (../shared/assets/meshes/stanford_bunny/bun_zipper.ply, 69 k
+// triangles) and, when OBSCURA_BENCH_OBJ names it, the 1 M-triangle sphere grid written by
+// ../shared/tools/peers/embree/run.sh --write-obj.
+// Run: OBSCURA_BENCH_OBJ=spheres.obj build/bench/tracer_bench --benchmark_counters_tabular=true
+#include <benchmark/benchmark.h>
+
+#include <embree3/rtcore.h>
+#include <tbb/global_control.h>
+#include <tbb/parallel_for.h>
+
+#include <cmath>
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+#include <vector>
+
+#include "../tests/trace/trace_test_scenes.h"
+#include "obscura/io/image_io.h"
+#include "obscura/math/rng.h"
+#include "obscura/math/sampling.h"
+#include "obscura/trace/path_tracer.h"
+#include "obscura/trace/render.h"
+
+namespace obscura {
+namespace {
+
+// ../shared beside the checkout, found from this source file's location.
+std::string shared(const std::string& relative) {
+  return (std::filesystem::path(__FILE__).parent_path() / "../../shared" / relative).string();
+}
+
+// Vertices and faces of an ASCII PLY (the Stanford scans), or of an OBJ with triangles.
+Mesh read_mesh(const std::string& path) {
+  std::ifstream in(path);
+  if (!in) throw Error(path, "cannot open");
+  Mesh mesh;
+  mesh.name = path;
+  std::string line;
+  if (path.ends_with(".ply")) {
+    size_t vertices = 0, faces = 0;
+    while (std::getline(in, line) && line != "end_header") {
+      std::istringstream w(line);
+      std::string a, b;
+      size_t n;
+      if (w >> a >> b >> n && a == "element") (b == "vertex" ? vertices : faces) = n;
+    }
+    for (size_t i = 0; i < vertices && std::getline(in, line); ++i) {
+      std::istringstream w(line);
+      Point3f p;
+      w >> p.x >> p.y >> p.z;
+      mesh.positions.push_back(p);
+    }
+    for (size_t i = 0; i < faces && std::getline(in, line); ++i) {
+      std::istringstream w(line);
+      uint32_t n, a, b, c;
+      w >> n >> a >> b >> c;
+      mesh.indices.insert(mesh.indices.end(), {a, b, c});
+    }
+    return mesh;
+  }
+  while (std::getline(in, line)) {
+    std::istringstream w(line);
+    std::string tag;
+    w >> tag;
+    if (tag == "v") {
+      Point3f p;
+      w >> p.x >> p.y >> p.z;
+      mesh.positions.push_back(p);
+    } else if (tag == "f") {
+      std::string v;
+      while (w >> v) mesh.indices.push_back(uint32_t(std::stoul(v) - 1));
+    }
+  }
+  return mesh;
+}
+
+struct RayBatch {
+  std::vector<Ray> primary, shadow, bounce;
+};
+
+struct BenchScene {
+  Scene scene;
+  std::unique_ptr<TraceScene> trace;
+  RTCDevice raw_device = nullptr;
+  RTCScene raw = nullptr;
+  RayBatch rays;
+};
+
+void build_raw(BenchScene& s) {
+  s.raw_device = rtcNewDevice(nullptr);
+  s.raw = rtcNewScene(s.raw_device);
+  rtcSetSceneFlags(s.raw, RTC_SCENE_FLAG_ROBUST);
+  rtcSetSceneBuildQuality(s.raw, RTC_BUILD_QUALITY_HIGH);
+  for (const Mesh& m : s.scene.meshes) {
+    RTCGeometry g = rtcNewGeometry(s.raw_device, RTC_GEOMETRY_TYPE_TRIANGLE);
+    auto* v = static_cast<float*>(rtcSetNewGeometryBuffer(
+        g, RTC_BUFFER_TYPE_VERTEX, 0, RTC_FORMAT_FLOAT3, 12, m.positions.size()));
+    auto* i = static_cast<unsigned*>(rtcSetNewGeometryBuffer(
+        g, RTC_BUFFER_TYPE_INDEX, 0, RTC_FORMAT_UINT3, 12, m.triangle_count()));
+    for (size_t k = 0; k < m.positions.size(); ++k)
+      v[3 * k] = m.positions[k].x, v[3 * k + 1] = m.positions[k].y, v[3 * k + 2] = m.positions[k].z;
+    for (size_t k = 0; k < m.indices.size(); ++k) i[k] = m.indices[k];
+    rtcCommitGeometry(g);
+    rtcAttachGeometry(s.raw, g);
+    rtcReleaseGeometry(g);
+  }
+  rtcCommitScene(s.raw);
+}
+
+// Frames the mesh's bounds from the front-top and builds the three ray sets.
+BenchScene make_bench_scene(Mesh mesh) {
+  BenchScene s;
+  s.scene.name = mesh.name;
+  s.scene.materials = {{.name = "grey", .diffuse = Rgb(0.5f), .emission = {}}};
+  Bounds3f b;
+  for (Point3f p : mesh.positions) b = unite(b, p);
+  s.scene.meshes = {std::move(mesh)};
+  Point3f c = b.min + (b.max - b.min) * 0.5f;
+  float r = 0.5f * distance(b.min, b.max);
+  Camera camera =
+      testing::make_camera({c.x, c.y + 0.6 * r, c.z + 1.6 * r}, {c.x, c.y, c.z}, 640, 45);
+  camera.film.height_px = 360;
+  s.trace = std::make_unique<TraceScene>(s.scene, std::make_shared<EmbreeDevice>());
+  build_raw(s);
+  Point3f light(c.x + r, c.y + 3 * r, c.z + r);
+  Pcg32 rng(1);
+  for (int y = 0; y < 360; ++y)
+    for (int x = 0; x < 640; ++x) {
+      Ray ray = camera.generate_ray({x + 0.5, y + 0.5})->to_ray();
+      ray.t_min = 0;
+      s.rays.primary.push_back(ray);
+      std::optional<SurfaceHit> hit = s.trace->intersect(ray);
+      if (!hit) continue;
+      Normal3f n = face_forward(hit->geometric_normal, -ray.direction);
+      Ray shadow;
+      shadow.origin = offset_ray_origin(hit->position, n, to_vector(n), s.trace->ray_epsilon());
+      shadow.direction = light - shadow.origin;
+      shadow.t_max = 1;
+      s.rays.shadow.push_back(shadow);
+      ShadingFrame frame = ShadingFrame::from_normal(to_vector(n));
+      Ray bounce;
+      bounce.origin = shadow.origin;
+      bounce.direction =
+          frame.to_world(sample_cosine_hemisphere({rng.next_float(), rng.next_float()}));
+      s.rays.bounce.push_back(bounce);
+    }
+  return s;
+}
+
+BenchScene& bunny() {
+  static BenchScene s =
+      make_bench_scene(read_mesh(shared("assets/meshes/stanford_bunny/bun_zipper.ply")));
+  return s;
+}
+
+BenchScene* spheres() {
+  static std::unique_ptr<BenchScene> s = [] {
+    const char* path = std::getenv("OBSCURA_BENCH_OBJ");
+    return path ? std::make_unique<BenchScene>(make_bench_scene(read_mesh(path))) : nullptr;
+  }();
+  return s.get();
+}
+
+enum Kind { kPrimary, kShadow, kBounce };
+enum Impl { kObscura, kRaw };
+
+const std::vector<Ray>& rays_of(const BenchScene& s, Kind kind) {
+  return kind == kPrimary ? s.rays.primary : kind == kShadow ? s.rays.shadow : s.rays.bounce;
+}
+
+float trace_one(const BenchScene& s, const Ray& r, Kind kind, Impl impl) {
+  if (impl == kObscura) {
+    if (kind == kShadow) return s.trace->occluded(r) ? 1.f : 0.f;
+    std::optional<SurfaceHit> hit = s.trace->intersect(r);
+    return hit ? hit->t : 0.f;
+  }
+  RTCIntersectContext context;
+  rtcInitIntersectContext(&context);
+  if (kind == kShadow) {
+    RTCRay q{};
+    q.org_x = r.origin.x, q.org_y = r.origin.y, q.org_z = r.origin.z;
+    q.dir_x = r.direction.x, q.dir_y = r.direction.y, q.dir_z = r.direction.z;
+    q.tnear = r.t_min, q.tfar = r.t_max, q.mask = ~0u;
+    rtcOccluded1(s.raw, &context, &q);
+    return q.tfar < 0 ? 1.f : 0.f;
+  }
+  RTCRayHit q{};
+  q.ray.org_x = r.origin.x, q.ray.org_y = r.origin.y, q.ray.org_z = r.origin.z;
+  q.ray.dir_x = r.direction.x, q.ray.dir_y = r.direction.y, q.ray.dir_z = r.direction.z;
+  q.ray.tnear = r.t_min, q.ray.tfar = r.t_max, q.ray.mask = ~0u;
+  q.hit.geomID = RTC_INVALID_GEOMETRY_ID;
+  rtcIntersect1(s.raw, &context, &q);
+  return q.hit.geomID != RTC_INVALID_GEOMETRY_ID ? q.ray.tfar : 0.f;
+}
+
+void bench_rays(benchmark::State& state, BenchScene* (*scene)(), Kind kind, Impl impl) {
+  BenchScene* s = scene();
+  if (!s) {
+    state.SkipWithError("set OBSCURA_BENCH_OBJ to the peer's sphere-grid OBJ");
+    return;
+  }
+  tbb::global_control threads(tbb::global_control::max_allowed_parallelism, state.range(0));
+  const std::vector<Ray>& rays = rays_of(*s, kind);
+  for (auto _ : state) {
+    tbb::parallel_for(tbb::blocked_range<size_t>(0, rays.size(), 4096),
+                      [&](const tbb::blocked_range<size_t>& range) {
+                        float sum = 0;
+                        for (size_t i = range.begin(); i < range.end(); ++i)
+                          sum += trace_one(*s, rays[i], kind, impl);
+                        benchmark::DoNotOptimize(sum);
+                      });
+  }
+  state.counters["Mrays/s"] = benchmark::Counter(double(rays.size()) * state.iterations() * 1e-6,
+                                                 benchmark::Counter::kIsRate);
+}
+
+BenchScene* bunny_ptr() {
+  return &bunny();
+}
+
+void register_ray_benchmarks() {
+  const char* kinds[] = {"primary", "shadow", "bounce"};
+  const char* impls[] = {"obscura", "embree_raw"};
+  for (auto [name, scene] : {std::pair{"bunny", &bunny_ptr}, std::pair{"spheres_1M", &spheres}})
+    for (int k = 0; k < 3; ++k)
+      for (int i = 0; i < 2; ++i)
+        benchmark::RegisterBenchmark(
+            (std::string("rays/") + name + "/" + kinds[k] + "/" + impls[i]).c_str(),
+            [scene, k, i](benchmark::State& st) { bench_rays(st, scene, Kind(k), Impl(i)); })
+            ->Arg(1)
+            ->Arg(2)
+            ->Unit(benchmark::kMillisecond)
+            ->UseRealTime();
+}
+
+// The reference Cornell box at 128², path traced at state.range(0) spp with 2 threads.
+void cornell_path(benchmark::State& state) {
+  tbb::global_control threads(tbb::global_control::max_allowed_parallelism, 2);
+  Scene scene = testing::read_obj_triangles(shared("reference/cornell/cornell.obj"),
+                                            {{"white", 0}, {"red", 1}, {"green", 2}, {"light", 3}});
+  scene.materials = {{.name = "white", .diffuse = Rgb(0.8f), .emission = {}},
+                     {.name = "red", .diffuse = {0.63f, 0.065f, 0.05f}, .emission = {}},
+                     {.name = "green", .diffuse = {0.14f, 0.45f, 0.091f}, .emission = {}},
+                     {.name = "light", .diffuse = Rgb(0.f), .emission = Rgb(15.f)}};
+  Camera camera = testing::make_camera({0, 1, 3.9}, {0, 1, 0}, 128, 39.597752709049864);
+  TraceScene trace(scene, std::make_shared<EmbreeDevice>());
+  Image reference = read_image(shared("reference/cornell/cornell_ref.exr"));
+  double rmse = 0;
+  uint64_t seed = 100;
+  for (auto _ : state) {
+    Film film(128, 128);
+    render(trace, camera, PathTracer(), {.samples_per_pixel = int(state.range(0)), .seed = seed++},
+           film);
+    double se = 0;
+    for (int y = 0; y < 128; ++y)
+      for (int x = 0; x < 128; ++x)
+        for (int c = 0; c < 3; ++c)
+          se += std::pow(film.pixel({x, y})[c] - reference.at(x, y, c), 2);
+    rmse += std::sqrt(se / (128 * 128 * 3));
+  }
+  state.counters["rmse"] = rmse / state.iterations();
+}
+
+BENCHMARK(cornell_path)
+    ->Name("cornell/path")
+    ->Arg(64)
+    ->Arg(128)
+    ->Arg(256)
+    ->Unit(benchmark::kMillisecond)
+    ->UseRealTime();
+
+[[maybe_unused]] const bool registered = (register_ray_benchmarks(), true);
+
+}  // namespace
+}  // namespace obscura

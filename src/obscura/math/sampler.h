@@ -1,0 +1,73 @@
+// The numbers one sample of one pixel draws, dimension after dimension: the renderers' only
+// source of randomness. Every number is a pure function of (seed, pixel, sample index,
+// dimension), so images do not depend on threads or the order pixels are rendered in.
+//
+//   kSobol        Owen-scrambled Sobol' points, "padded" (pbrt-v4, Burley 2020): each pair of
+//                 dimensions takes Sobol dimensions 0 and 1 of the sample index, shuffled by a
+//                 hash of (seed, pixel, pair) and Owen-scrambled per dimension. A pixel's first
+//                 2^k samples of any pair are then a (0, k, 2)-net: one point in every
+//                 elementary interval of area 2^−k. next_2d() starts a new pair; next_1d() uses
+//                 the pair's components in turn.
+//   kIndependent  Independent uniform numbers (a hash per dimension): the reference any
+//                 low-discrepancy sampler must agree with in expectation.
+#pragma once
+
+#include <cstdint>
+#include <string_view>
+
+#include "obscura/math/rng.h"
+#include "obscura/math/sobol.h"
+#include "obscura/math/vector.h"
+
+namespace obscura {
+
+enum class SamplerType { kSobol, kIndependent };
+
+// "sobol", "independent"
+std::string_view sampler_type_name(SamplerType type);
+
+class Sampler {
+ public:
+  Sampler(SamplerType type, uint64_t seed, Point2i pixel, uint32_t sample_index)
+      : type_(type), seed_(seed), pixel_(pixel), sample_index_(sample_index) {}
+
+  float next_1d() {
+    if (type_ == SamplerType::kIndependent)
+      return sample_uniform(seed_, pixel_, sample_index_, dimension_++);
+    uint32_t d = dimension_++;
+    return sobol_component(d >> 1, int(d & 1));
+  }
+  Point2f next_2d() {
+    if (type_ == SamplerType::kSobol) dimension_ += dimension_ & 1;  // start a fresh pair
+    float u = next_1d();
+    return {u, next_1d()};
+  }
+  uint32_t dimension() const { return dimension_; }
+
+ private:
+  float sobol_component(uint32_t pair, int component) {
+    if (pair != pair_) {
+      pair_ = pair;
+      uint64_t pixel_key = (uint64_t(uint32_t(pixel_.y)) << 32) | uint32_t(pixel_.x);
+      pair_key_ = hash_words(seed_, pixel_key, pair, 0x50b01u);
+      // Shuffle which Sobol point this sample gets: scrambling the index from its high bits
+      // down maps the first 2^k indices onto an aligned block of 2^k, whose points form a net.
+      pair_index_ = owen_scramble(sample_index_, uint32_t(pair_key_));
+    }
+    uint32_t bits = sobol_bits(pair_index_, component);
+    uint32_t scramble_seed =
+        component == 0 ? uint32_t(pair_key_ >> 32) : uint32_t(mix_bits(pair_key_));
+    return fraction_to_float(owen_scramble(bits, scramble_seed));
+  }
+
+  SamplerType type_;
+  uint64_t seed_;
+  Point2i pixel_;
+  uint32_t sample_index_;
+  uint32_t dimension_ = 0;
+  // The current pair's hash and shuffled index, computed once for its two components.
+  uint32_t pair_ = ~0u, pair_index_ = 0;
+  uint64_t pair_key_ = 0;
+};
+
+}  // namespace obscura

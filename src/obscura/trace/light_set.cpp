@@ -1,0 +1,85 @@
+#include "obscura/trace/light_set.h"
+
+#include <algorithm>
+#include <cmath>
+
+#include "obscura/math/sampling.h"
+
+namespace obscura {
+
+LightSet::LightSet(AreaLights area_lights, std::optional<EnvironmentLight> environment,
+                   std::vector<PunctualLight> punctual, float scene_radius)
+    : area_(std::move(area_lights)),
+      environment_(std::move(environment)),
+      punctual_(std::move(punctual)) {
+  std::vector<float> power(kFirstPunctual + punctual_.size(), 0.f);
+  power[kArea] = float(area_.power());
+  // Distant light crossing the scene's bounding disk: π r² · π L̄.
+  if (environment_)
+    power[kEnvironment] =
+        kPi * scene_radius * scene_radius * kPi * environment_->average_luminance();
+  for (size_t i = 0; i < punctual_.size(); ++i)
+    power[kFirstPunctual + i] = punctual_[i].power(scene_radius);
+  if (std::any_of(power.begin(), power.end(), [](float p) { return p > 0; }))
+    selection_ = Distribution1D(power);
+}
+
+std::optional<LightSample> LightSet::sample(Point3f p, float u_select, Point2f u) const {
+  if (empty()) return std::nullopt;
+  float p_kind;
+  auto kind = int(selection_.sample_discrete(u_select, &p_kind));
+  if (p_kind <= 0) return std::nullopt;
+  // Area lights are entry 0, spanning [0, p_kind) of u_select: reuse it, rescaled, to pick the
+  // triangle.
+  float u_inner = std::min(u_select / p_kind, 0x1.fffffep-1f);
+  if (kind >= kFirstPunctual) {
+    std::optional<PunctualLight::Incident> in = punctual_[kind - kFirstPunctual].incident(p);
+    if (!in) return std::nullopt;
+    return LightSample{.wi = in->wi,
+                       .distance = in->distance,
+                       .radiance = in->radiance,
+                       .pdf = p_kind,
+                       .is_delta = true,
+                       .position = p + in->wi * in->distance,
+                       .normal = {}};
+  }
+  if (kind == kEnvironment) {
+    EnvironmentSample s = environment_->sample(u);
+    if (s.pdf <= 0) return std::nullopt;
+    return LightSample{
+        .wi = s.wi, .radiance = s.radiance, .pdf = s.pdf * p_kind, .position = {}, .normal = {}};
+  }
+  AreaLightSample s = area_.sample(std::max(0.f, u_inner), u);
+  Vector3f to_light = s.position - p;
+  float d2 = length_squared(to_light);
+  if (d2 <= 0) return std::nullopt;
+  float d = std::sqrt(d2);
+  Vector3f wi = to_light / d;
+  float cos_light = -dot(s.normal, wi);
+  if (cos_light <= 0) return std::nullopt;  // lights emit from their front face only
+  return LightSample{.wi = wi,
+                     .distance = d,
+                     .radiance = s.radiance,
+                     .pdf = s.pdf_area * d2 / cos_light * p_kind,
+                     .position = s.position,
+                     .normal = s.normal};
+}
+
+float LightSet::pdf_area_light(Point3f p, uint32_t mesh, uint32_t primitive, Point3f light_point,
+                               Normal3f light_normal) const {
+  if (empty()) return 0;
+  float pdf_area = area_.pdf_area(mesh, primitive);
+  if (pdf_area <= 0) return 0;
+  Vector3f to_light = light_point - p;
+  float d2 = length_squared(to_light);
+  float cos_light = -dot(light_normal, to_light) / std::sqrt(d2);
+  if (cos_light <= 0) return 0;
+  return pdf_area * d2 / cos_light * selection_.probability(kArea);
+}
+
+float LightSet::pdf_environment(Vector3f wi) const {
+  if (!environment_ || empty()) return 0;
+  return environment_->pdf(wi) * selection_.probability(kEnvironment);
+}
+
+}  // namespace obscura

@@ -1,0 +1,20 @@
+// Where a ray met a surface, with what the integrators shade with.
+#pragma once
+
+#include <cstdint>
+
+#include "obscura/math/vector.h"
+
+namespace obscura {
+
+struct SurfaceHit {
+  Point3f position;
+  Normal3f geometric_normal;  // unit, on the front side of the triangle's winding
+  Normal3f shading_normal;    // unit, on the same side as geometric_normal
+  uint32_t material = 0;
+  uint32_t mesh = 0;       // the Embree geometry id: which mesh (instance) was hit
+  uint32_t primitive = 0;  // triangle index within it
+  float t = 0;
+};
+
+}  // namespace obscura

@@ -1,0 +1,198 @@
+#include "obscura/trace/path_tracer.h"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+#include "obscura/io/image_io.h"
+#include "obscura/scene/builtin_scenes.h"
+#include "obscura/trace/render.h"
+#include "test_paths.h"
+#include "trace_test_scenes.h"
+
+namespace obscura {
+namespace {
+
+std::shared_ptr<EmbreeDevice> device() {
+  static auto d = std::make_shared<EmbreeDevice>();
+  return d;
+}
+
+// A sphere of one material inside a uniform environment of radiance 1 (the "white furnace").
+struct Furnace {
+  Scene scene;
+  Camera camera = testing::make_camera({0, 0, 4}, {0, 0, 0}, 16, 20);
+  Furnace() {
+    scene.name = "furnace";
+    scene.materials = {{.name = "sphere", .diffuse = Rgb(1.f), .emission = {}}};
+    scene.meshes = {testing::make_sphere({0, 0, 0}, 1, 0, 24, 48)};
+    scene.camera = camera;
+  }
+};
+
+struct PixelEstimate {
+  double mean[3] = {}, standard_error[3] = {};
+};
+
+// Per pixel: the mean of `spp` radiance samples and its standard error.
+std::vector<PixelEstimate> estimate_pixels(const TraceScene& scene, const Camera& camera,
+                                           const Integrator& integrator, int spp) {
+  std::vector<PixelEstimate> pixels;
+  RayCounts counts;
+  for (int y = 0; y < camera.film.height_px; ++y)
+    for (int x = 0; x < camera.film.width_px; ++x) {
+      double sum[3] = {}, sum2[3] = {};
+      for (int s = 0; s < spp; ++s) {
+        Sampler sampler(SamplerType::kIndependent, 1, {x, y}, uint32_t(s));
+        Point2f u = sampler.next_2d();
+        sampler.next_2d(), sampler.next_1d();  // the lens and time dimensions, unused
+        std::optional<CameraRay> ray = camera.generate_ray({x + u.x, y + u.y});
+        Rgb L = integrator.radiance(scene, ray->to_ray(), sampler, counts);
+        for (int c = 0; c < 3; ++c) sum[c] += L[c], sum2[c] += double(L[c]) * L[c];
+      }
+      PixelEstimate p;
+      for (int c = 0; c < 3; ++c) {
+        p.mean[c] = sum[c] / spp;
+        double variance = std::max(0.0, sum2[c] / spp - p.mean[c] * p.mean[c]);
+        p.standard_error[c] = std::sqrt(variance / (spp - 1));
+      }
+      pixels.push_back(p);
+    }
+  return pixels;
+}
+
+TEST(PathTracer, WhiteFurnaceDiffuseSphereVanishes) {
+  // An albedo-1 Lambertian sphere in a uniform environment of radiance 1 reflects exactly what
+  // it receives: every pixel, sphere or not, is 1 (within 5 standard errors of its samples).
+  Furnace furnace;
+  TraceScene scene(furnace.scene, device());
+  scene.set_environment(EnvironmentLight(Rgb(1.f)));
+  for (auto strategy : {PathTracerSettings::Strategy::kMis, PathTracerSettings::Strategy::kBsdfOnly,
+                        PathTracerSettings::Strategy::kLightOnly}) {
+    PathTracer tracer({.strategy = strategy});
+    for (const PixelEstimate& p : estimate_pixels(scene, furnace.camera, tracer, 64))
+      for (int c = 0; c < 3; ++c)
+        ASSERT_NEAR(p.mean[c], 1.0, 5 * p.standard_error[c] + 1e-5) << int(strategy);
+  }
+}
+
+TEST(PathTracer, FurnaceEnergyOfEveryBsdf) {
+  // Lossless BSDFs (white Lambertian, smooth glass) give exactly 1; the others lose energy to
+  // microfacet masking or absorption and must stay ≤ 1 — never above.
+  struct Case {
+    const char* name;
+    AnyBsdf bsdf;
+    bool lossless;
+  };
+  const Case cases[] = {
+      {"lambertian", LambertianBsdf{Rgb(1.f)}, true},
+      {"smooth glass", DielectricBsdf(1.5f, 0), true},
+      {"rough glass", DielectricBsdf(1.5f, 0.3f), false},
+      {"rough white metal", ConductorBsdf(Rgb(1.f), Rgb(1e4f), 0.4f), false},
+      {"mirror", ConductorBsdf(Rgb(1.f), Rgb(1e4f), 0), true},
+      {"phong", PhongBsdf(Rgb(0.5f), Rgb(0.5f), 30, false), false},
+      {"blinn-phong", PhongBsdf(Rgb(0.5f), Rgb(0.5f), 30, true), false},
+      {"metallic-roughness",
+       MetallicRoughnessBsdf({.base_color = Rgb(1.f), .metallic = 0.5f, .roughness = 0.4f}), false},
+  };
+  Furnace furnace;
+  for (const Case& c : cases) {
+    TraceScene scene(furnace.scene, device());
+    scene.set_environment(EnvironmentLight(Rgb(1.f)));
+    scene.set_material(0, TraceMaterial(c.bsdf));
+    PathTracer tracer;
+    double worst_excess = 0, total = 0;
+    std::vector<PixelEstimate> pixels = estimate_pixels(scene, furnace.camera, tracer, 32);
+    for (const PixelEstimate& p : pixels) {
+      double bound = 5 * p.standard_error[1] + 1e-4;
+      worst_excess = std::max(worst_excess, p.mean[1] - 1 - bound);
+      if (c.lossless) {
+        EXPECT_NEAR(p.mean[1], 1.0, bound) << c.name;
+      }
+      total += p.mean[1];
+    }
+    EXPECT_LE(worst_excess, 0.0) << c.name << ": reflects more than it receives";
+    EXPECT_GT(total / pixels.size(), 0.75) << c.name;  // and loses only a little
+  }
+}
+
+// The built-in Cornell box, small, for comparing estimators.
+double image_mean(const Film& film, Bounds2i region) {
+  double sum = 0;
+  for (int y = region.min.y; y < region.max.y; ++y)
+    for (int x = region.min.x; x < region.max.x; ++x) sum += luminance(film.pixel({x, y}));
+  return sum / (region.width() * region.height());
+}
+
+TEST(PathTracer, LightSamplingBsdfSamplingAndMisConvergeToTheSameImage) {
+  Scene cornell = make_builtin_scene("cornell-box");
+  cornell.camera.film.width_px = cornell.camera.film.height_px = 24;
+  TraceScene scene(cornell, device());
+  using Strategy = PathTracerSettings::Strategy;
+  std::vector<Film> films;
+  for (Strategy strategy : {Strategy::kMis, Strategy::kLightOnly, Strategy::kBsdfOnly}) {
+    films.emplace_back(24, 24);
+    render(scene, cornell.camera, PathTracer({.max_depth = 8, .strategy = strategy}),
+           {.samples_per_pixel = strategy == Strategy::kBsdfOnly ? 1024 : 256, .seed = 3},
+           films.back());
+  }
+  // Whole image and its four quadrants agree within a few percent (the BSDF-only estimate of a
+  // small light is the noisiest; its quadrant means carry about 1 % standard error here).
+  std::vector<Bounds2i> regions = {{{0, 0}, {24, 24}},
+                                   {{0, 0}, {12, 12}},
+                                   {{12, 0}, {24, 12}},
+                                   {{0, 12}, {12, 24}},
+                                   {{12, 12}, {24, 24}}};
+  for (const Bounds2i& r : regions) {
+    double mis = image_mean(films[0], r);
+    EXPECT_NEAR(image_mean(films[1], r) / mis, 1.0, 0.03) << "light only";
+    EXPECT_NEAR(image_mean(films[2], r) / mis, 1.0, 0.05) << "BSDF only";
+  }
+}
+
+TEST(PathTracer, MatchesCyclesOnTheReferenceCornellBox) {
+  // ../shared/reference/cornell: Blender Cycles' 16,384-spp render of the scene described in
+  // cornell.json (authoritative), geometry from cornell.obj. 128², box filter 1 px, Cycles'
+  // max_bounces 64 (65 scattering events), 256 spp: our RMSE must be within 1.5× of Cycles' own
+  // at 256 spp, and the mean within noise.
+  Scene scene = testing::read_obj_triangles(test::shared_path("reference/cornell/cornell.obj"),
+                                            {{"white", 0}, {"red", 1}, {"green", 2}, {"light", 3}});
+  scene.name = "reference-cornell";
+  scene.materials = {{.name = "white", .diffuse = Rgb(0.8f), .emission = {}},
+                     {.name = "red", .diffuse = {0.63f, 0.065f, 0.05f}, .emission = {}},
+                     {.name = "green", .diffuse = {0.14f, 0.45f, 0.091f}, .emission = {}},
+                     {.name = "light", .diffuse = Rgb(0.f), .emission = Rgb(15.f)}};
+  // Pinhole at (0, 1, 3.9) looking at (0, 1, 0); 50 mm on a 36 mm wide sensor.
+  Camera camera = testing::make_camera({0, 1, 3.9}, {0, 1, 0}, 128, 39.597752709049864);
+  scene.camera = camera;
+  TraceScene trace_scene(scene, device());
+  Film film(128, 128);
+  render(trace_scene, camera, PathTracer({.max_depth = 65}), {.samples_per_pixel = 256, .seed = 1},
+         film);
+
+  Image reference = read_image(test::shared_path("reference/cornell/cornell_ref.exr"));
+  ASSERT_EQ(reference.width, 128);
+  std::ifstream rmse_file(test::shared_path("reference/cornell/cycles_rmse_256spp.txt"));
+  double cycles_rmse = 0;
+  rmse_file >> cycles_rmse;
+  ASSERT_GT(cycles_rmse, 0);
+
+  double se = 0, sum = 0, sum_ref = 0;
+  for (int y = 0; y < 128; ++y)
+    for (int x = 0; x < 128; ++x)
+      for (int c = 0; c < 3; ++c) {
+        double ours = film.pixel({x, y})[c], ref = reference.at(x, y, c);
+        se += (ours - ref) * (ours - ref);
+        sum += ours, sum_ref += ref;
+      }
+  double n = 128.0 * 128 * 3, rmse = std::sqrt(se / n);
+  EXPECT_LT(rmse, 1.5 * cycles_rmse) << "RMSE " << rmse << " vs Cycles' " << cycles_rmse;
+  // The mean of n values each with error ~rmse: a bias beyond 4·rmse/√(n/3) is not noise.
+  double bias = (sum - sum_ref) / n;
+  EXPECT_LT(std::abs(bias), 4 * rmse / std::sqrt(n / 3))
+      << "mean " << sum / n << " vs " << sum_ref / n;
+  RecordProperty("rmse", std::to_string(rmse));
+}
+
+}  // namespace
+}  // namespace obscura

@@ -1,0 +1,76 @@
+#include "obscura/trace/phong_bsdf.h"
+
+#include <gtest/gtest.h>
+
+#include "bsdf_test_support.h"
+
+namespace obscura {
+namespace {
+
+using testing::direction_at;
+
+// ∫ lobe(wo = normal, wi)·cos θi dωi by quadrature over θ (the lobe is symmetric about the
+// normal at normal incidence): the reciprocal of the normalization.
+double lobe_integral_at_normal(float n, bool blinn) {
+  const int steps = 200000;
+  double sum = 0, dtheta = std::numbers::pi / 2 / steps;
+  for (int i = 0; i < steps; ++i) {
+    double t = (i + 0.5) * dtheta;
+    double c = blinn ? std::cos(t / 2) : std::cos(t);  // the half vector lies at θ/2
+    sum += std::pow(c, n) * std::cos(t) * std::sin(t) * 2 * std::numbers::pi * dtheta;
+  }
+  return sum;
+}
+
+TEST(PhongBsdf, NormalizationsMakeAWhiteLobeReflectAllLightAlongTheNormal) {
+  for (float n : {0.f, 1.f, 10.f, 100.f, 1000.f}) {
+    EXPECT_NEAR(phong_normalization(n) * lobe_integral_at_normal(n, false), 1.0, 1e-4) << n;
+    EXPECT_NEAR(blinn_phong_normalization(n) * lobe_integral_at_normal(n, true), 1.0, 1e-4) << n;
+  }
+}
+
+TEST(PhongBsdf, SamplingMatchesPdf) {
+  for (bool blinn : {false, true})
+    for (float n : {1.f, 20.f}) {
+      AnyBsdf bsdf = PhongBsdf(Rgb(0.4f), Rgb(0.5f), n, blinn);
+      for (float theta : {0.f, 40.f, 75.f}) {
+        SCOPED_TRACE(::testing::Message() << "blinn " << blinn << " n " << n << " theta " << theta);
+        EXPECT_SAMPLING_MATCHES_PDF(bsdf, direction_at(theta));
+      }
+    }
+}
+
+TEST(PhongBsdf, ConservesEnergy) {
+  for (bool blinn : {false, true})
+    for (float n : {0.f, 5.f, 50.f, 500.f}) {
+      // A white lobe: reflects exactly everything at normal incidence, less elsewhere.
+      AnyBsdf specular = PhongBsdf(Rgb(0.f), Rgb(1.f), n, blinn);
+      testing::Albedo at_normal = testing::directional_albedo(specular, {0, 0, 1}, 100000);
+      EXPECT_NEAR(at_normal.mean.g, 1.f, 5 * at_normal.standard_error.g + 2e-3f)
+          << "blinn " << blinn << " n " << n;
+      AnyBsdf mixed = PhongBsdf(Rgb(0.7f), Rgb(0.7f), n, blinn);  // scaled down to sum 1
+      for (float theta : {0.f, 45.f, 85.f}) {
+        EXPECT_ALBEDO_AT_MOST_ONE(testing::directional_albedo(specular, direction_at(theta)));
+        EXPECT_ALBEDO_AT_MOST_ONE(testing::directional_albedo(mixed, direction_at(theta)));
+      }
+    }
+}
+
+TEST(PhongBsdf, IsReciprocal) {
+  for (bool blinn : {false, true}) {
+    PhongBsdf bsdf(Rgb(0.2f), Rgb(0.6f), 12, blinn);
+    for (auto [a, b] : testing::direction_pairs(200)) {
+      Rgb ab = bsdf.f(a, b), ba = bsdf.f(b, a);
+      EXPECT_NEAR(ab.g, ba.g, 1e-4f * std::max(1.f, ab.g));
+    }
+  }
+}
+
+TEST(PhongBsdf, ZeroShininessBlinnIsLambertian) {
+  // n = 0: the lobe is constant; with c(0) = 1/π the specular part is a white Lambertian.
+  PhongBsdf bsdf(Rgb(0.f), Rgb(1.f), 0, true);
+  EXPECT_NEAR(bsdf.f(direction_at(10), direction_at(70, 200)).g, 1 / std::numbers::pi, 1e-6);
+}
+
+}  // namespace
+}  // namespace obscura
