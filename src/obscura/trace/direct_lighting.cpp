@@ -13,7 +13,7 @@ Rgb DirectLightingIntegrator::radiance(const TraceScene& scene, const Ray& ray,
   ++counts.camera;
   std::optional<SurfaceHit> hit = scene.intersect(ray);
   if (!hit) return {};
-  const Material& material = scene.material(hit->material);
+  const TraceMaterial& material = scene.material(hit->material);
   Vector3f wo = -ray.direction;
 
   // Light emitted by the surface itself (one-sided: the front face emits).

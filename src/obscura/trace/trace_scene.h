@@ -19,6 +19,12 @@ struct SurfaceHit {
   float t = 0;
 };
 
+// What the direct-lighting integrator shades with: a Lambertian albedo and emitted radiance.
+struct TraceMaterial {
+  Rgb diffuse;
+  Rgb emission;
+};
+
 class TraceScene {
  public:
   TraceScene(const Scene& scene, std::shared_ptr<const EmbreeDevice> device);
@@ -27,15 +33,15 @@ class TraceScene {
   // Whether the open segment between two points is blocked.
   bool occluded(Point3f from, Point3f to) const;
 
-  const Material& material(uint32_t index) const { return materials_[index]; }
+  const TraceMaterial& material(uint32_t index) const { return materials_[index]; }
   const AreaLights& lights() const { return lights_; }
   // Distance by which ray origins leave a surface, scaled to the scene's extent.
   float ray_epsilon() const { return ray_epsilon_; }
 
  private:
   EmbreeScene embree_;
-  std::vector<Mesh> meshes_;
-  std::vector<Material> materials_;
+  std::vector<Mesh> meshes_;  // one per instance, flattened to world space (positions only)
+  std::vector<TraceMaterial> materials_;
   AreaLights lights_;
   float ray_epsilon_ = 1e-4f;
 };
