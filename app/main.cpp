@@ -6,6 +6,7 @@
 
 #include "obscura/math/error.h"
 #include "camera_command.h"
+#include "info_command.h"
 #include "render_command.h"
 #include "usage_error.h"
 
@@ -15,6 +16,7 @@ int main(int argc, char** argv) {
   app.require_subcommand(1);
   obscura::app::add_render_command(app);
   obscura::app::add_camera_command(app);
+  obscura::app::add_info_command(app);
 
   try {
     app.parse(argc, argv);

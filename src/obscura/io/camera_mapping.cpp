@@ -1,5 +1,6 @@
 #include "obscura/io/camera_mapping.h"
 
+#include <algorithm>
 #include <cmath>
 #include <numbers>
 
@@ -120,6 +121,25 @@ SceneCamera framing_camera(const Bounds3f& bounds) {
   c.z_near = std::max(1e-4, (distance - radius) * 0.5);
   c.z_far = distance + 2 * radius;
   return c;
+}
+
+void finish_cameras(Scene& scene, const std::string& name, const std::string& where) {
+  if (scene.cameras.empty()) scene.cameras.push_back(framing_camera(scene.bounds()));
+  const SceneCamera* chosen = &scene.cameras.front();
+  if (!name.empty()) {
+    auto found = std::find_if(scene.cameras.begin(), scene.cameras.end(),
+                              [&](const SceneCamera& c) { return c.name == name; });
+    if (found == scene.cameras.end()) {
+      std::string known;
+      for (const SceneCamera& c : scene.cameras) known += (known.empty() ? "" : ", ") + c.name;
+      throw Error(where, "no camera named '" + name + "'; the scene has: " + known);
+    }
+    chosen = &*found;
+  }
+  int width = scene.camera.width, height = scene.camera.height;
+  scene.camera = chosen->camera;
+  scene.camera.width = width;
+  scene.camera.height = height;
 }
 
 }  // namespace obscura

@@ -6,6 +6,7 @@
 
 #include "obscura/io/json_reader.h"
 #include "obscura/math/bounds.h"
+#include "obscura/scene/scene.h"
 #include "obscura/scene/scene_camera.h"
 
 namespace obscura {
@@ -23,5 +24,9 @@ SceneCamera camera_from_json(JsonReader& json);
 
 // A camera that sees all of `bounds` from the front (+Z side), for files without a camera.
 SceneCamera framing_camera(const Bounds3f& bounds);
+
+// Makes the camera named `name` (the first one when empty) the scene's render camera, adding a
+// framing camera first when the scene has none. Throws naming `where` for an unknown name.
+void finish_cameras(Scene& scene, const std::string& name, const std::string& where);
 
 }  // namespace obscura

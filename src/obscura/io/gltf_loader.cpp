@@ -192,7 +192,7 @@ class GltfImporter {
                      const std::string& where);
   void import_materials();
   uint32_t default_material();
-  std::vector<uint32_t> import_mesh(int mesh_index);
+  std::vector<std::pair<uint32_t, uint32_t>> import_mesh(int mesh_index);
   Mesh import_primitive(const tinygltf::Primitive& primitive, const std::string& where,
                         const std::string& name);
   void import_light(int light_index, const Transform& world_from_light, const std::string& where);
@@ -204,7 +204,10 @@ class GltfImporter {
   AccessorReader accessors_;
   Scene scene_;
   std::map<std::pair<int, TextureEncoding>, int32_t> textures_;  // (glTF texture, encoding) → ours
-  std::map<int, std::vector<uint32_t>> meshes_;                  // glTF mesh → our meshes
+  // Per glTF mesh, its primitives as (our mesh, material) pairs.
+  std::map<int, std::vector<std::pair<uint32_t, uint32_t>>> meshes_;
+  // Primitives that read the same accessors share one Mesh (instancing across glTF meshes).
+  std::map<std::string, uint32_t> geometry_;
   int default_material_ = -1;
   NodeAnimations animations_;
 };
@@ -251,6 +254,8 @@ TextureRef GltfImporter::texture(int texture_index, int uv_set, TextureEncoding 
          "image '" + model_.images[gt.source].uri + "' could not be loaded (missing file?)");
   Texture t = image->second;  // a copy: one glTF image may be used with two encodings
   t.name = !gt.name.empty() ? gt.name : model_.images[gt.source].name;
+  if (t.name.empty()) t.name = model_.images[gt.source].uri;
+  if (t.name.empty() || t.name.rfind("data:", 0) == 0) t.name = element("images", gt.source);
   t.encoding = encoding;
   if (gt.sampler >= 0 && size_t(gt.sampler) < model_.samplers.size()) {
     const tinygltf::Sampler& s = model_.samplers[gt.sampler];
@@ -414,11 +419,11 @@ Mesh GltfImporter::import_primitive(const tinygltf::Primitive& p, const std::str
   return mesh;
 }
 
-std::vector<uint32_t> GltfImporter::import_mesh(int mesh_index) {
+std::vector<std::pair<uint32_t, uint32_t>> GltfImporter::import_mesh(int mesh_index) {
   auto found = meshes_.find(mesh_index);
   if (found != meshes_.end()) return found->second;
   const tinygltf::Mesh& gm = model_.meshes[mesh_index];
-  std::vector<uint32_t>& ours = meshes_[mesh_index];
+  std::vector<std::pair<uint32_t, uint32_t>>& ours = meshes_[mesh_index];
   for (size_t j = 0; j < gm.primitives.size(); ++j) {
     const tinygltf::Primitive& p = gm.primitives[j];
     std::string where = element("meshes", mesh_index) + "." + element("primitives", j);
@@ -430,8 +435,18 @@ std::vector<uint32_t> GltfImporter::import_mesh(int mesh_index) {
     }
     std::string name = gm.name.empty() ? element("meshes", mesh_index) : gm.name;
     if (gm.primitives.size() > 1) name += "/" + std::to_string(j);
-    ours.push_back(uint32_t(scene_.meshes.size()));
-    scene_.meshes.push_back(import_primitive(p, where, name));
+    std::string key = std::to_string(p.mode) + " " + std::to_string(p.indices);
+    for (const auto& [attribute, accessor] : p.attributes)
+      key += " " + attribute + "=" + std::to_string(accessor);
+    auto shared = geometry_.find(key);
+    if (shared == geometry_.end()) {
+      shared = geometry_.emplace(key, uint32_t(scene_.meshes.size())).first;
+      scene_.meshes.push_back(import_primitive(p, where, name));
+    }
+    if (p.material >= 0 && size_t(p.material) >= model_.materials.size())
+      fail(where + ".material",
+           "material index " + std::to_string(p.material) + " is out of range");
+    ours.emplace_back(shared->second, p.material >= 0 ? uint32_t(p.material) : default_material());
   }
   return ours;
 }
@@ -473,10 +488,11 @@ void GltfImporter::visit_node(int node_index, const Matrix4& world_from_parent, 
   if (node.mesh >= 0 && world_from_object) {
     if (size_t(node.mesh) >= model_.meshes.size())
       fail(where + ".mesh", "mesh index " + std::to_string(node.mesh) + " is out of range");
-    for (uint32_t mesh : import_mesh(node.mesh)) {
+    for (auto [mesh, material] : import_mesh(node.mesh)) {
       Instance instance;
       instance.name = node.name.empty() ? where : node.name;
       instance.mesh = mesh;
+      instance.material = int32_t(material);
       instance.world_from_object = *world_from_object;
       instance.motion = animations_.world_keys(node_index);
       if (!instance.motion.empty())
@@ -520,10 +536,11 @@ Scene GltfImporter::import() {
   } else {
     // No scene: show every mesh once, untransformed (the spec leaves this to the application).
     for (size_t m = 0; m < model_.meshes.size(); ++m)
-      for (uint32_t mesh : import_mesh(int(m))) {
+      for (auto [mesh, material] : import_mesh(int(m))) {
         Instance instance;
         instance.name = scene_.meshes[mesh].name;
         instance.mesh = mesh;
+        instance.material = int32_t(material);
         scene_.instances.push_back(instance);
       }
   }

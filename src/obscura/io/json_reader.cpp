@@ -22,6 +22,12 @@ JsonReader::JsonReader(const nlohmann::json& value, std::string file, std::strin
     throw Error(file_ + ": " + path_, "expected an object, got " + type_name(value_));
 }
 
+std::vector<std::string> JsonReader::keys() const {
+  std::vector<std::string> result;
+  for (auto it = value_.begin(); it != value_.end(); ++it) result.push_back(it.key());
+  return result;
+}
+
 const nlohmann::json& JsonReader::at(const std::string& key) {
   auto it = value_.find(key);
   if (it == value_.end()) throw Error(file_ + ": " + path_of(key), "required key is missing");

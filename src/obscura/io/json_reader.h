@@ -24,6 +24,8 @@ class JsonReader {
   std::string path_of(const std::string& key) const { return path_ + "." + key; }
 
   bool has(const std::string& key) const { return value_.contains(key); }
+  // Every key of the object, in the file's order.
+  std::vector<std::string> keys() const;
   // The raw value of a key (marks it as read); throws when it is absent.
   const nlohmann::json& at(const std::string& key);
   // A nested object.

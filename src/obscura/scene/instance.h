@@ -19,6 +19,9 @@ struct TransformKey {
 struct Instance {
   std::string name;
   uint32_t mesh = 0;  // index into Scene::meshes
+  // Index into Scene::materials to draw this instance with, or −1 for the mesh's own material
+  // (glTF shares one geometry between meshes that differ only in material).
+  int32_t material = -1;
   Transform world_from_object;
   // Keyframes for motion blur, sorted by time; empty for a static instance. Between keys the
   // transform is interpolated (translation and scale linearly, rotation by slerp); before the

@@ -22,7 +22,7 @@ struct Mesh {
   std::vector<Vector4f> tangents;  // xyz unit tangent along +u, w = ±1 bitangent sign (glTF)
   std::vector<Rgb> colors;         // linear vertex colours, multiplied into the base colour
   std::vector<uint32_t> indices;   // three per triangle
-  uint32_t material = 0;           // index into Scene::materials
+  uint32_t material = 0;           // index into Scene::materials; an Instance may override it
 
   size_t triangle_count() const { return indices.size() / 3; }
   size_t vertex_count() const { return positions.size(); }

@@ -96,7 +96,8 @@ SceneStats Scene::stats() const {
     if (instance.mesh >= meshes.size()) continue;
     const Mesh& m = meshes[instance.mesh];
     s.triangles += m.triangle_count();
-    if (m.material < materials.size() && !materials[m.material].emission.is_black())
+    uint32_t material = material_of(instance);
+    if (material < materials.size() && !materials[material].emission.is_black())
       ++s.emissive_meshes;
     s.memory_bytes += sizeof(Instance) + instance.motion.capacity() * sizeof(TransformKey);
   }
@@ -123,6 +124,11 @@ void Scene::validate() const {
       throw Error(scene_where + ", instance '" + instances[i].name + "'",
                   "mesh index " + std::to_string(instances[i].mesh) + " is past the mesh count " +
                       std::to_string(meshes.size()));
+  for (const Instance& instance : instances)
+    if (instance.material >= 0 && size_t(instance.material) >= materials.size())
+      throw Error(scene_where + ", instance '" + instance.name + "'",
+                  "material index " + std::to_string(instance.material) +
+                      " is past the material count " + std::to_string(materials.size()));
   for (const Material& m : materials)
     validate_material(m, scene_where + ", material '" + m.name + "'", textures.size());
   if (environment && environment->texture >= 0 && size_t(environment->texture) >= textures.size())

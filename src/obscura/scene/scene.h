@@ -54,6 +54,10 @@ struct Scene {
   SceneRenderSettings render;
   std::vector<std::string> warnings;  // what the loader skipped or approximated, for the user
 
+  // The material an instance is drawn with: its override, else its mesh's.
+  uint32_t material_of(const Instance& instance) const {
+    return instance.material >= 0 ? uint32_t(instance.material) : meshes[instance.mesh].material;
+  }
   // Adds `mesh` with one instance at `world_from_object`; returns the mesh index.
   uint32_t add_mesh(Mesh mesh, const Transform& world_from_object = {});
 

@@ -27,7 +27,7 @@ std::vector<Mesh> flatten_instances(const Scene& scene) {
     const Mesh& mesh = scene.meshes[instance.mesh];
     Mesh& world = flat.emplace_back();
     world.name = instance.name;
-    world.material = mesh.material;
+    world.material = scene.material_of(instance);
     world.indices = mesh.indices;
     world.positions.reserve(mesh.positions.size());
     for (Point3f p : mesh.positions) world.positions.push_back(instance.world_from_object(p));
