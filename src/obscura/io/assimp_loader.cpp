@@ -36,6 +36,7 @@ class AssimpImporter {
     }
     for (unsigned i = 0; i < ai_.mNumMeshes; ++i) scene_.meshes.push_back(mesh(i));
     if (ai_.mRootNode) visit(*ai_.mRootNode, Matrix4::identity(), 0);
+    drop_unused_materials();
     return std::move(scene_);
   }
 
@@ -155,6 +156,22 @@ class AssimpImporter {
       scene_.instances.push_back(std::move(instance));
     }
     for (unsigned c = 0; c < node.mNumChildren; ++c) visit(*node.mChildren[c], world, depth + 1);
+  }
+
+  // Assimp's OBJ reader always adds a "DefaultMaterial"; keep only materials something uses.
+  void drop_unused_materials() {
+    std::vector<int32_t> remap(scene_.materials.size(), -1);
+    for (const Mesh& m : scene_.meshes) remap[m.material] = 0;
+    std::vector<Material> kept;
+    for (size_t i = 0; i < remap.size(); ++i)
+      if (remap[i] == 0) {
+        remap[i] = int32_t(kept.size());
+        kept.push_back(std::move(scene_.materials[i]));
+      }
+    if (kept.empty()) return;
+    scene_.materials = std::move(kept);
+    for (Mesh& m : scene_.meshes) m.material = uint32_t(remap[m.material]);
+    for (Instance& i : scene_.instances) i.material = remap[i.material];
   }
 
   const aiScene& ai_;
