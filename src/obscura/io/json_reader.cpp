@@ -10,13 +10,13 @@ namespace obscura {
 
 namespace {
 
-std::string type_name(const nlohmann::json& j) {
+std::string type_name(const nlohmann::ordered_json& j) {
   return j.type_name();
 }
 
 }  // namespace
 
-JsonReader::JsonReader(const nlohmann::json& value, std::string file, std::string path)
+JsonReader::JsonReader(const nlohmann::ordered_json& value, std::string file, std::string path)
     : value_(value), file_(std::move(file)), path_(std::move(path)) {
   if (!value_.is_object())
     throw Error(file_ + ": " + path_, "expected an object, got " + type_name(value_));
@@ -28,7 +28,7 @@ std::vector<std::string> JsonReader::keys() const {
   return result;
 }
 
-const nlohmann::json& JsonReader::at(const std::string& key) {
+const nlohmann::ordered_json& JsonReader::at(const std::string& key) {
   auto it = value_.find(key);
   if (it == value_.end()) throw Error(file_ + ": " + path_of(key), "required key is missing");
   read_.insert(key);
@@ -42,7 +42,7 @@ JsonReader JsonReader::object(const std::string& key) {
 std::vector<JsonReader> JsonReader::objects(const std::string& key) {
   std::vector<JsonReader> result;
   if (!has(key)) return result;
-  const nlohmann::json& array = at(key);
+  const nlohmann::ordered_json& array = at(key);
   if (!array.is_array()) fail(key, "expected an array, got " + type_name(array));
   for (size_t i = 0; i < array.size(); ++i)
     result.emplace_back(array[i], file_, path_of(key) + "[" + std::to_string(i) + "]");
@@ -50,7 +50,7 @@ std::vector<JsonReader> JsonReader::objects(const std::string& key) {
 }
 
 std::string JsonReader::string(const std::string& key) {
-  const nlohmann::json& j = at(key);
+  const nlohmann::ordered_json& j = at(key);
   if (!j.is_string()) fail(key, "expected a string, got " + type_name(j));
   return j.get<std::string>();
 }
@@ -60,7 +60,7 @@ std::string JsonReader::string(const std::string& key, const std::string& fallba
 }
 
 double JsonReader::number(const std::string& key) {
-  const nlohmann::json& j = at(key);
+  const nlohmann::ordered_json& j = at(key);
   if (!j.is_number()) fail(key, "expected a number, got " + type_name(j));
   double v = j.get<double>();
   if (!std::isfinite(v)) fail(key, "expected a finite number");
@@ -83,7 +83,7 @@ double JsonReader::number_in(const std::string& key, double fallback, double min
 
 int JsonReader::integer(const std::string& key, int fallback, int min, int max) {
   if (!has(key)) return fallback;
-  const nlohmann::json& j = at(key);
+  const nlohmann::ordered_json& j = at(key);
   if (!j.is_number_integer())
     fail(key, "expected an integer, got " + (j.is_number() ? j.dump() : type_name(j)));
   long long v = j.get<long long>();
@@ -95,17 +95,17 @@ int JsonReader::integer(const std::string& key, int fallback, int min, int max) 
 
 bool JsonReader::boolean(const std::string& key, bool fallback) {
   if (!has(key)) return fallback;
-  const nlohmann::json& j = at(key);
+  const nlohmann::ordered_json& j = at(key);
   if (!j.is_boolean()) fail(key, "expected true or false, got " + type_name(j));
   return j.get<bool>();
 }
 
 std::vector<double> JsonReader::numbers(const std::string& key, size_t count) {
-  const nlohmann::json& j = at(key);
+  const nlohmann::ordered_json& j = at(key);
   if (!j.is_array() || j.size() != count)
     fail(key, "expected an array of " + std::to_string(count) + " numbers");
   std::vector<double> v;
-  for (const nlohmann::json& e : j) {
+  for (const nlohmann::ordered_json& e : j) {
     if (!e.is_number()) fail(key, "expected an array of " + std::to_string(count) + " numbers");
     v.push_back(e.get<double>());
     if (!std::isfinite(v.back())) fail(key, "expected finite numbers");
@@ -146,13 +146,13 @@ void JsonReader::fail(const std::string& key, const std::string& message) const 
   throw Error(file_ + ": " + path_of(key), message);
 }
 
-nlohmann::json parse_json_file(const std::string& path) {
+nlohmann::ordered_json parse_json_file(const std::string& path) {
   std::ifstream in(path, std::ios::binary);
   if (!in) throw Error(path, "cannot open the file (does it exist?)");
   std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
   try {
-    return nlohmann::json::parse(text);
-  } catch (const nlohmann::json::parse_error& e) {
+    return nlohmann::ordered_json::parse(text);
+  } catch (const nlohmann::ordered_json::parse_error& e) {
     // Turn the byte offset into a line and column, as editors show them.
     size_t offset = std::min<size_t>(e.byte, text.size());
     size_t line = 1, column = 1;

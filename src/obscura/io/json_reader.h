@@ -17,7 +17,7 @@ namespace obscura {
 class JsonReader {
  public:
   // `value` must outlive the reader. Throws when it is not an object.
-  JsonReader(const nlohmann::json& value, std::string file, std::string path);
+  JsonReader(const nlohmann::ordered_json& value, std::string file, std::string path);
 
   const std::string& file() const { return file_; }
   const std::string& path() const { return path_; }
@@ -27,7 +27,7 @@ class JsonReader {
   // Every key of the object, in the file's order.
   std::vector<std::string> keys() const;
   // The raw value of a key (marks it as read); throws when it is absent.
-  const nlohmann::json& at(const std::string& key);
+  const nlohmann::ordered_json& at(const std::string& key);
   // A nested object.
   JsonReader object(const std::string& key);
   // The elements of an array of objects; an absent key gives none.
@@ -52,12 +52,12 @@ class JsonReader {
   [[noreturn]] void fail(const std::string& key, const std::string& message) const;
 
  private:
-  const nlohmann::json& value_;
+  const nlohmann::ordered_json& value_;
   std::string file_, path_;
   mutable std::set<std::string> read_;
 };
 
 // Parses a JSON document; a syntax error names the file, line and column.
-nlohmann::json parse_json_file(const std::string& path);
+nlohmann::ordered_json parse_json_file(const std::string& path);
 
 }  // namespace obscura

@@ -28,7 +28,7 @@ class JsonSceneReader {
       : path_(std::move(path)), directory_(std::filesystem::path(path_).parent_path()) {}
 
   Scene read() {
-    nlohmann::json document = parse_json_file(path_);
+    nlohmann::ordered_json document = parse_json_file(path_);
     JsonReader root(document, path_, "$");
     scene_.name = root.string("name", std::filesystem::path(path_).stem().string());
     if (root.has("render")) read_render(root.object("render"));
@@ -192,8 +192,8 @@ class JsonSceneReader {
     if (kind == "mesh") {
       Mesh m;
       m.name = "mesh";
-      const nlohmann::json& p = json.at("positions");
-      const nlohmann::json& i = json.at("indices");
+      const nlohmann::ordered_json& p = json.at("positions");
+      const nlohmann::ordered_json& i = json.at("indices");
       if (!p.is_array() || p.size() % 3 != 0 ||
           !std::all_of(p.begin(), p.end(), [](auto& v) { return v.is_number(); }))
         json.fail("positions", "expected a flat array of numbers, three per vertex");
@@ -202,7 +202,7 @@ class JsonSceneReader {
         json.fail("indices", "expected a flat array of non-negative integers, three per triangle");
       for (size_t k = 0; k < p.size(); k += 3)
         m.positions.emplace_back(p[k].get<float>(), p[k + 1].get<float>(), p[k + 2].get<float>());
-      for (const nlohmann::json& v : i) {
+      for (const nlohmann::ordered_json& v : i) {
         uint64_t index = v.get<uint64_t>();
         if (index >= m.positions.size())
           json.fail("indices", "index " + std::to_string(index) + " is past the vertex count " +
@@ -246,6 +246,8 @@ class JsonSceneReader {
       return;
     }
     std::string file = resolve(json.string("model"));
+    std::error_code ec;
+    if (!std::filesystem::is_regular_file(file, ec)) json.fail("model", "model file '" + file + "' does not exist");
     std::string up = json.string("up", "y");
     if (up != "y" && up != "z") json.fail("up", "expected \"y\" or \"z\"");
     std::optional<uint32_t> override_material;
