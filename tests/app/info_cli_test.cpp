@@ -34,11 +34,13 @@ TEST(InfoCli, MissingSceneExitsOne) {
 
 TEST(RenderSceneFileCli, RendersASceneFileAndListsBuiltIns) {
   std::string dir = test::make_temp_dir("obscura-render-file");
-  test::CommandResult r = test::run_cli(
-      "render " + test::shared_path("assets/gltf/Box/Box.glb") + " --width 16 --height 16 --spp 1 -q -o " + dir + "/box.png");
+  test::CommandResult r =
+      test::run_cli("render " + test::shared_path("assets/gltf/Box/Box.glb") +
+                    " --width 16 --height 16 --spp 1 -q -o " + dir + "/box.png");
   EXPECT_EQ(r.exit_code, 0) << r.output;
   r = test::run_cli("render --scene-list");
-  for (const char* name : {"cornell-box", "spheres-and-lights", "depth-of-field", "motion-blur", "bunny", "gltf-spheres"})
+  for (const char* name : {"cornell-box", "spheres-and-lights", "depth-of-field", "motion-blur",
+                           "bunny", "gltf-spheres"})
     EXPECT_THAT(r.output, testing::HasSubstr(name));
 }
 

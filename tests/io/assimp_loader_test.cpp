@@ -31,9 +31,9 @@ TEST(AssimpLoader, StanfordBunnyPly) {
 
 TEST(AssimpLoader, BunnyLevelsOfDetail) {
   // README: res2 16,301, res3 3,851, res4 948 triangles.
-  for (auto [file, triangles] : {std::pair{"bun_zipper_res2.ply", 16301u},
-                                 std::pair{"bun_zipper_res3.ply", 3851u},
-                                 std::pair{"bun_zipper_res4.ply", 948u}}) {
+  for (auto [file, triangles] :
+       {std::pair{"bun_zipper_res2.ply", 16301u}, std::pair{"bun_zipper_res3.ply", 3851u},
+        std::pair{"bun_zipper_res4.ply", 948u}}) {
     Scene scene = load_with_assimp(test::shared_path("assets/meshes/stanford_bunny/") + file);
     EXPECT_EQ(scene.stats().triangles, triangles) << file;
   }
@@ -65,7 +65,8 @@ TEST(AssimpLoader, MoriKnobMaterials) {
 
 TEST(AssimpLoader, MtlBecomesPhong) {
   // cornell_box_measured.mtl: white Kd 0.725 0.71 0.68; light Kd 0.78, Ke 17 12 4.
-  Scene scene = load_with_assimp(test::shared_path("assets/cornell/measured/cornell_box_measured.obj"));
+  Scene scene =
+      load_with_assimp(test::shared_path("assets/cornell/measured/cornell_box_measured.obj"));
   EXPECT_EQ(scene.stats().triangles, 32u);
   std::map<std::string, const Material*> by_name;
   for (const Material& m : scene.materials) by_name[m.name] = &m;
@@ -97,7 +98,9 @@ class AssimpBadInput : public testing::Test {
   }
 };
 
-TEST_F(AssimpBadInput, MissingFile) { expect_error(dir + "/none.obj", {"none.obj", "does not exist"}); }
+TEST_F(AssimpBadInput, MissingFile) {
+  expect_error(dir + "/none.obj", {"none.obj", "does not exist"});
+}
 
 TEST_F(AssimpBadInput, ObjFaceIndexPastTheVertexCount) {
   expect_error(write("face.obj", "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 9\n"), {"face.obj"});
@@ -112,7 +115,8 @@ TEST_F(AssimpBadInput, PlyFaceIndexPastTheVertexCount) {
 }
 
 TEST_F(AssimpBadInput, NanPositions) {
-  expect_error(write("nan.obj", "v 0 0 0\nv nan 0 0\nv 0 1 0\nf 1 2 3\n"), {"nan.obj", "not finite"});
+  expect_error(write("nan.obj", "v 0 0 0\nv nan 0 0\nv 0 1 0\nf 1 2 3\n"),
+               {"nan.obj", "not finite"});
 }
 
 TEST_F(AssimpBadInput, MissingTexture) {
@@ -121,7 +125,9 @@ TEST_F(AssimpBadInput, MissingTexture) {
                {"tex.obj", "paint", "missing.png", "does not exist"});
 }
 
-TEST_F(AssimpBadInput, NotAMesh) { expect_error(write("junk.ply", "this is not a ply file\n"), {"junk.ply"}); }
+TEST_F(AssimpBadInput, NotAMesh) {
+  expect_error(write("junk.ply", "this is not a ply file\n"), {"junk.ply"});
+}
 
 }  // namespace
 }  // namespace obscura

@@ -27,7 +27,9 @@ namespace {
 
 using nlohmann::json;
 
-std::string sample(const std::string& relative) { return test::shared_path("assets/gltf/" + relative); }
+std::string sample(const std::string& relative) {
+  return test::shared_path("assets/gltf/" + relative);
+}
 
 std::vector<uint8_t> read_bytes(const std::string& path) {
   std::ifstream in(path, std::ios::binary);
@@ -69,9 +71,10 @@ struct GltfFile {
       const json& node = doc["nodes"][n];
       if (node.contains("mesh")) {
         for (const json& p : doc["meshes"][node["mesh"].get<int>()]["primitives"]) {
-          size_t count = p.contains("indices")
-                             ? doc["accessors"][p["indices"].get<int>()]["count"].get<size_t>()
-                             : doc["accessors"][p["attributes"]["POSITION"].get<int>()]["count"].get<size_t>();
+          size_t count =
+              p.contains("indices")
+                  ? doc["accessors"][p["indices"].get<int>()]["count"].get<size_t>()
+                  : doc["accessors"][p["attributes"]["POSITION"].get<int>()]["count"].get<size_t>();
           c.rendered += count / 3;
           ++c.instances;
           if (geometry.insert(p["attributes"].dump() + p.value("indices", json(-1)).dump()).second)
@@ -89,7 +92,8 @@ struct GltfFile {
     std::set<std::pair<int, bool>> uses;
     for (const json& m : doc.value("materials", json::array())) {
       auto use = [&](const json& slot, bool colour) {
-        if (slot.is_object() && slot.contains("index")) uses.insert({slot["index"].get<int>(), colour});
+        if (slot.is_object() && slot.contains("index"))
+          uses.insert({slot["index"].get<int>(), colour});
       };
       const json pbr = m.value("pbrMetallicRoughness", json::object());
       use(pbr.value("baseColorTexture", json()), true);
@@ -109,10 +113,12 @@ struct GltfFile {
     }
     glm::dvec3 t(0), s(1);
     glm::dquat q(1, 0, 0, 0);
-    if (node.contains("translation")) t = {node["translation"][0], node["translation"][1], node["translation"][2]};
+    if (node.contains("translation"))
+      t = {node["translation"][0], node["translation"][1], node["translation"][2]};
     if (node.contains("scale")) s = {node["scale"][0], node["scale"][1], node["scale"][2]};
     if (node.contains("rotation"))
-      q = glm::dquat(node["rotation"][3], node["rotation"][0], node["rotation"][1], node["rotation"][2]);
+      q = glm::dquat(node["rotation"][3], node["rotation"][0], node["rotation"][1],
+                     node["rotation"][2]);
     return glm::translate(glm::dmat4(1), t) * glm::mat4_cast(q) * glm::scale(glm::dmat4(1), s);
   }
 
@@ -137,6 +143,10 @@ struct SampleCase {
   size_t readme_triangles;  // ../shared/assets/README.md, "triangles" column
 };
 
+void PrintTo(const SampleCase& c, std::ostream* os) {
+  *os << c.file;
+}
+
 class GltfSample : public testing::TestWithParam<SampleCase> {};
 
 TEST_P(GltfSample, CountsMatchTheFileAndTheAssetReadme) {
@@ -154,7 +164,8 @@ TEST_P(GltfSample, CountsMatchTheFileAndTheAssetReadme) {
   bool uses_default = false;
   for (const json& m : file.doc["meshes"])
     for (const json& p : m["primitives"]) uses_default |= !p.contains("material");
-  EXPECT_EQ(s.materials, file.doc.value("materials", json::array()).size() + (uses_default ? 1 : 0));
+  EXPECT_EQ(s.materials,
+            file.doc.value("materials", json::array()).size() + (uses_default ? 1 : 0));
   EXPECT_NO_THROW(scene.validate());
 }
 
@@ -167,7 +178,8 @@ INSTANTIATE_TEST_SUITE_P(
                     SampleCase{"Duck/Duck.glb", 4212}, SampleCase{"Avocado/glTF/Avocado.gltf", 682},
                     SampleCase{"DamagedHelmet/DamagedHelmet.glb", 15452},
                     SampleCase{"Cameras/Cameras.gltf", 2},
-                    SampleCase{"MetalRoughSpheresNoTextures/MetalRoughSpheresNoTextures.glb", 1040409},
+                    SampleCase{"MetalRoughSpheresNoTextures/MetalRoughSpheresNoTextures.glb",
+                               1040409},
                     SampleCase{"OrientationTest/OrientationTest.glb", 524},
                     SampleCase{"TextureCoordinateTest/TextureCoordinateTest.glb", 10},
                     SampleCase{"AnimatedCube/glTF/AnimatedCube.gltf", 12},
@@ -175,7 +187,8 @@ INSTANTIATE_TEST_SUITE_P(
                     SampleCase{"Suzanne/glTF/Suzanne.gltf", 3936}),
     [](const testing::TestParamInfo<SampleCase>& info) {
       std::string name = info.param.file.substr(info.param.file.rfind('/') + 1);
-      for (char& ch : name) if (!std::isalnum(static_cast<unsigned char>(ch))) ch = '_';
+      for (char& ch : name)
+        if (!std::isalnum(static_cast<unsigned char>(ch))) ch = '_';
       return name;
     });
 
@@ -211,7 +224,8 @@ TEST(GltfLoader, OrientationTestNodesLandWhereGlmPutsThem) {
       lo = glm::min(lo, w), hi = glm::max(hi, w);
     }
     Bounds3f ours;
-    for (Point3f p : scene.meshes[instance.mesh].positions) ours = unite(ours, instance.world_from_object(p));
+    for (Point3f p : scene.meshes[instance.mesh].positions)
+      ours = unite(ours, instance.world_from_object(p));
     for (int k = 0; k < 3; ++k) {
       EXPECT_NEAR(ours.min[k], lo[k], 1e-4) << instance.name << " axis " << k;
       EXPECT_NEAR(ours.max[k], hi[k], 1e-4) << instance.name << " axis " << k;
@@ -222,10 +236,17 @@ TEST(GltfLoader, OrientationTestNodesLandWhereGlmPutsThem) {
   // The arrows named X sit on the X axis at ±5, and so on (the sample's layout).
   for (const Instance& instance : scene.instances) {
     Bounds3f b;
-    for (Point3f p : scene.meshes[instance.mesh].positions) b = unite(b, instance.world_from_object(p));
-    if (instance.name == "ArrowX1") { EXPECT_GT(b.center().x, 3); }
-    if (instance.name == "ArrowY2") { EXPECT_LT(b.center().y, -3); }
-    if (instance.name == "ArrowZ1") { EXPECT_GT(b.center().z, 3); }
+    for (Point3f p : scene.meshes[instance.mesh].positions)
+      b = unite(b, instance.world_from_object(p));
+    if (instance.name == "ArrowX1") {
+      EXPECT_GT(b.center().x, 3);
+    }
+    if (instance.name == "ArrowY2") {
+      EXPECT_LT(b.center().y, -3);
+    }
+    if (instance.name == "ArrowZ1") {
+      EXPECT_GT(b.center().z, 3);
+    }
   }
 }
 
@@ -301,7 +322,8 @@ TEST(GltfLoader, MaterialsTexturesAndVertexAttributes) {
   EXPECT_TRUE(helmet.materials[0].normal_texture.valid());
   EXPECT_TRUE(helmet.materials[0].emission_texture.valid());
   EXPECT_EQ(helmet.textures[mr.base_color_texture.texture].encoding, TextureEncoding::kSrgb);
-  EXPECT_EQ(helmet.textures[mr.metallic_roughness_texture.texture].encoding, TextureEncoding::kLinear);
+  EXPECT_EQ(helmet.textures[mr.metallic_roughness_texture.texture].encoding,
+            TextureEncoding::kLinear);
   EXPECT_EQ(helmet.textures[mr.base_color_texture.texture].width, 2048);
   const Mesh& m = helmet.meshes[0];
   EXPECT_EQ(m.normals.size(), m.positions.size());
@@ -329,11 +351,14 @@ TEST(GltfLoader, CyclesCornellUsesSpecularZeroAndEmissiveStrength) {
       light = true;
       EXPECT_EQ(m.emission, Rgb(15.f));
     }
-    if (m.name == "red") { EXPECT_NEAR(mr.base_color.r, 0.63f, 1e-6); }
+    if (m.name == "red") {
+      EXPECT_NEAR(mr.base_color.r, 0.63f, 1e-6);
+    }
   }
   EXPECT_TRUE(light);
   ASSERT_EQ(scene.cameras.size(), 1u);
-  EXPECT_NEAR(scene.cameras[0].camera.vertical_fov_degrees, 0.6911112070083618 * 180 / 3.14159265358979, 1e-6);
+  EXPECT_NEAR(scene.cameras[0].camera.vertical_fov_degrees,
+              0.6911112070083618 * 180 / 3.14159265358979, 1e-6);
 }
 
 // --- Bad input: a clear obscura::Error naming the file and the place, never a crash. ---
@@ -368,12 +393,25 @@ class GltfBadInput : public testing::Test {
         {"asset", {{"version", "2.0"}}},
         {"scenes", {{{"nodes", {0}}}}},
         {"nodes", {{{"mesh", 0}}}},
-        {"meshes", {{{"primitives", {{{"attributes", {{"POSITION", position_accessor}}}, {"indices", 1}}}}}}},
-        {"buffers", {{{"byteLength", bytes.size()}, {"uri", "data:application/octet-stream;base64," + encoded}}}},
-        {"bufferViews", {{{"buffer", 0}, {"byteOffset", 0}, {"byteLength", positions.size() * 4}},
-                         {{"buffer", 0}, {"byteOffset", positions.size() * 4}, {"byteLength", indices.size() * 2}}}},
-        {"accessors", {{{"bufferView", 0}, {"componentType", 5126}, {"count", positions.size() / 3}, {"type", "VEC3"}},
-                       {{"bufferView", 1}, {"componentType", 5123}, {"count", indices.size()}, {"type", "SCALAR"}}}},
+        {"meshes",
+         {{{"primitives", {{{"attributes", {{"POSITION", position_accessor}}}, {"indices", 1}}}}}}},
+        {"buffers",
+         {{{"byteLength", bytes.size()},
+           {"uri", "data:application/octet-stream;base64," + encoded}}}},
+        {"bufferViews",
+         {{{"buffer", 0}, {"byteOffset", 0}, {"byteLength", positions.size() * 4}},
+          {{"buffer", 0},
+           {"byteOffset", positions.size() * 4},
+           {"byteLength", indices.size() * 2}}}},
+        {"accessors",
+         {{{"bufferView", 0},
+           {"componentType", 5126},
+           {"count", positions.size() / 3},
+           {"type", "VEC3"}},
+          {{"bufferView", 1},
+           {"componentType", 5123},
+           {"count", indices.size()},
+           {"type", "SCALAR"}}}},
     };
     return write(name, doc.dump());
   }
@@ -392,7 +430,9 @@ TEST_F(GltfBadInput, AWellFormedTriangleLoads) {
   EXPECT_EQ(scene.stats().triangles, 1u);
 }
 
-TEST_F(GltfBadInput, MissingFile) { expect_error(dir + "/nowhere.glb", {"nowhere.glb", "does not exist"}); }
+TEST_F(GltfBadInput, MissingFile) {
+  expect_error(dir + "/nowhere.glb", {"nowhere.glb", "does not exist"});
+}
 
 TEST_F(GltfBadInput, TruncatedGlb) {
   std::vector<uint8_t> box = read_bytes(sample("Box/Box.glb"));
@@ -403,7 +443,9 @@ TEST_F(GltfBadInput, TruncatedGlb) {
   }
 }
 
-TEST_F(GltfBadInput, MalformedJson) { expect_error(write("bad.gltf", "{\"asset\": {"), {"bad.gltf"}); }
+TEST_F(GltfBadInput, MalformedJson) {
+  expect_error(write("bad.gltf", "{\"asset\": {"), {"bad.gltf"});
+}
 
 TEST_F(GltfBadInput, AccessorIndexOutOfRange) {
   expect_error(triangle("accessor.gltf", {0, 0, 0, 1, 0, 0, 0, 1, 0}, {0, 1, 2}, 7),

@@ -91,7 +91,8 @@ TEST_F(JsonScene, ValuesArriveWhereTheyBelong) {
   // x 1 ± 1.5, y 2 ± 1, z 3 ± 0.5.
   Bounds3f box = scene.meshes[0].bounds();
   Bounds3f world;
-  for (Point3f p : scene.meshes[0].positions) world = unite(world, scene.instances[0].world_from_object(p));
+  for (Point3f p : scene.meshes[0].positions)
+    world = unite(world, scene.instances[0].world_from_object(p));
   EXPECT_NEAR(box.diagonal().z, 6, 1e-6);
   EXPECT_NEAR(world.min.x, -0.5, 1e-5);
   EXPECT_NEAR(world.max.x, 2.5, 1e-5);
@@ -129,8 +130,9 @@ TEST_F(JsonScene, ModelsAreIncludedWithTheirTransformAndUpAxis) {
 TEST_F(JsonScene, UnknownKeyNamesTheKeyAndItsPath) {
   expect_error(R"({"materials": {"red": {"type": "diffuse", "reflectanse": 0.5}}})",
                {"$.materials.red.reflectanse", "unknown key 'reflectanse'"});
-  expect_error(R"({"objects": [{"shape": "sphere", "material": "m", "radius": 1}], "materials": {"m": {"type": "diffuse"}}, "camras": []})",
-               {"$.camras"});
+  expect_error(
+      R"({"objects": [{"shape": "sphere", "material": "m", "radius": 1}], "materials": {"m": {"type": "diffuse"}}, "camras": []})",
+      {"$.camras"});
   expect_error(R"({"cameras": [{"position": [0, 0, 1], "fov": 40}]})", {"$.cameras[0].fov"});
 }
 
@@ -150,9 +152,11 @@ TEST_F(JsonScene, WrongTypesAndRanges) {
                {"$.materials.m.roughness", "[0, 1]"});
   expect_error(R"({"objects": [{"shape": "sphere", "material": "nope"}]})",
                {"$.objects[0].material", "no material named 'nope'"});
-  expect_error(R"({"objects": [{"shape": "mesh", "positions": [0,0,0, 1,0,0, 0,1,0], "indices": [0,1,3]}], "materials": {}})",
-               {"$.objects[0]", "past the vertex count 3"});
-  expect_error(R"({"camera": "missing", "cameras": [{"name": "a"}]})", {"no camera named 'missing'"});
+  expect_error(
+      R"({"objects": [{"shape": "mesh", "positions": [0,0,0, 1,0,0, 0,1,0], "indices": [0,1,3]}], "materials": {}})",
+      {"$.objects[0]", "past the vertex count 3"});
+  expect_error(R"({"camera": "missing", "cameras": [{"name": "a"}]})",
+               {"no camera named 'missing'"});
 }
 
 TEST_F(JsonScene, MissingTextureAndMissingModel) {
@@ -178,7 +182,8 @@ Image render_small(const Scene& scene_in) {
   auto device = std::make_shared<EmbreeDevice>();
   TraceScene trace(scene, device);
   Film film(48, 48);
-  render(trace, scene.camera, DirectLightingIntegrator(), {.samples_per_pixel = 16, .seed = 7, .tile_size = 16}, film);
+  render(trace, scene.camera, DirectLightingIntegrator(),
+         {.samples_per_pixel = 16, .seed = 7, .tile_size = 16}, film);
   return film.to_image();
 }
 

@@ -71,7 +71,8 @@ TEST(Scene, ValidationNamesTheProblem) {
   bad.meshes[0].normals.pop_back();
   expect(bad, "normals has 23 entries for 24 vertices");
   bad = s;
-  bad.materials[0].model = DiffuseMaterial{.reflectance = Rgb(0.5f), .reflectance_texture = {.texture = 0, .uv_set = 0}};
+  bad.materials[0].model =
+      DiffuseMaterial{.reflectance = Rgb(0.5f), .reflectance_texture = {.texture = 0, .uv_set = 0}};
   expect(bad, "reflectance texture index 0 is past the texture count 0");
 }
 
@@ -94,7 +95,8 @@ TEST(Scene, CornellBoxHasThePublishedDimensions) {
   EXPECT_NEAR(b.max.y, 0.5488f, 1e-6);
   EXPECT_NEAR(b.max.z, 0.5592f, 1e-6);
   ASSERT_EQ(box.cameras.size(), 1u);
-  EXPECT_NEAR(box.camera.vertical_fov_degrees, 2 * std::atan(12.5 / 35) * 180 / 3.141592653589793, 1e-5);
+  EXPECT_NEAR(box.camera.vertical_fov_degrees, 2 * std::atan(12.5 / 35) * 180 / 3.141592653589793,
+              1e-5);
 }
 
 }  // namespace

@@ -247,7 +247,8 @@ class JsonSceneReader {
     }
     std::string file = resolve(json.string("model"));
     std::error_code ec;
-    if (!std::filesystem::is_regular_file(file, ec)) json.fail("model", "model file '" + file + "' does not exist");
+    if (!std::filesystem::is_regular_file(file, ec))
+      json.fail("model", "model file '" + file + "' does not exist");
     std::string up = json.string("up", "y");
     if (up != "y" && up != "z") json.fail("up", "expected \"y\" or \"z\"");
     std::optional<uint32_t> override_material;
