@@ -127,6 +127,22 @@ TEST_F(JsonScene, ModelsAreIncludedWithTheirTransformAndUpAxis) {
   EXPECT_EQ(scene.material_of(scene.instances[0]), 0u);
 }
 
+TEST_F(JsonScene, MotionBlurSceneHasMovingObjectsAndCamera) {
+  Scene scene = load_scene_file(test::source_path("scenes/motion-blur.json"));
+  const Instance* ball = nullptr;
+  for (const Instance& i : scene.instances)
+    if (i.name == "ball") ball = &i;
+  ASSERT_NE(ball, nullptr);
+  ASSERT_EQ(ball->motion.size(), 2u);
+  // The file: x from −1 at t = 0 to 0.2 at t = 1/30 s.
+  EXPECT_NEAR(ball->motion[0].world_from_object(Point3d(0, 0, 0)).x, -1, 1e-9);
+  EXPECT_NEAR(ball->motion[1].world_from_object(Point3d(0, 0, 0)).x, 0.2, 1e-9);
+  EXPECT_NEAR(ball->motion[1].time_seconds, 0.0333333, 1e-9);
+  ASSERT_EQ(scene.cameras.size(), 1u);
+  EXPECT_EQ(scene.cameras[0].motion.size(), 2u);
+  EXPECT_NEAR(scene.cameras[0].shutter_close, 0.0333333, 1e-9);
+}
+
 TEST_F(JsonScene, UnknownKeyNamesTheKeyAndItsPath) {
   expect_error(R"({"materials": {"red": {"type": "diffuse", "reflectanse": 0.5}}})",
                {"$.materials.red.reflectanse", "unknown key 'reflectanse'"});
