@@ -76,10 +76,12 @@ void run_info(const std::string& name, bool verbose) {
                   t.channels);
     for (const Light& l : scene.lights)
       std::printf("  light      %s (%s)\n", l.name.c_str(), light_type(l.model));
-    for (const SceneCamera& c : scene.cameras)
-      std::printf("  camera     %s (%s, vertical fov %.4g deg)\n", c.name.c_str(),
-                  c.projection == CameraProjection::kOrthographic ? "orthographic" : "perspective",
-                  c.camera.vertical_fov_degrees);
+    for (const Camera& c : scene.cameras) {
+      Vector2d fov = c.fov_degrees();
+      std::printf("  camera     %s (%s, field of view %.4g x %.4g deg%s)\n", c.name.c_str(),
+                  std::string(projection_name(c.projection)).c_str(), fov.x, fov.y,
+                  c.world_from_camera.is_animated() ? ", moving" : "");
+    }
   }
   for (const std::string& w : scene.warnings) std::fprintf(stderr, "warning: %s\n", w.c_str());
 }

@@ -287,27 +287,28 @@ TEST(GltfLoader, AnimatedCubeRotationKeysMatchTheQuaternions) {
 TEST(GltfLoader, CamerasSampleGivesBothCamerasWithTheFileValues) {
   Scene scene = load_gltf(sample("Cameras/Cameras.gltf"));
   ASSERT_EQ(scene.cameras.size(), 2u);
-  const SceneCamera& perspective = scene.cameras[0];
-  const SceneCamera& orthographic = scene.cameras[1];
+  const Camera& perspective = scene.cameras[0];
+  const Camera& orthographic = scene.cameras[1];
   // README / file: perspective yfov 0.7 rad, aspect 1.0, znear 0.01, zfar 100.
-  EXPECT_EQ(perspective.projection, CameraProjection::kPerspective);
-  EXPECT_NEAR(perspective.camera.vertical_fov_degrees, 0.7 * 180 / 3.14159265358979, 1e-9);
-  EXPECT_DOUBLE_EQ(perspective.aspect_ratio, 1.0);
-  EXPECT_DOUBLE_EQ(perspective.z_near, 0.01);
-  EXPECT_DOUBLE_EQ(perspective.z_far, 100);
-  // Orthographic xmag = ymag = 1.0, znear 0.01, zfar 100.
-  EXPECT_EQ(orthographic.projection, CameraProjection::kOrthographic);
-  EXPECT_DOUBLE_EQ(orthographic.x_mag, 1.0);
-  EXPECT_DOUBLE_EQ(orthographic.y_mag, 1.0);
-  EXPECT_DOUBLE_EQ(orthographic.z_near, 0.01);
-  EXPECT_DOUBLE_EQ(orthographic.z_far, 100);
+  ASSERT_TRUE(std::holds_alternative<Perspective>(perspective.projection));
+  EXPECT_NEAR(perspective.fov_degrees().y, 0.7 * 180 / 3.14159265358979, 1e-9);
+  EXPECT_DOUBLE_EQ(perspective.film.image_aspect(), 1.0);
+  EXPECT_DOUBLE_EQ(perspective.near_m, 0.01);
+  EXPECT_DOUBLE_EQ(perspective.far_m, 100);
+  // Orthographic xmag = ymag = 1.0 (a 2 × 2 m view), znear 0.01, zfar 100.
+  ASSERT_TRUE(std::holds_alternative<Orthographic>(orthographic.projection));
+  const auto& o = std::get<Orthographic>(orthographic.projection);
+  EXPECT_DOUBLE_EQ(o.view_height_m, 2.0);
+  EXPECT_DOUBLE_EQ(*o.view_width_m, 2.0);
+  EXPECT_DOUBLE_EQ(orthographic.near_m, 0.01);
+  EXPECT_DOUBLE_EQ(orthographic.far_m, 100);
   // Both nodes are translated to (0.5, 0.5, 3) and look down −Z.
-  for (const SceneCamera& c : scene.cameras) {
-    Point3d eye = c.camera.world_from_camera(Point3d(0, 0, 0));
+  for (const Camera& c : scene.cameras) {
+    Point3d eye = c.world_from_camera.at(0)(Point3d(0, 0, 0));
     EXPECT_NEAR(eye.x, 0.5, 1e-12);
     EXPECT_NEAR(eye.y, 0.5, 1e-12);
     EXPECT_NEAR(eye.z, 3.0, 1e-12);
-    Vector3d forward = c.camera.world_from_camera(Vector3d(0, 0, -1));
+    Vector3d forward = c.world_from_camera.at(0)(Vector3d(0, 0, -1));
     EXPECT_NEAR(forward.z, -1, 1e-12);
   }
 }
@@ -357,8 +358,7 @@ TEST(GltfLoader, CyclesCornellUsesSpecularZeroAndEmissiveStrength) {
   }
   EXPECT_TRUE(light);
   ASSERT_EQ(scene.cameras.size(), 1u);
-  EXPECT_NEAR(scene.cameras[0].camera.vertical_fov_degrees,
-              0.6911112070083618 * 180 / 3.14159265358979, 1e-6);
+  EXPECT_NEAR(scene.cameras[0].fov_degrees().y, 0.6911112070083618 * 180 / 3.14159265358979, 1e-6);
 }
 
 // --- Bad input: a clear obscura::Error naming the file and the place, never a crash. ---

@@ -101,9 +101,18 @@ TEST_F(JsonScene, ValuesArriveWhereTheyBelong) {
   const auto& spot = std::get<SpotLight>(scene.lights[0].model);
   EXPECT_NEAR(spot.direction.y, -1, 1e-6);
   EXPECT_NEAR(spot.outer_cone_radians, 30 * std::numbers::pi / 180, 1e-6);
-  // "camera": "b" is the render camera: 50 mm on a 24 mm-high sensor, 2·atan(12/50) = 26.99°.
-  EXPECT_NEAR(scene.camera.vertical_fov_degrees, 26.991466, 1e-5);
-  EXPECT_DOUBLE_EQ(scene.cameras[1].f_number, 2.8);
+  // "camera": "b" is the render camera: 50 mm on a 24 mm-high sensor.
+  scene.camera.film.width_px = 360, scene.camera.film.height_px = 240;  // the sensor's 3:2
+  // With the lens focused at 10 m the sensor sits at v = f·S/(S − f) = 50.2513 mm, so the
+  // vertical FOV is 2·atan(12 / 50.2513) = 26.8614° (at infinity focus it would be 26.9915°).
+  EXPECT_NEAR(scene.camera.fov_degrees().y, 26.861411, 1e-5);
+  EXPECT_DOUBLE_EQ(std::get<Perspective>(scene.camera.projection).focal_length_mm, 50);
+  EXPECT_EQ(scene.camera.name, "b");
+  EXPECT_TRUE(scene.camera.lens.depth_of_field);
+  EXPECT_DOUBLE_EQ(scene.camera.lens.f_number, 2.8);
+  EXPECT_DOUBLE_EQ(scene.camera.lens.focus_distance_m, 10);
+  EXPECT_FALSE(scene.cameras[0].lens.depth_of_field);
+  EXPECT_NEAR(scene.cameras[0].fov_degrees().y, 30, 1e-9);
 }
 
 TEST_F(JsonScene, ModelsAreIncludedWithTheirTransformAndUpAxis) {
@@ -139,8 +148,11 @@ TEST_F(JsonScene, MotionBlurSceneHasMovingObjectsAndCamera) {
   EXPECT_NEAR(ball->motion[1].world_from_object(Point3d(0, 0, 0)).x, 0.2, 1e-9);
   EXPECT_NEAR(ball->motion[1].time_seconds, 0.0333333, 1e-9);
   ASSERT_EQ(scene.cameras.size(), 1u);
-  EXPECT_EQ(scene.cameras[0].motion.size(), 2u);
-  EXPECT_NEAR(scene.cameras[0].shutter_close, 0.0333333, 1e-9);
+  EXPECT_TRUE(scene.cameras[0].world_from_camera.is_animated());
+  EXPECT_EQ(scene.cameras[0].world_from_camera.keys().size(), 2u);
+  EXPECT_NEAR(scene.cameras[0].shutter.close_s, 0.0333333, 1e-9);
+  // The camera moves from x = 0 to x = −0.2 during the exposure.
+  EXPECT_NEAR(scene.camera.world_from_camera.at(0.0333333)(Point3d(0, 0, 0)).x, -0.2, 1e-9);
 }
 
 TEST_F(JsonScene, UnknownKeyNamesTheKeyAndItsPath) {
@@ -194,7 +206,7 @@ TEST_F(JsonScene, MissingFile) {
 // measured OBJ, scaled from millimetres) render the same picture.
 Image render_small(const Scene& scene_in) {
   Scene scene = scene_in;
-  scene.camera.width = scene.camera.height = 48;
+  scene.camera.film.width_px = scene.camera.film.height_px = 48;
   auto device = std::make_shared<EmbreeDevice>();
   TraceScene trace(scene, device);
   Film film(48, 48);

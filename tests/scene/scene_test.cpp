@@ -95,8 +95,7 @@ TEST(Scene, CornellBoxHasThePublishedDimensions) {
   EXPECT_NEAR(b.max.y, 0.5488f, 1e-6);
   EXPECT_NEAR(b.max.z, 0.5592f, 1e-6);
   ASSERT_EQ(box.cameras.size(), 1u);
-  EXPECT_NEAR(box.camera.vertical_fov_degrees, 2 * std::atan(12.5 / 35) * 180 / 3.141592653589793,
-              1e-5);
+  EXPECT_NEAR(box.camera.fov_degrees().y, 2 * std::atan(12.5 / 35) * 180 / 3.141592653589793, 1e-5);
 }
 
 }  // namespace

@@ -505,18 +505,32 @@ void GltfImporter::visit_node(int node_index, const Matrix4& world_from_parent, 
       fail(where + ".camera", "camera index " + std::to_string(node.camera) + " is out of range");
     const tinygltf::Camera& gc = model_.cameras[node.camera];
     std::string name = gc.name.empty() ? (node.name.empty() ? where : node.name) : gc.name;
+    std::string at = file_ + ": " + element("cameras", node.camera);
     // Cameras ignore scale: keep only the node's rotation and translation.
     Transform world_from_camera = without_scale(world_from_node);
-    if (gc.type == "orthographic")
-      scene_.cameras.push_back(orthographic_camera(name, world_from_camera, gc.orthographic.xmag,
-                                                   gc.orthographic.ymag, gc.orthographic.znear,
-                                                   gc.orthographic.zfar));
-    else
-      scene_.cameras.push_back(perspective_camera(
-          name, world_from_camera, gc.perspective.yfov, gc.perspective.aspectRatio,
-          gc.perspective.znear,
-          gc.perspective.zfar > 0 ? gc.perspective.zfar : std::numeric_limits<double>::infinity()));
-    scene_.cameras.back().motion = animations_.world_keys(node_index);
+    Camera camera;
+    if (gc.type == "orthographic") {
+      GltfOrthographic o{.xmag_m = gc.orthographic.xmag,
+                         .ymag_m = gc.orthographic.ymag,
+                         .znear_m = gc.orthographic.znear,
+                         .zfar_m = gc.orthographic.zfar};
+      camera = gltf_orthographic_camera(name, world_from_camera, o, at);
+    } else {
+      GltfPerspective p;
+      p.yfov_radians = gc.perspective.yfov;
+      if (gc.perspective.aspectRatio > 0) p.aspect_ratio = gc.perspective.aspectRatio;
+      p.znear_m = gc.perspective.znear;
+      if (gc.perspective.zfar > 0) p.zfar_m = gc.perspective.zfar;
+      camera = gltf_perspective_camera(name, world_from_camera, p, at);
+    }
+    std::vector<TransformKey> keys = animations_.world_keys(node_index);
+    if (!keys.empty()) {
+      std::vector<AnimatedTransform::Key> camera_keys;
+      for (const TransformKey& k : keys)
+        camera_keys.push_back({k.time_seconds, without_scale(k.world_from_object.matrix())});
+      camera.world_from_camera = AnimatedTransform(camera_keys);
+    }
+    scene_.cameras.push_back(std::move(camera));
   }
   auto light = node.extensions.find("KHR_lights_punctual");
   if (light != node.extensions.end())

@@ -5,7 +5,9 @@
 #include <map>
 #include <numbers>
 
+#include "obscura/camera/frames.h"
 #include "obscura/io/camera_mapping.h"
+#include "obscura/io/gltf_animation.h"
 #include "obscura/io/json_reader.h"
 #include "obscura/io/scene_loader.h"
 #include "obscura/io/texture_loader.h"
@@ -256,7 +258,7 @@ class JsonSceneReader {
     json.finish();
     Scene model = load_model_file(file);
     // A Z-up model turns so that its +Z becomes the world's +Y.
-    Transform up_fix = up == "z" ? Transform::rotate_x(-std::numbers::pi / 2) : Transform();
+    Transform up_fix = y_up_from(up == "z" ? UpAxis::z : UpAxis::y);
     merge(std::move(model), world_from_object * up_fix, keys, up_fix, name, override_material);
   }
 
@@ -306,8 +308,12 @@ class JsonSceneReader {
       scene_.instances.push_back(std::move(instance));
     }
     for (Light& light : model.lights) scene_.lights.push_back(transformed(light, world_from_model));
-    for (SceneCamera& camera : model.cameras) {
-      camera.camera.world_from_camera = world_from_model * camera.camera.world_from_camera;
+    for (Camera& camera : model.cameras) {
+      // Cameras follow the model's placement, without its scale.
+      std::vector<AnimatedTransform::Key> keys = camera.world_from_camera.keys();
+      for (AnimatedTransform::Key& key : keys)
+        key.transform = without_scale((world_from_model * key.transform).matrix());
+      camera.world_from_camera = AnimatedTransform(keys);
       scene_.cameras.push_back(std::move(camera));
     }
     for (std::string& w : model.warnings) scene_.warnings.push_back(std::move(w));

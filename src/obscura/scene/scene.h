@@ -17,7 +17,6 @@
 #include "obscura/scene/light.h"
 #include "obscura/scene/material.h"
 #include "obscura/scene/mesh.h"
-#include "obscura/scene/scene_camera.h"
 #include "obscura/scene/texture.h"
 
 namespace obscura {
@@ -49,7 +48,7 @@ struct Scene {
   std::vector<Texture> textures;
   std::vector<Light> lights;
   std::optional<Environment> environment;
-  std::vector<SceneCamera> cameras;  // every camera the file names, in file order
+  std::vector<Camera> cameras;       // every camera the file names (Camera::name), in file order
   Camera camera;                     // the camera to render with (by default cameras.front())
   SceneRenderSettings render;
   std::vector<std::string> warnings;  // what the loader skipped or approximated, for the user
