@@ -5,6 +5,8 @@
 #include <string>
 #include <vector>
 
+#include "obscura/math/vector.h"
+
 namespace obscura {
 
 // What happens outside [0, 1] (glTF sampler wrap modes).
@@ -37,6 +39,12 @@ struct Texture {
            source.capacity();
   }
 };
+
+// The texture's value at `uv` (glTF convention: (0, 0) is the image's top-left corner, texel
+// centres at half-integers × texel size) as linear RGBA: sRGB textures are decoded, missing
+// channels filled as glTF does (grey → RGB, alpha 1). Wrap modes apply per axis; kNearest picks
+// one texel, kBilinear and kTrilinear blend the four nearest (no MIP levels are built here).
+Vector4f sample_texture(const Texture& texture, Point2f uv);
 
 // A material's use of a texture: which one and which UV set.
 struct TextureRef {
