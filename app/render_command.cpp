@@ -69,6 +69,8 @@ void run_render(RenderOptions options) {
 
   Scene scene = load_scene(options.scene);
   apply_scene_settings(scene.render, options);
+  if (!options.quiet)
+    for (const std::string& w : scene.warnings) std::fprintf(stderr, "warning: %s\n", w.c_str());
   scene.camera = resolve_camera(scene, options.camera, options.width, options.height);
   scene.validate();
 

@@ -375,7 +375,7 @@ class GltfBadInput : public testing::Test {
   // A one-triangle glTF whose buffer holds `positions` (3 floats each) and `indices` (uint16),
   // embedded as base64.
   std::string triangle(const std::string& name, std::vector<float> positions,
-                       std::vector<uint16_t> indices, int position_accessor = 0) {
+                       std::vector<uint16_t> indices, int position_accessor = 0, int mode = 4) {
     std::vector<uint8_t> bytes(positions.size() * 4 + indices.size() * 2);
     std::memcpy(bytes.data(), positions.data(), positions.size() * 4);
     std::memcpy(bytes.data() + positions.size() * 4, indices.data(), indices.size() * 2);
@@ -394,7 +394,10 @@ class GltfBadInput : public testing::Test {
         {"scenes", {{{"nodes", {0}}}}},
         {"nodes", {{{"mesh", 0}}}},
         {"meshes",
-         {{{"primitives", {{{"attributes", {{"POSITION", position_accessor}}}, {"indices", 1}}}}}}},
+         {{{"primitives",
+            {{{"attributes", {{"POSITION", position_accessor}}},
+              {"indices", 1},
+              {"mode", mode}}}}}}},
         {"buffers",
          {{{"byteLength", bytes.size()},
            {"uri", "data:application/octet-stream;base64," + encoded}}}},
@@ -428,6 +431,24 @@ class GltfBadInput : public testing::Test {
 TEST_F(GltfBadInput, AWellFormedTriangleLoads) {
   Scene scene = load_gltf(triangle("ok.gltf", {0, 0, 0, 1, 0, 0, 0, 1, 0}, {0, 1, 2}));
   EXPECT_EQ(scene.stats().triangles, 1u);
+}
+
+TEST_F(GltfBadInput, StripsAndFansBecomeTrianglesFacingTheSameWay) {
+  // A unit square in the z = 0 plane, as a strip (0 1 2 3) and as a fan (0 1 3 2): two
+  // triangles each, both facing +Z like the strip's first triangle.
+  std::vector<float> square = {0, 0, 0, 1, 0, 0, 0, 1, 0, 1, 1, 0};
+  for (auto [mode, order] : {std::pair{5, std::vector<uint16_t>{0, 1, 2, 3}},
+                             std::pair{6, std::vector<uint16_t>{0, 1, 3, 2}}}) {
+    Scene scene =
+        load_gltf(triangle("mode" + std::to_string(mode) + ".gltf", square, order, 0, mode));
+    const Mesh& m = scene.meshes[0];
+    ASSERT_EQ(m.triangle_count(), 2u) << "mode " << mode;
+    for (size_t t = 0; t < 6; t += 3) {
+      Vector3f n = cross(m.positions[m.indices[t + 1]] - m.positions[m.indices[t]],
+                         m.positions[m.indices[t + 2]] - m.positions[m.indices[t]]);
+      EXPECT_GT(n.z, 0) << "mode " << mode << " triangle " << t / 3;
+    }
+  }
 }
 
 TEST_F(GltfBadInput, MissingFile) {
