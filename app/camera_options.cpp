@@ -90,9 +90,15 @@ SensorFit sensor_fit_from_name(const std::string& name) {
 
 const Camera& find_camera(const Scene& scene, const std::optional<std::string>& name) {
   if (!name || *name == scene.camera.name) return scene.camera;
+  // Scene files name all their cameras (Scene::cameras); the render camera is one of them.
+  std::string known;
+  for (const Camera& c : scene.cameras) {
+    if (c.name == *name) return c;
+    known += (known.empty() ? "" : ", ") + c.name;
+  }
+  if (known.empty()) known = scene.camera.name.empty() ? "(one, unnamed)" : scene.camera.name;
   throw Error("--camera", "scene '" + scene.name + "' has no camera '" + *name +
-                              "'; its cameras: " +
-                              (scene.camera.name.empty() ? "(one, unnamed)" : scene.camera.name));
+                              "'; its cameras: " + known);
 }
 
 void apply_lens_overrides(Camera& camera, const CameraOverrides& o) {

@@ -7,8 +7,8 @@
 #include <tbb/global_control.h>
 
 #include "obscura/io/image_io.h"
+#include "obscura/io/scene_loader.h"
 #include "obscura/math/error.h"
-#include "obscura/scene/builtin_scenes.h"
 #include "obscura/trace/render.h"
 #include "camera_options.h"
 #include "display_options.h"
@@ -32,7 +32,17 @@ struct RenderOptions {
   CameraOverrides camera;
   DisplayOptions display;
   TracerOptions tracer;
+  // Which options were given on the command line: those override the scene file's settings.
+  bool width_given = false, height_given = false, spp_given = false, seed_given = false;
 };
+
+// The scene file's suggested settings, where the command line did not give them.
+void apply_scene_settings(const SceneRenderSettings& s, RenderOptions& o) {
+  if (s.width && !o.width_given) o.width = *s.width;
+  if (s.height && !o.height_given) o.height = *s.height;
+  if (s.samples_per_pixel && !o.spp_given) o.spp = *s.samples_per_pixel;
+  if (s.seed && !o.seed_given) o.seed = *s.seed;
+}
 
 void validate(const RenderOptions& o) {
   if (o.width <= 0) throw UsageError("--width must be a positive number of pixels; got " + std::to_string(o.width));
@@ -43,20 +53,14 @@ void validate(const RenderOptions& o) {
 
 }  // namespace
 
-Scene load_scene(const std::string& name) {
-  if (name.empty()) return make_builtin_scene(builtin_scene_names().front());
-  if (is_builtin_scene(name)) return make_builtin_scene(name);
-  std::string known;
-  for (const std::string& n : builtin_scene_names()) known += (known.empty() ? "" : ", ") + n;
-  throw Error(name, "not a built-in scene (built-in: " + known +
-                        "); scene files are not supported by this version yet");
-}
+Scene load_scene(const std::string& name) { return obscura::load_scene(name); }
 
 namespace {
 
-void run_render(const RenderOptions& options) {
+void run_render(RenderOptions options) {
   if (options.list_scenes) {
-    for (const std::string& name : builtin_scene_names()) std::printf("%s\n", name.c_str());
+    for (const BuiltinScene& b : builtin_scenes())
+      std::printf("%-20s %s\n", b.name.c_str(), b.description.c_str());
     return;
   }
   validate(options);
@@ -68,6 +72,9 @@ void run_render(const RenderOptions& options) {
     thread_limit.emplace(tbb::global_control::max_allowed_parallelism, size_t(options.threads));
 
   Scene scene = load_scene(options.scene);
+  apply_scene_settings(scene.render, options);
+  if (!options.quiet)
+    for (const std::string& w : scene.warnings) std::fprintf(stderr, "warning: %s\n", w.c_str());
   scene.camera = resolve_camera(scene, options.camera, options.width, options.height);
   scene.validate();
 
@@ -111,7 +118,8 @@ void add_render_command(CLI::App& app) {
   auto options = std::make_shared<RenderOptions>();
   CLI::App* render = app.add_subcommand("render", "Render a scene to an image file");
   render->add_option("scene", options->scene,
-                     "A built-in scene name (see --scene-list); default: the Cornell box");
+                     "A scene file (.json, .gltf, .glb, .obj, .ply, …) or a built-in scene name "
+                     "(see --scene-list); default: the Cornell box");
   render->add_option("-o,--output", options->output,
                      "Output image; the format follows the extension: .png, .exr, .pfm")
       ->capture_default_str();
@@ -128,7 +136,13 @@ void add_render_command(CLI::App& app) {
   add_camera_options(*render, options->camera);
   add_display_options(render, options->display);
   add_tracer_options(*render, options->tracer);
-  render->callback([options] { run_render(*options); });
+  render->callback([options, render] {
+    options->width_given = render->count("--width") > 0;
+    options->height_given = render->count("--height") > 0;
+    options->spp_given = render->count("--spp") > 0;
+    options->seed_given = render->count("--seed") > 0;
+    run_render(*options);
+  });
 }
 
 }  // namespace obscura::app

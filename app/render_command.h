@@ -11,7 +11,8 @@ namespace obscura::app {
 
 void add_render_command(CLI::App& app);
 
-// A built-in scene by name (empty: the default); throws obscura::Error for unknown names.
+// A built-in scene by name (empty: the default) or a scene file (obscura::load_scene); throws
+// obscura::Error for unknown names and unreadable files.
 Scene load_scene(const std::string& name);
 
 }  // namespace obscura::app

@@ -27,6 +27,7 @@
 
 #include "../tests/trace/trace_test_scenes.h"
 #include "obscura/io/image_io.h"
+#include "obscura/io/scene_loader.h"
 #include "obscura/math/rng.h"
 #include "obscura/math/sampling.h"
 #include "obscura/trace/path_tracer.h"
@@ -122,10 +123,10 @@ void build_raw(BenchScene& s) {
 BenchScene make_bench_scene(Mesh mesh) {
   BenchScene s;
   s.scene.name = mesh.name;
-  s.scene.materials = {{.name = "grey", .diffuse = Rgb(0.5f), .emission = {}}};
+  s.scene.materials = {diffuse_material("grey", Rgb(0.5f))};
   Bounds3f b;
   for (Point3f p : mesh.positions) b = unite(b, p);
-  s.scene.meshes = {std::move(mesh)};
+  s.scene.add_meshes({std::move(mesh)});
   Point3f c = b.min + (b.max - b.min) * 0.5f;
   float r = 0.5f * distance(b.min, b.max);
   Camera camera =
@@ -247,12 +248,7 @@ void register_ray_benchmarks() {
 // The reference Cornell box at 128², path traced at state.range(0) spp with 2 threads.
 void cornell_path(benchmark::State& state) {
   tbb::global_control threads(tbb::global_control::max_allowed_parallelism, 2);
-  Scene scene = testing::read_obj_triangles(shared("reference/cornell/cornell.obj"),
-                                            {{"white", 0}, {"red", 1}, {"green", 2}, {"light", 3}});
-  scene.materials = {{.name = "white", .diffuse = Rgb(0.8f), .emission = {}},
-                     {.name = "red", .diffuse = {0.63f, 0.065f, 0.05f}, .emission = {}},
-                     {.name = "green", .diffuse = {0.14f, 0.45f, 0.091f}, .emission = {}},
-                     {.name = "light", .diffuse = Rgb(0.f), .emission = Rgb(15.f)}};
+  Scene scene = load_scene_file(shared("reference/cornell/cornell.glb"));
   Camera camera = testing::make_camera({0, 1, 3.9}, {0, 1, 0}, 128, 39.597752709049864);
   TraceScene trace(scene, std::make_shared<EmbreeDevice>());
   Image reference = read_image(shared("reference/cornell/cornell_ref.exr"));

@@ -27,12 +27,13 @@ constexpr int kWidth = 96, kHeight = 8;
 TraceScene edge_scene(double depth) {
   Scene scene;
   scene.name = "edge";
-  scene.materials = {{.name = "white", .diffuse = Rgb(0.f), .emission = Rgb(1.f)}};
+  scene.materials = {diffuse_material("white", Rgb(0.f), Rgb(1.f))};
   auto z = float(-depth);
-  scene.meshes = {{.name = "half-plane",
-                   .positions = {{0, -50, z}, {50, -50, z}, {50, 50, z}, {0, 50, z}},
-                   .indices = {0, 1, 2, 0, 2, 3},
-                   .material = 0}};
+  Mesh plane;
+  plane.name = "half-plane";
+  plane.positions = {{0, -50, z}, {50, -50, z}, {50, 50, z}, {0, 50, z}};
+  plane.indices = {0, 1, 2, 0, 2, 3};
+  scene.add_mesh(std::move(plane));
   return TraceScene(scene, device());
 }
 

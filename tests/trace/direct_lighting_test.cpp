@@ -16,8 +16,20 @@ double corner_form_factor(double X, double Y) {
 }
 
 Mesh quad(const char* name, uint32_t material, Point3f a, Point3f b, Point3f c, Point3f d) {
-  return {
-      .name = name, .positions = {a, b, c, d}, .indices = {0, 1, 2, 0, 2, 3}, .material = material};
+  Mesh m;
+  m.name = name;
+  m.positions = {a, b, c, d};
+  m.indices = {0, 1, 2, 0, 2, 3};
+  m.material = material;
+  return m;
+}
+
+Material lambertian(const char* name, float albedo, float radiance) {
+  Material m;
+  m.name = name;
+  m.model = DiffuseMaterial{.reflectance = Rgb(albedo), .reflectance_texture = {}};
+  m.emission = Rgb(radiance);
+  return m;
 }
 
 struct LitFloor {
@@ -25,15 +37,14 @@ struct LitFloor {
   Scene scene;
   LitFloor(bool with_blocker) {
     scene.name = "lit-floor";
-    scene.materials = {{.name = "floor", .diffuse = Rgb(kAlbedo), .emission = {}},
-                       {.name = "light", .diffuse = Rgb(0), .emission = Rgb(kRadiance)}};
+    scene.materials = {lambertian("floor", kAlbedo, 0), lambertian("light", 0, kRadiance)};
     // Floor facing up; light facing down (its winding is clockwise seen from below... i.e. the
     // normal (p1 − p0) × (p2 − p0) points to −Y).
-    scene.meshes.push_back(quad("floor", 0, {-5, 0, -5}, {-5, 0, 5}, {5, 0, 5}, {5, 0, -5}));
+    scene.add_mesh(quad("floor", 0, {-5, 0, -5}, {-5, 0, 5}, {5, 0, 5}, {5, 0, -5}));
     const float a = kHalfSide, h = kHeight;
-    scene.meshes.push_back(quad("light", 1, {-a, h, -a}, {a, h, -a}, {a, h, a}, {-a, h, a}));
+    scene.add_mesh(quad("light", 1, {-a, h, -a}, {a, h, -a}, {a, h, a}, {-a, h, a}));
     if (with_blocker)
-      scene.meshes.push_back(
+      scene.add_mesh(
           quad("blocker", 0, {-2, 0.5f, -2}, {-2, 0.5f, 2}, {2, 0.5f, 2}, {2, 0.5f, -2}));
   }
 };

@@ -5,6 +5,7 @@
 #include <cmath>
 
 #include "obscura/io/image_io.h"
+#include "obscura/io/scene_loader.h"
 #include "obscura/scene/builtin_scenes.h"
 #include "obscura/trace/render.h"
 #include "test_paths.h"
@@ -24,8 +25,8 @@ struct Furnace {
   Camera camera = testing::make_camera({0, 0, 4}, {0, 0, 0}, 16, 20);
   Furnace() {
     scene.name = "furnace";
-    scene.materials = {{.name = "sphere", .diffuse = Rgb(1.f), .emission = {}}};
-    scene.meshes = {testing::make_sphere({0, 0, 0}, 1, 0, 24, 48)};
+    scene.materials = {diffuse_material("sphere", Rgb(1.f))};
+    scene.add_meshes({testing::make_sphere({0, 0, 0}, 1, 0, 24, 48)});
     scene.camera = camera;
   }
 };
@@ -152,16 +153,12 @@ TEST(PathTracer, LightSamplingBsdfSamplingAndMisConvergeToTheSameImage) {
 
 TEST(PathTracer, MatchesCyclesOnTheReferenceCornellBox) {
   // ../shared/reference/cornell: Blender Cycles' 16,384-spp render of the scene described in
-  // cornell.json (authoritative), geometry from cornell.obj. 128², box filter 1 px, Cycles'
+  // cornell.json (authoritative), loaded from cornell.glb. 128², box filter 1 px, Cycles'
   // max_bounces 64 (65 scattering events), 256 spp: our RMSE must be within 1.5× of Cycles' own
   // at 256 spp, and the mean within noise.
-  Scene scene = testing::read_obj_triangles(test::shared_path("reference/cornell/cornell.obj"),
-                                            {{"white", 0}, {"red", 1}, {"green", 2}, {"light", 3}});
-  scene.name = "reference-cornell";
-  scene.materials = {{.name = "white", .diffuse = Rgb(0.8f), .emission = {}},
-                     {.name = "red", .diffuse = {0.63f, 0.065f, 0.05f}, .emission = {}},
-                     {.name = "green", .diffuse = {0.14f, 0.45f, 0.091f}, .emission = {}},
-                     {.name = "light", .diffuse = Rgb(0.f), .emission = Rgb(15.f)}};
+  // The glTF scene as a user would load it: every material carries KHR_materials_specular with
+  // specular 0 (purely diffuse) and the light KHR_materials_emissive_strength 15.
+  Scene scene = load_scene_file(test::shared_path("reference/cornell/cornell.glb"));
   // Pinhole at (0, 1, 3.9) looking at (0, 1, 0); 50 mm on a 36 mm wide sensor.
   Camera camera = testing::make_camera({0, 1, 3.9}, {0, 1, 0}, 128, 39.597752709049864);
   scene.camera = camera;

@@ -47,11 +47,16 @@ TEST(RenderCamera, FilterWeightsLeaveAUniformEmitterUniform) {
   // whatever the filter, negative Mitchell lobes included.
   Scene scene;
   scene.name = "wall";
-  scene.materials = {{.name = "emitter", .diffuse = Rgb(0), .emission = Rgb(2)}};
-  scene.meshes.push_back({.name = "wall",
-                          .positions = {{-50, -40, -1}, {60, -50, -1}, {50, 50, -1}, {-40, 60, -1}},
-                          .indices = {0, 1, 2, 0, 2, 3},
-                          .material = 0});
+  Material emitter;
+  emitter.name = "emitter";
+  emitter.model = EmissiveMaterial{};
+  emitter.emission = Rgb(2);
+  scene.materials = {emitter};
+  Mesh wall;
+  wall.name = "wall";
+  wall.positions = {{-50, -40, -1}, {60, -50, -1}, {50, 50, -1}, {-40, 60, -1}};
+  wall.indices = {0, 1, 2, 0, 2, 3};
+  scene.add_mesh(wall);
   Camera& c = scene.camera;
   c.film.width_px = 12;
   c.film.height_px = 10;

@@ -50,44 +50,4 @@ inline Camera make_camera(Point3d eye, Point3d target, int size, double hfov_deg
   return camera;
 }
 
-// The objects of a Wavefront OBJ file with triangular faces ("o", "v", "f", "usemtl"); each
-// object becomes a mesh whose material is looked up by name in `materials`.
-inline Scene read_obj_triangles(const std::string& path,
-                                const std::map<std::string, uint32_t>& materials) {
-  std::ifstream in(path);
-  if (!in) throw Error(path, "cannot open");
-  Scene scene;
-  std::vector<Point3f> positions;
-  std::map<uint32_t, uint32_t> local;  // global vertex index → index in the current mesh
-  std::string line;
-  while (std::getline(in, line)) {
-    std::istringstream words(line);
-    std::string tag;
-    words >> tag;
-    if (tag == "o") {
-      scene.meshes.emplace_back();
-      words >> scene.meshes.back().name;
-      local.clear();
-    } else if (tag == "v") {
-      Point3f p;
-      words >> p.x >> p.y >> p.z;
-      positions.push_back(p);
-    } else if (tag == "usemtl") {
-      std::string name;
-      words >> name;
-      scene.meshes.back().material = materials.at(name);
-    } else if (tag == "f") {
-      Mesh& mesh = scene.meshes.back();
-      std::string vertex;
-      while (words >> vertex) {
-        auto global = uint32_t(std::stoul(vertex) - 1);
-        auto [it, inserted] = local.try_emplace(global, uint32_t(mesh.positions.size()));
-        if (inserted) mesh.positions.push_back(positions.at(global));
-        mesh.indices.push_back(it->second);
-      }
-    }
-  }
-  return scene;
-}
-
 }  // namespace obscura::testing

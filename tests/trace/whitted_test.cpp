@@ -11,8 +11,12 @@ namespace obscura {
 namespace {
 
 Mesh quad(const char* name, uint32_t material, Point3f a, Point3f b, Point3f c, Point3f d) {
-  return {
-      .name = name, .positions = {a, b, c, d}, .indices = {0, 1, 2, 0, 2, 3}, .material = material};
+  Mesh m;
+  m.name = name;
+  m.positions = {a, b, c, d};
+  m.indices = {0, 1, 2, 0, 2, 3};
+  m.material = material;
+  return m;
 }
 
 std::shared_ptr<EmbreeDevice> device() {
@@ -33,10 +37,10 @@ Rgb centre_radiance(const TraceScene& scene, Point3d eye, Point3d target,
 Scene sky_over_floor(float s = 100) {
   Scene scene;
   scene.name = "sky";
-  scene.materials = {{.name = "floor", .diffuse = Rgb(0.5f), .emission = {}},
-                     {.name = "sky", .diffuse = Rgb(0.f), .emission = Rgb(1.f)}};
-  scene.meshes = {quad("floor", 0, {-s, 0, -s}, {-s, 0, s}, {s, 0, s}, {s, 0, -s}),
-                  quad("sky", 1, {-s, 2, -s}, {s, 2, -s}, {s, 2, s}, {-s, 2, s})};
+  scene.materials = {diffuse_material("floor", Rgb(0.5f)),
+                     diffuse_material("sky", Rgb(0.f), Rgb(1.f))};
+  scene.add_meshes({quad("floor", 0, {-s, 0, -s}, {-s, 0, s}, {s, 0, s}, {s, 0, -s}),
+                  quad("sky", 1, {-s, 2, -s}, {s, 2, -s}, {s, 2, s}, {-s, 2, s})});
   return scene;
 }
 
@@ -59,11 +63,11 @@ TEST(Whitted, GlassSlabTransmitsWhatFresnelLeaves) {
   // and bounces between them, T = (1 − R)² Σ R^2k = (1 − R)/(1 + R) with R = 0.04 → 0.9231.
   // The 1/η² radiance scaling on entry is undone on exit.
   Scene scene = sky_over_floor();
-  scene.materials.push_back({.name = "glass", .diffuse = Rgb(0.f), .emission = {}});
+  scene.materials.push_back(diffuse_material("glass", Rgb(0.f)));
   const float s = 100;
-  scene.meshes.push_back(
+  scene.add_mesh(
       quad("slab top", 2, {-s, 1.2f, -s}, {-s, 1.2f, s}, {s, 1.2f, s}, {s, 1.2f, -s}));
-  scene.meshes.push_back(quad("slab bottom", 2, {-s, 1, -s}, {s, 1, -s}, {s, 1, s}, {-s, 1, s}));
+  scene.add_mesh(quad("slab bottom", 2, {-s, 1, -s}, {s, 1, -s}, {s, 1, s}, {-s, 1, s}));
   TraceScene trace_scene(scene, device());
   trace_scene.set_material(2, TraceMaterial(DielectricBsdf(1.5f, 0)));
   trace_scene.set_material(0, TraceMaterial(LambertianBsdf{Rgb(0.f)}));  // no light from below
@@ -115,9 +119,9 @@ namespace {
 TraceScene lone_floor() {
   Scene scene;
   scene.name = "floor";
-  scene.materials = {{.name = "floor", .diffuse = Rgb(0.5f), .emission = {}}};
+  scene.materials = {diffuse_material("floor", Rgb(0.5f))};
   const float s = 100;
-  scene.meshes = {quad("floor", 0, {-s, 0, -s}, {-s, 0, s}, {s, 0, s}, {s, 0, -s})};
+  scene.add_meshes({quad("floor", 0, {-s, 0, -s}, {-s, 0, s}, {s, 0, s}, {s, 0, -s})});
   return TraceScene(scene, device());
 }
 

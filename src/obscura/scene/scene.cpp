@@ -1,43 +1,142 @@
 #include "obscura/scene/scene.h"
 
 #include <cmath>
+#include <variant>
 
 #include "obscura/math/error.h"
 
 namespace obscura {
 
-size_t Scene::triangle_count() const {
-  size_t n = 0;
-  for (const Mesh& m : meshes) n += m.triangle_count();
-  return n;
+namespace {
+
+bool finite(Point3f p) {
+  return std::isfinite(p.x) && std::isfinite(p.y) && std::isfinite(p.z);
+}
+
+template <typename T>
+void check_attribute_size(const std::string& where, const char* attribute,
+                          const std::vector<T>& values, size_t vertex_count) {
+  if (!values.empty() && values.size() != vertex_count)
+    throw Error(where, std::string(attribute) + " has " + std::to_string(values.size()) +
+                           " entries for " + std::to_string(vertex_count) + " vertices");
+}
+
+void validate_mesh(const Mesh& m, const std::string& where, size_t material_count) {
+  if (m.indices.size() % 3 != 0)
+    throw Error(where,
+                "index count " + std::to_string(m.indices.size()) + " is not a multiple of 3");
+  for (size_t i = 0; i < m.indices.size(); ++i)
+    if (m.indices[i] >= m.positions.size())
+      throw Error(where, "index " + std::to_string(i) + " = " + std::to_string(m.indices[i]) +
+                             " is past the vertex count " + std::to_string(m.positions.size()));
+  for (size_t i = 0; i < m.positions.size(); ++i)
+    if (!finite(m.positions[i]))
+      throw Error(where, "vertex " + std::to_string(i) + " position is not finite");
+  check_attribute_size(where, "normals", m.normals, m.positions.size());
+  check_attribute_size(where, "uvs", m.uvs, m.positions.size());
+  check_attribute_size(where, "tangents", m.tangents, m.positions.size());
+  check_attribute_size(where, "colors", m.colors, m.positions.size());
+  if (m.material >= material_count)
+    throw Error(where, "material index " + std::to_string(m.material) +
+                           " is past the material count " + std::to_string(material_count));
+}
+
+void check_texture(const TextureRef& ref, const std::string& where, const char* slot,
+                   size_t texture_count) {
+  if (ref.texture < -1 || (ref.texture >= 0 && size_t(ref.texture) >= texture_count))
+    throw Error(where, std::string(slot) + " texture index " + std::to_string(ref.texture) +
+                           " is past the texture count " + std::to_string(texture_count));
+}
+
+void validate_material(const Material& m, const std::string& where, size_t texture_count) {
+  check_texture(m.emission_texture, where, "emission", texture_count);
+  check_texture(m.normal_texture, where, "normal", texture_count);
+  if (auto* d = std::get_if<DiffuseMaterial>(&m.model))
+    check_texture(d->reflectance_texture, where, "reflectance", texture_count);
+  if (auto* p = std::get_if<PhongMaterial>(&m.model))
+    check_texture(p->diffuse_texture, where, "diffuse", texture_count);
+  if (auto* mr = std::get_if<MetallicRoughnessMaterial>(&m.model)) {
+    check_texture(mr->base_color_texture, where, "base colour", texture_count);
+    check_texture(mr->metallic_roughness_texture, where, "metallic-roughness", texture_count);
+    check_texture(mr->occlusion_texture, where, "occlusion", texture_count);
+  }
+  Rgb e = m.emission;
+  if (!(std::isfinite(e.r) && std::isfinite(e.g) && std::isfinite(e.b)) || e.r < 0 || e.g < 0 ||
+      e.b < 0)
+    throw Error(where, "emission must be finite and non-negative");
+}
+
+}  // namespace
+
+uint32_t Scene::add_mesh(Mesh mesh, const Transform& world_from_object) {
+  auto index = uint32_t(meshes.size());
+  Instance instance;
+  instance.name = mesh.name;
+  instance.mesh = index;
+  instance.world_from_object = world_from_object;
+  meshes.push_back(std::move(mesh));
+  instances.push_back(std::move(instance));
+  return index;
+}
+
+void Scene::add_meshes(std::vector<Mesh> new_meshes) {
+  for (Mesh& mesh : new_meshes) add_mesh(std::move(mesh));
+}
+
+SceneStats Scene::stats() const {
+  SceneStats s;
+  s.meshes = meshes.size();
+  s.instances = instances.size();
+  s.materials = materials.size();
+  s.textures = textures.size();
+  s.lights = lights.size();
+  s.cameras = cameras.size();
+  for (const Mesh& m : meshes) {
+    s.unique_triangles += m.triangle_count();
+    s.vertices += m.vertex_count();
+    s.memory_bytes += sizeof(Mesh) + m.memory_bytes();
+  }
+  for (const Instance& instance : instances) {
+    if (instance.mesh >= meshes.size()) continue;
+    const Mesh& m = meshes[instance.mesh];
+    s.triangles += m.triangle_count();
+    uint32_t material = material_of(instance);
+    if (material < materials.size() && !materials[material].emission.is_black())
+      ++s.emissive_meshes;
+    s.memory_bytes += sizeof(Instance) + instance.motion.capacity() * sizeof(TransformKey);
+  }
+  for (const Texture& t : textures) s.memory_bytes += sizeof(Texture) + t.memory_bytes();
+  s.memory_bytes += materials.capacity() * sizeof(Material);
+  return s;
 }
 
 Bounds3f Scene::bounds() const {
   Bounds3f b;
-  for (const Mesh& m : meshes)
-    for (Point3f p : m.positions) b = unite(b, p);
+  for (const Instance& instance : instances) {
+    if (instance.mesh >= meshes.size()) continue;
+    for (Point3f p : meshes[instance.mesh].positions) b = unite(b, instance.world_from_object(p));
+  }
   return b;
 }
 
 void Scene::validate() const {
-  for (const Mesh& m : meshes) {
-    std::string where = "scene '" + name + "', mesh '" + m.name + "'";
-    if (m.indices.size() % 3 != 0)
-      throw Error(where, "index count " + std::to_string(m.indices.size()) +
-                             " is not a multiple of 3");
-    for (size_t i = 0; i < m.indices.size(); ++i)
-      if (m.indices[i] >= m.positions.size())
-        throw Error(where, "index " + std::to_string(i) + " = " + std::to_string(m.indices[i]) +
-                               " is past the vertex count " + std::to_string(m.positions.size()));
-    for (size_t i = 0; i < m.positions.size(); ++i) {
-      Point3f p = m.positions[i];
-      if (!std::isfinite(p.x) || !std::isfinite(p.y) || !std::isfinite(p.z))
-        throw Error(where, "vertex " + std::to_string(i) + " is not finite");
-    }
-    if (m.material >= materials.size())
-      throw Error(where, "material index " + std::to_string(m.material) +
-                             " is past the material count " + std::to_string(materials.size()));
-  }
+  std::string scene_where = "scene '" + name + "'";
+  for (const Mesh& m : meshes)
+    validate_mesh(m, scene_where + ", mesh '" + m.name + "'", materials.size());
+  for (size_t i = 0; i < instances.size(); ++i)
+    if (instances[i].mesh >= meshes.size())
+      throw Error(scene_where + ", instance '" + instances[i].name + "'",
+                  "mesh index " + std::to_string(instances[i].mesh) + " is past the mesh count " +
+                      std::to_string(meshes.size()));
+  for (const Instance& instance : instances)
+    if (instance.material >= 0 && size_t(instance.material) >= materials.size())
+      throw Error(scene_where + ", instance '" + instance.name + "'",
+                  "material index " + std::to_string(instance.material) +
+                      " is past the material count " + std::to_string(materials.size()));
+  for (const Material& m : materials)
+    validate_material(m, scene_where + ", material '" + m.name + "'", textures.size());
+  if (environment && environment->texture >= 0 && size_t(environment->texture) >= textures.size())
+    throw Error(scene_where + ", environment", "texture index is past the texture count");
   camera.validate();
 }
 

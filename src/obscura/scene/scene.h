@@ -1,43 +1,73 @@
-// The scene: plain authoring data that both renderers read and compile into their own forms.
+// The scene: plain authoring data that both renderers read and compile into their own forms
+// (the tracer into Embree geometry, the rasterizer into vertex arrays). Loaders in io/ fill it;
+// nothing in it knows about files or renderers.
+//
+// Meshes live in object space and are placed by instances. Materials, textures, lights and
+// cameras are referred to by index. Units: metres, seconds, linear Rec.709 RGB.
 #pragma once
 
 #include <cstdint>
+#include <optional>
 #include <string>
 #include <vector>
 
 #include "obscura/camera/camera.h"
-#include "obscura/color/rgb.h"
 #include "obscura/math/bounds.h"
-#include "obscura/math/vector.h"
+#include "obscura/scene/instance.h"
+#include "obscura/scene/light.h"
+#include "obscura/scene/material.h"
+#include "obscura/scene/mesh.h"
+#include "obscura/scene/texture.h"
 
 namespace obscura {
 
-struct Material {
-  std::string name;
-  Rgb diffuse{0.8f, 0.8f, 0.8f};  // Lambertian albedo, linear, each in [0, 1]
-  Rgb emission;                   // emitted radiance (W·sr⁻¹·m⁻²), from the front face only
+// Render settings a scene file may suggest; the command line overrides them.
+struct SceneRenderSettings {
+  std::optional<int> width, height;  // pixels
+  std::optional<int> samples_per_pixel;
+  std::optional<uint64_t> seed;
 };
 
-// Indexed triangles in world space. Front faces wind counter-clockwise seen from outside:
-// the geometric normal is (p1 − p0) × (p2 − p0).
-struct Mesh {
-  std::string name;
-  std::vector<Point3f> positions;
-  std::vector<uint32_t> indices;  // three per triangle
-  uint32_t material = 0;          // index into Scene::materials
-
-  size_t triangle_count() const { return indices.size() / 3; }
+// Counts for `obscura info` and benchmarks.
+struct SceneStats {
+  size_t triangles = 0;         // as rendered: every instance counts its mesh's triangles
+  size_t unique_triangles = 0;  // stored: each mesh counted once
+  size_t vertices = 0;          // stored
+  size_t meshes = 0, instances = 0, materials = 0, textures = 0;
+  size_t lights = 0;           // point, spot and directional lights
+  size_t emissive_meshes = 0;  // instances whose material emits (area lights)
+  size_t cameras = 0;
+  size_t memory_bytes = 0;  // heap bytes of meshes and textures
 };
 
 struct Scene {
   std::string name;
-  std::vector<Mesh> meshes;
+  std::vector<Mesh> meshes;         // object space
+  std::vector<Instance> instances;  // what is rendered: meshes without an instance are not
   std::vector<Material> materials;
-  Camera camera;
+  std::vector<Texture> textures;
+  std::vector<Light> lights;
+  std::optional<Environment> environment;
+  std::vector<Camera> cameras;       // every camera the file names (Camera::name), in file order
+  Camera camera;                     // the camera to render with (by default cameras.front())
+  SceneRenderSettings render;
+  std::vector<std::string> warnings;  // what the loader skipped or approximated, for the user
 
-  size_t triangle_count() const;
+  // The material an instance is drawn with: its override, else its mesh's.
+  uint32_t material_of(const Instance& instance) const {
+    return instance.material >= 0 ? uint32_t(instance.material) : meshes[instance.mesh].material;
+  }
+  // Adds `mesh` with one instance at `world_from_object`; returns the mesh index.
+  uint32_t add_mesh(Mesh mesh, const Transform& world_from_object = {});
+  // Adds each mesh with one instance in place (world space = object space).
+  void add_meshes(std::vector<Mesh> meshes);
+
+  SceneStats stats() const;
+  size_t triangle_count() const { return stats().triangles; }
+  // World-space bounds of all instances at their time-0 pose.
   Bounds3f bounds() const;
-  // Throws obscura::Error naming the first mesh, index or material reference that is invalid.
+  // Throws obscura::Error naming the first mesh, index, attribute, reference or value that is
+  // invalid (indices past the vertex count, NaN positions, dangling material or texture indices).
   void validate() const;
 };
 

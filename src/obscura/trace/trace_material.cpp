@@ -1,9 +1,59 @@
 #include "obscura/trace/trace_material.h"
 
+#include <variant>
+
+
 namespace obscura {
 
-TraceMaterial TraceMaterial::from_scene(const Material& material) {
-  return TraceMaterial(LambertianBsdf{material.diffuse}, material.emission);
+TraceMaterial::TraceMaterial(const Material& material, const std::vector<Texture>* textures)
+    : emission(material.emission), model_(material.model), textures_(textures) {}
+
+Rgb TraceMaterial::texture_rgb(const TextureRef& ref, const SurfaceHit& hit) const {
+  if (!ref.valid() || !textures_) return Rgb(1.f);
+  Vector4f v = sample_texture((*textures_)[ref.texture], hit.uv);
+  return {v.x, v.y, v.z};
+}
+
+AnyBsdf TraceMaterial::bsdf_at(const SurfaceHit& hit) const {
+  if (fixed_) return *fixed_;
+  struct Visitor {
+    const TraceMaterial& self;
+    const SurfaceHit& hit;
+    AnyBsdf operator()(const DiffuseMaterial& m) const {
+      return LambertianBsdf{m.reflectance * self.texture_rgb(m.reflectance_texture, hit)};
+    }
+    AnyBsdf operator()(const PhongMaterial& m) const {
+      return PhongBsdf(m.diffuse * self.texture_rgb(m.diffuse_texture, hit), m.specular,
+                       m.shininess, m.blinn);
+    }
+    AnyBsdf operator()(const ConductorMaterial& m) const {
+      return ConductorBsdf(m.eta, m.k, Ggx::alpha_from_roughness(m.roughness));
+    }
+    AnyBsdf operator()(const DielectricMaterial& m) const {
+      return DielectricBsdf(m.ior, Ggx::alpha_from_roughness(m.roughness), m.transmittance);
+    }
+    AnyBsdf operator()(const MetallicRoughnessMaterial& m) const {
+      // KHR_materials_specular with a zero specular: no specular layer at all, so nothing of
+      // the incoming light is held back for one (Blender exports its Diffuse BSDF this way).
+      if (m.purely_diffuse())
+        return LambertianBsdf{m.base_color * self.texture_rgb(m.base_color_texture, hit)};
+      MetallicRoughnessParameters p{.base_color = m.base_color,
+                                    .metallic = m.metallic,
+                                    .roughness = m.roughness,
+                                    .specular = m.specular,
+                                    .specular_color = m.specular_color,
+                                    .ior = m.ior};
+      p.base_color = p.base_color * self.texture_rgb(m.base_color_texture, hit);
+      if (m.metallic_roughness_texture.valid()) {
+        Rgb mr = self.texture_rgb(m.metallic_roughness_texture, hit);  // G roughness, B metal
+        p.roughness *= mr.g;
+        p.metallic *= mr.b;
+      }
+      return MetallicRoughnessBsdf(p);
+    }
+    AnyBsdf operator()(const EmissiveMaterial&) const { return LambertianBsdf{Rgb(0.f)}; }
+  };
+  return std::visit(Visitor{*this, hit}, model_);
 }
 
 }  // namespace obscura

@@ -38,7 +38,8 @@ class TraceScene {
 
  private:
   EmbreeScene embree_;
-  std::vector<Mesh> meshes_;
+  std::vector<Mesh> meshes_;  // one per instance, flattened to world space
+  std::vector<Texture> textures_;  // what the materials sample
   std::vector<TraceMaterial> materials_;
   LightSet lights_;
   float ray_epsilon_ = 1e-4f;

@@ -1,0 +1,221 @@
+#include "obscura/io/gltf_animation.h"
+
+#include <tiny_gltf.h>
+
+#include <algorithm>
+#include <cmath>
+#include <cstring>
+#include <set>
+
+#include "obscura/math/error.h"
+
+namespace obscura {
+
+Matrix4 trs_matrix(Vector3d t, Quaternion q, Vector3d s) {
+  double x = q.x, y = q.y, z = q.z, w = q.w;
+  // The rotation matrix of a unit quaternion, columns scaled by s.
+  return Matrix4::from_rows({{
+      {(1 - 2 * (y * y + z * z)) * s.x, 2 * (x * y - z * w) * s.y, 2 * (x * z + y * w) * s.z, t.x},
+      {2 * (x * y + z * w) * s.x, (1 - 2 * (x * x + z * z)) * s.y, 2 * (y * z - x * w) * s.z, t.y},
+      {2 * (x * z - y * w) * s.x, 2 * (y * z + x * w) * s.y, (1 - 2 * (x * x + y * y)) * s.z, t.z},
+      {0, 0, 0, 1},
+  }});
+}
+
+Quaternion slerp(Quaternion a, Quaternion b, double t) {
+  double d = a.x * b.x + a.y * b.y + a.z * b.z + a.w * b.w;
+  if (d < 0) b = {-b.x, -b.y, -b.z, -b.w}, d = -d;
+  double wa = 1 - t, wb = t;
+  if (d < 0.9995) {
+    double theta = std::acos(d), sin_theta = std::sin(theta);
+    wa = std::sin((1 - t) * theta) / sin_theta;
+    wb = std::sin(t * theta) / sin_theta;
+  }
+  Quaternion r{wa * a.x + wb * b.x, wa * a.y + wb * b.y, wa * a.z + wb * b.z, wa * a.w + wb * b.w};
+  double n = std::sqrt(r.x * r.x + r.y * r.y + r.z * r.z + r.w * r.w);
+  return {r.x / n, r.y / n, r.z / n, r.w / n};
+}
+
+Matrix4 node_matrix(const tinygltf::Node& node) {
+  if (node.matrix.size() == 16) {
+    Matrix4 m;  // glTF stores column-major
+    for (int c = 0; c < 4; ++c)
+      for (int r = 0; r < 4; ++r) m.m[r][c] = node.matrix[4 * c + r];
+    return m;
+  }
+  Vector3d t, s(1, 1, 1);
+  Quaternion q;
+  if (node.translation.size() == 3)
+    t = {node.translation[0], node.translation[1], node.translation[2]};
+  if (node.scale.size() == 3) s = {node.scale[0], node.scale[1], node.scale[2]};
+  if (node.rotation.size() == 4)
+    q = {node.rotation[0], node.rotation[1], node.rotation[2], node.rotation[3]};
+  return trs_matrix(t, q, s);
+}
+
+std::optional<Transform> invertible(const Matrix4& m) {
+  std::optional<Matrix4> inv = inverse(m);
+  if (!inv) return std::nullopt;
+  return Transform(m, *inv);
+}
+
+Transform without_scale(const Matrix4& m) {
+  // Normalize the three basis columns; Gram-Schmidt keeps them orthonormal under shear.
+  Vector3d x(m.m[0][0], m.m[1][0], m.m[2][0]), y(m.m[0][1], m.m[1][1], m.m[2][1]);
+  if (length(x) == 0 || length(y) == 0)
+    return Transform::translate({m.m[0][3], m.m[1][3], m.m[2][3]});
+  x = normalize(x);
+  y = normalize(y - x * dot(x, y));
+  Vector3d z = cross(x, y);
+  Matrix4 r = Matrix4::from_rows({{{x.x, y.x, z.x, m.m[0][3]},
+                                   {x.y, y.y, z.y, m.m[1][3]},
+                                   {x.z, y.z, z.z, m.m[2][3]},
+                                   {0, 0, 0, 1}}});
+  return Transform(r);
+}
+
+NodeAnimations::NodeAnimations(const tinygltf::Model& model, const std::string& file,
+                               std::vector<std::string>& warnings)
+    : model_(&model), parent_(model.nodes.size(), -1) {
+  for (size_t n = 0; n < model.nodes.size(); ++n)
+    for (int child : model.nodes[n].children)
+      if (child >= 0 && size_t(child) < parent_.size()) parent_[child] = int(n);
+  if (model.animations.empty()) return;
+  if (model.animations.size() > 1)
+    warnings.push_back(file + ": only the first of " + std::to_string(model.animations.size()) +
+                       " animations is used");
+  const tinygltf::Animation& animation = model.animations[0];
+  for (size_t c = 0; c < animation.channels.size(); ++c) {
+    const tinygltf::AnimationChannel& ch = animation.channels[c];
+    std::string where = file + ": animations[0].channels[" + std::to_string(c) + "]";
+    if (ch.target_node < 0 || size_t(ch.target_node) >= model.nodes.size())
+      throw Error(where, "target node is out of range");
+    if (ch.sampler < 0 || size_t(ch.sampler) >= animation.samplers.size())
+      throw Error(where, "sampler index is out of range");
+    int width = ch.target_path == "rotation" ? 4 : 3;
+    if (ch.target_path != "translation" && ch.target_path != "rotation" &&
+        ch.target_path != "scale") {
+      warnings.push_back(where + ": '" + ch.target_path + "' animation is not supported");
+      continue;
+    }
+    const tinygltf::AnimationSampler& s = animation.samplers[ch.sampler];
+    // Both accessors must be float: read them through the buffer with range checks.
+    auto read = [&](int index, int components) {
+      if (index < 0 || size_t(index) >= model.accessors.size())
+        throw Error(where, "sampler accessor index is out of range");
+      const tinygltf::Accessor& a = model.accessors[index];
+      if (a.componentType != TINYGLTF_COMPONENT_TYPE_FLOAT ||
+          tinygltf::GetNumComponentsInType(uint32_t(a.type)) != components || a.bufferView < 0 ||
+          size_t(a.bufferView) >= model.bufferViews.size())
+        throw Error(where, "animation data must be float accessors with a buffer view");
+      const tinygltf::BufferView& v = model.bufferViews[a.bufferView];
+      if (v.buffer < 0 || size_t(v.buffer) >= model.buffers.size())
+        throw Error(where, "buffer index is out of range");
+      size_t stride = v.byteStride ? v.byteStride : 4 * components;
+      size_t begin = v.byteOffset + a.byteOffset;
+      const std::vector<unsigned char>& data = model.buffers[v.buffer].data;
+      if (a.count == 0 || begin + stride * (a.count - 1) + 4 * components > data.size())
+        throw Error(where, "animation data runs past the end of its buffer");
+      std::vector<double> out;
+      for (size_t i = 0; i < a.count; ++i)
+        for (int k = 0; k < components; ++k) {
+          float f;
+          std::memcpy(&f, data.data() + begin + i * stride + 4 * k, 4);
+          out.push_back(f);
+        }
+      return out;
+    };
+    Channel channel;
+    channel.times = read(s.input, 1);
+    std::vector<double> values = read(s.output, width);
+    channel.step = s.interpolation == "STEP";
+    if (s.interpolation == "CUBICSPLINE") {
+      // Keep each key's value, dropping the tangents: linear between keys.
+      warnings.push_back(where + ": CUBICSPLINE interpolation is approximated as LINEAR");
+      for (size_t k = 0; k < channel.times.size() && (3 * k + 2) * width <= values.size(); ++k)
+        channel.values.insert(channel.values.end(), values.begin() + (3 * k + 1) * width,
+                              values.begin() + (3 * k + 2) * width);
+    } else {
+      channel.values = std::move(values);
+    }
+    if (channel.values.size() != channel.times.size() * width)
+      throw Error(where, "sampler input and output counts differ");
+    for (size_t k = 1; k < channel.times.size(); ++k)
+      if (!(channel.times[k] > channel.times[k - 1])) throw Error(where, "key times must increase");
+    NodeChannels& node = channels_[ch.target_node];
+    (ch.target_path == "translation" ? node.translation
+     : ch.target_path == "rotation"  ? node.rotation
+                                     : node.scale) = std::move(channel);
+  }
+}
+
+namespace {
+
+// The value of a channel at `time`, `width` numbers, clamped outside the key range.
+std::vector<double> sample(const std::vector<double>& times, const std::vector<double>& values,
+                           bool step, int width, double time) {
+  size_t hi = std::upper_bound(times.begin(), times.end(), time) - times.begin();
+  if (hi == 0) return {values.begin(), values.begin() + width};
+  if (hi == times.size() || step)
+    return {values.begin() + (hi - 1) * width, values.begin() + hi * width};
+  double t = (time - times[hi - 1]) / (times[hi] - times[hi - 1]);
+  const double* a = &values[(hi - 1) * width];
+  const double* b = &values[hi * width];
+  if (width == 4) {
+    Quaternion q = slerp({a[0], a[1], a[2], a[3]}, {b[0], b[1], b[2], b[3]}, t);
+    return {q.x, q.y, q.z, q.w};
+  }
+  std::vector<double> r(width);
+  for (int i = 0; i < width; ++i) r[i] = a[i] + (b[i] - a[i]) * t;
+  return r;
+}
+
+}  // namespace
+
+Matrix4 NodeAnimations::local_at(int node, double time) const {
+  const tinygltf::Node& n = model_->nodes[node];
+  auto found = channels_.find(node);
+  if (found == channels_.end()) return node_matrix(n);
+  const NodeChannels& c = found->second;
+  Vector3d t, s(1, 1, 1);
+  Quaternion q;
+  if (n.translation.size() == 3) t = {n.translation[0], n.translation[1], n.translation[2]};
+  if (n.scale.size() == 3) s = {n.scale[0], n.scale[1], n.scale[2]};
+  if (n.rotation.size() == 4) q = {n.rotation[0], n.rotation[1], n.rotation[2], n.rotation[3]};
+  if (c.translation) {
+    auto v = sample(c.translation->times, c.translation->values, c.translation->step, 3, time);
+    t = {v[0], v[1], v[2]};
+  }
+  if (c.rotation) {
+    auto v = sample(c.rotation->times, c.rotation->values, c.rotation->step, 4, time);
+    q = {v[0], v[1], v[2], v[3]};
+  }
+  if (c.scale) {
+    auto v = sample(c.scale->times, c.scale->values, c.scale->step, 3, time);
+    s = {v[0], v[1], v[2]};
+  }
+  return trs_matrix(t, q, s);
+}
+
+std::vector<TransformKey> NodeAnimations::world_keys(int node) const {
+  std::set<double> times;
+  int depth = 0;
+  for (int n = node; n >= 0 && depth < 256; n = parent_[n], ++depth) {
+    auto found = channels_.find(n);
+    if (found == channels_.end()) continue;
+    for (const auto* c :
+         {&found->second.translation, &found->second.rotation, &found->second.scale})
+      if (*c) times.insert((*c)->times.begin(), (*c)->times.end());
+  }
+  std::vector<TransformKey> keys;
+  for (double time : times) {
+    Matrix4 m = Matrix4::identity();
+    depth = 0;
+    for (int n = node; n >= 0 && depth < 256; n = parent_[n], ++depth) m = local_at(n, time) * m;
+    std::optional<Transform> t = invertible(m);
+    if (t) keys.push_back({time, *t});
+  }
+  return keys;
+}
+
+}  // namespace obscura

@@ -1,0 +1,63 @@
+// glTF node transforms and their animation: local TRS/matrix → Matrix4, and keyframed world
+// transforms for motion blur from the first animation's translation/rotation/scale channels.
+#pragma once
+
+#include <map>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "obscura/math/matrix4.h"
+#include "obscura/math/transform.h"
+#include "obscura/scene/instance.h"
+
+namespace tinygltf {
+class Model;
+class Node;
+}  // namespace tinygltf
+
+namespace obscura {
+
+struct Quaternion {
+  double x = 0, y = 0, z = 0, w = 1;
+};
+
+// Translation · rotation · scale, as glTF composes a node's local transform.
+Matrix4 trs_matrix(Vector3d translation, Quaternion rotation, Vector3d scale);
+// Spherical linear interpolation along the shorter arc; the result is unit length.
+Quaternion slerp(Quaternion a, Quaternion b, double t);
+// The node's local transform (its matrix, or its TRS).
+Matrix4 node_matrix(const tinygltf::Node& node);
+// The transform for an invertible matrix, nothing for a singular one (a node scaled to zero).
+std::optional<Transform> invertible(const Matrix4& m);
+// Rotation and translation only (cameras and lights ignore scale).
+Transform without_scale(const Matrix4& m);
+
+class NodeAnimations {
+ public:
+  NodeAnimations() = default;
+  // Reads animations[0]; unsupported channels (morph weights) are reported in `warnings`.
+  NodeAnimations(const tinygltf::Model& model, const std::string& file,
+                 std::vector<std::string>& warnings);
+
+  // The node's local transform at `time` (its static TRS where no channel animates it).
+  Matrix4 local_at(int node, double time) const;
+  // Keyframes of the node's object→world transform at every key time of it and its ancestors;
+  // empty when nothing on its path to the root is animated.
+  std::vector<TransformKey> world_keys(int node) const;
+
+ private:
+  struct Channel {
+    std::vector<double> times;
+    std::vector<double> values;  // 3 or 4 per key
+    bool step = false;
+  };
+  struct NodeChannels {
+    std::optional<Channel> translation, rotation, scale;
+  };
+  const tinygltf::Model* model_ = nullptr;
+  std::map<int, NodeChannels> channels_;
+  std::vector<int> parent_;  // −1 for roots
+};
+
+}  // namespace obscura

@@ -1,0 +1,396 @@
+#include "obscura/io/json_scene.h"
+
+#include <algorithm>
+#include <filesystem>
+#include <map>
+#include <numbers>
+
+#include "obscura/camera/frames.h"
+#include "obscura/io/camera_mapping.h"
+#include "obscura/io/gltf_animation.h"
+#include "obscura/io/json_reader.h"
+#include "obscura/io/scene_loader.h"
+#include "obscura/io/texture_loader.h"
+#include "obscura/math/error.h"
+#include "obscura/scene/shapes.h"
+
+namespace obscura {
+
+namespace {
+
+constexpr double kRadiansPerDegree = std::numbers::pi / 180;
+
+Point3f point(Vector3d v) {
+  return {float(v.x), float(v.y), float(v.z)};
+}
+
+class JsonSceneReader {
+ public:
+  explicit JsonSceneReader(std::string path)
+      : path_(std::move(path)), directory_(std::filesystem::path(path_).parent_path()) {}
+
+  Scene read() {
+    nlohmann::ordered_json document = parse_json_file(path_);
+    JsonReader root(document, path_, "$");
+    scene_.name = root.string("name", std::filesystem::path(path_).stem().string());
+    if (root.has("render")) read_render(root.object("render"));
+    if (root.has("materials")) read_materials(root.object("materials"));
+    for (JsonReader& object : root.objects("objects")) read_object(object);
+    for (JsonReader& light : root.objects("lights")) read_light(light);
+    if (root.has("environment")) read_environment(root.object("environment"));
+    for (JsonReader& camera : root.objects("cameras"))
+      scene_.cameras.push_back(camera_from_json(camera));
+    std::string active = root.string("camera", "");
+    root.string("description", "");  // free text for people
+    root.finish();
+    finish_cameras(scene_, active, path_ + ": $.camera");
+    return std::move(scene_);
+  }
+
+ private:
+  std::string resolve(const std::string& relative) const {
+    std::filesystem::path p(relative);
+    return (p.is_absolute() ? p : directory_ / p).lexically_normal().string();
+  }
+
+  void read_render(JsonReader json) {
+    if (json.has("width")) scene_.render.width = json.integer("width", 0, 1, 1 << 16);
+    if (json.has("height")) scene_.render.height = json.integer("height", 0, 1, 1 << 16);
+    if (json.has("spp")) scene_.render.samples_per_pixel = json.integer("spp", 0, 1, 1 << 24);
+    if (json.has("seed")) scene_.render.seed = uint64_t(json.integer("seed", 0, 0, 1 << 30));
+    json.finish();
+  }
+
+  TextureRef texture(JsonReader& json, const std::string& key, TextureEncoding encoding) {
+    if (!json.has(key)) return {};
+    std::string file = resolve(json.string(key));
+    auto found = textures_.find({file, encoding});
+    if (found != textures_.end()) return {found->second, 0};
+    std::error_code ec;
+    if (!std::filesystem::is_regular_file(file, ec))
+      json.fail(key, "texture '" + file + "' does not exist");
+    Texture t = read_texture(file, encoding);
+    auto index = int32_t(scene_.textures.size());
+    scene_.textures.push_back(std::move(t));
+    textures_[{file, encoding}] = index;
+    return {index, 0};
+  }
+
+  void read_materials(JsonReader json) {
+    // A map from name to material; read every key, in the file's order of names.
+    for (const std::string& name : json.keys()) {
+      JsonReader m = json.object(name);
+      material_index_[name] = uint32_t(scene_.materials.size());
+      scene_.materials.push_back(read_material(m, name));
+    }
+    json.finish();
+  }
+
+  Material read_material(JsonReader& json, const std::string& name) {
+    Material m;
+    m.name = name;
+    std::string type = json.string("type");
+    if (type == "diffuse") {
+      DiffuseMaterial d;
+      d.reflectance = json.rgb("reflectance", d.reflectance);
+      d.reflectance_texture = texture(json, "reflectance_texture", TextureEncoding::kSrgb);
+      m.model = d;
+    } else if (type == "phong") {
+      PhongMaterial p;
+      p.ambient = json.rgb("ambient", p.ambient);
+      p.diffuse = json.rgb("diffuse", p.diffuse);
+      p.specular = json.rgb("specular", p.specular);
+      p.shininess = float(json.number_in("shininess", 0, 0, 1e6));
+      p.diffuse_texture = texture(json, "diffuse_texture", TextureEncoding::kSrgb);
+      p.blinn = json.boolean("blinn", true);
+      m.model = p;
+    } else if (type == "conductor") {
+      ConductorMaterial c;
+      c.eta = json.rgb("eta", c.eta);
+      c.k = json.rgb("k", c.k);
+      c.roughness = float(json.number_in("roughness", 0, 0, 1));
+      m.model = c;
+    } else if (type == "dielectric") {
+      DielectricMaterial d;
+      d.ior = float(json.number_in("ior", 1.5, 1e-3, 10));
+      d.roughness = float(json.number_in("roughness", 0, 0, 1));
+      d.transmittance = json.rgb("transmittance", d.transmittance);
+      m.model = d;
+    } else if (type == "metallic-roughness") {
+      MetallicRoughnessMaterial mr;
+      mr.base_color = json.rgb("base_color", mr.base_color);
+      mr.base_color_texture = texture(json, "base_color_texture", TextureEncoding::kSrgb);
+      mr.metallic = float(json.number_in("metallic", 1, 0, 1));
+      mr.roughness = float(json.number_in("roughness", 1, 0, 1));
+      mr.metallic_roughness_texture =
+          texture(json, "metallic_roughness_texture", TextureEncoding::kLinear);
+      mr.specular = float(json.number_in("specular", 1, 0, 1));
+      mr.specular_color = json.rgb("specular_color", mr.specular_color);
+      mr.ior = float(json.number_in("ior", 1.5, 1, 10));
+      m.model = mr;
+    } else if (type == "emissive") {
+      m.model = EmissiveMaterial{};
+    } else {
+      json.fail("type", "unknown material type '" + type +
+                            "'; expected diffuse, phong, conductor, dielectric, "
+                            "metallic-roughness or emissive");
+    }
+    m.emission =
+        json.rgb("emission", Rgb()) * float(json.number_in("emission_strength", 1, 0, 1e9));
+    m.emission_texture = texture(json, "emission_texture", TextureEncoding::kSrgb);
+    m.normal_texture = texture(json, "normal_texture", TextureEncoding::kLinear);
+    m.double_sided = json.boolean("double_sided", true);
+    json.finish();
+    return m;
+  }
+
+  uint32_t material(JsonReader& json, const std::string& key) {
+    std::string name = json.string(key);
+    auto found = material_index_.find(name);
+    if (found == material_index_.end())
+      json.fail(key, "no material named '" + name + "' in $.materials");
+    return found->second;
+  }
+
+  // {"translate": [x,y,z], "rotate_degrees": [x,y,z], "scale": s | [x,y,z]} applied as
+  // T · Rz · Ry · Rx · S, or {"matrix": 16 numbers, row-major}.
+  Transform transform(JsonReader json) {
+    if (json.has("matrix")) {
+      std::vector<double> v = json.numbers("matrix", 16);
+      Matrix4 m;
+      for (int i = 0; i < 16; ++i) m.m[i / 4][i % 4] = v[i];
+      json.finish();
+      std::optional<Matrix4> inv = inverse(m);
+      if (!inv) json.fail("matrix", "the matrix is singular");
+      return Transform(m, *inv);
+    }
+    Vector3d t = json.vector3("translate", {0, 0, 0});
+    Vector3d r = json.vector3("rotate_degrees", {0, 0, 0}) * kRadiansPerDegree;
+    Vector3d s(1, 1, 1);
+    if (json.has("scale")) {
+      if (json.at("scale").is_number()) {
+        double k = json.number("scale");
+        s = {k, k, k};
+      } else {
+        s = json.vector3("scale");
+      }
+      if (s.x == 0 || s.y == 0 || s.z == 0) json.fail("scale", "scale must not be zero");
+    }
+    json.finish();
+    return Transform::translate(t) * Transform::rotate_z(r.z) * Transform::rotate_y(r.y) *
+           Transform::rotate_x(r.x) * Transform::scale(s.x, s.y, s.z);
+  }
+
+  Mesh shape(JsonReader& json, const std::string& kind) {
+    if (kind == "sphere")
+      return make_sphere(float(json.number_in("radius", 1, 1e-9, 1e9)),
+                         json.integer("segments", 64, 3, 4096));
+    if (kind == "rectangle") {
+      std::vector<double> size =
+          json.has("size") ? json.numbers("size", 2) : std::vector<double>{1, 1};
+      return make_rectangle(float(size[0]), float(size[1]));
+    }
+    if (kind == "box") return make_box(Vector3f(json.vector3("size", {1, 1, 1})));
+    if (kind == "mesh") {
+      Mesh m;
+      m.name = "mesh";
+      const nlohmann::ordered_json& p = json.at("positions");
+      const nlohmann::ordered_json& i = json.at("indices");
+      if (!p.is_array() || p.size() % 3 != 0 ||
+          !std::all_of(p.begin(), p.end(), [](auto& v) { return v.is_number(); }))
+        json.fail("positions", "expected a flat array of numbers, three per vertex");
+      if (!i.is_array() || i.size() % 3 != 0 ||
+          !std::all_of(i.begin(), i.end(), [](auto& v) { return v.is_number_unsigned(); }))
+        json.fail("indices", "expected a flat array of non-negative integers, three per triangle");
+      for (size_t k = 0; k < p.size(); k += 3)
+        m.positions.emplace_back(p[k].get<float>(), p[k + 1].get<float>(), p[k + 2].get<float>());
+      for (const nlohmann::ordered_json& v : i) {
+        uint64_t index = v.get<uint64_t>();
+        if (index >= m.positions.size())
+          json.fail("indices", "index " + std::to_string(index) + " is past the vertex count " +
+                                   std::to_string(m.positions.size()));
+        m.indices.push_back(uint32_t(index));
+      }
+      return m;
+    }
+    json.fail("shape", "unknown shape '" + kind + "'; expected sphere, rectangle, box or mesh");
+  }
+
+  std::vector<TransformKey> motion(JsonReader& json) {
+    std::vector<TransformKey> keys;
+    for (JsonReader& key : json.objects("motion")) {
+      double time = key.number("time");
+      if (!keys.empty() && time <= keys.back().time_seconds)
+        key.fail("time", "motion keys must be in increasing time order");
+      keys.push_back({time, transform(key.object("transform"))});
+      key.finish();
+    }
+    return keys;
+  }
+
+  void read_object(JsonReader& json) {
+    std::string name = json.string("name", "");
+    Transform world_from_object =
+        json.has("transform") ? transform(json.object("transform")) : Transform();
+    std::vector<TransformKey> keys = motion(json);
+    if (!keys.empty()) world_from_object = keys.front().world_from_object;
+    if (json.has("model") == json.has("shape"))
+      throw Error(path_ + ": " + json.path(),
+                  "an object needs exactly one of \"model\" or \"shape\"");
+    if (json.has("shape")) {
+      Mesh mesh = shape(json, json.string("shape"));
+      mesh.material = material(json, "material");
+      if (!name.empty()) mesh.name = name;
+      uint32_t index = scene_.add_mesh(std::move(mesh), world_from_object);
+      scene_.instances.back().motion = keys;
+      (void)index;
+      json.finish();
+      return;
+    }
+    std::string file = resolve(json.string("model"));
+    std::error_code ec;
+    if (!std::filesystem::is_regular_file(file, ec))
+      json.fail("model", "model file '" + file + "' does not exist");
+    std::string up = json.string("up", "y");
+    if (up != "y" && up != "z") json.fail("up", "expected \"y\" or \"z\"");
+    std::optional<uint32_t> override_material;
+    if (json.has("material")) override_material = material(json, "material");
+    json.finish();
+    Scene model = load_model_file(file);
+    // A Z-up model turns so that its +Z becomes the world's +Y.
+    Transform up_fix = y_up_from(up == "z" ? UpAxis::z : UpAxis::y);
+    merge(std::move(model), world_from_object * up_fix, keys, up_fix, name, override_material);
+  }
+
+  void merge(Scene model, const Transform& world_from_model, const std::vector<TransformKey>& keys,
+             const Transform& up_fix, const std::string& name,
+             std::optional<uint32_t> override_material) {
+    auto mesh_base = uint32_t(scene_.meshes.size());
+    auto material_base = uint32_t(scene_.materials.size());
+    auto texture_base = int32_t(scene_.textures.size());
+    auto shift = [&](TextureRef& r) {
+      if (r.valid()) r.texture += texture_base;
+    };
+    for (Material& m : model.materials) {
+      shift(m.emission_texture);
+      shift(m.normal_texture);
+      std::visit(
+          [&](auto& v) {
+            using T = std::decay_t<decltype(v)>;
+            if constexpr (std::is_same_v<T, DiffuseMaterial>) shift(v.reflectance_texture);
+            if constexpr (std::is_same_v<T, PhongMaterial>) shift(v.diffuse_texture);
+            if constexpr (std::is_same_v<T, MetallicRoughnessMaterial>) {
+              shift(v.base_color_texture);
+              shift(v.metallic_roughness_texture);
+              shift(v.occlusion_texture);
+            }
+          },
+          m.model);
+      scene_.materials.push_back(std::move(m));
+    }
+    for (Texture& t : model.textures) scene_.textures.push_back(std::move(t));
+    for (Mesh& m : model.meshes) {
+      m.material += material_base;
+      scene_.meshes.push_back(std::move(m));
+    }
+    for (Instance& instance : model.instances) {
+      instance.mesh += mesh_base;
+      if (override_material)
+        instance.material = int32_t(*override_material);
+      else if (instance.material >= 0)
+        instance.material += int32_t(material_base);
+      if (!name.empty()) instance.name = name + "/" + instance.name;
+      Transform model_from_object = instance.world_from_object;
+      instance.world_from_object = world_from_model * model_from_object;
+      for (const TransformKey& key : keys)
+        instance.motion.push_back(
+            {key.time_seconds, key.world_from_object * up_fix * model_from_object});
+      scene_.instances.push_back(std::move(instance));
+    }
+    for (Light& light : model.lights) scene_.lights.push_back(transformed(light, world_from_model));
+    for (Camera& camera : model.cameras) {
+      // Cameras follow the model's placement, without its scale.
+      std::vector<AnimatedTransform::Key> keys = camera.world_from_camera.keys();
+      for (AnimatedTransform::Key& key : keys)
+        key.transform = without_scale((world_from_model * key.transform).matrix());
+      camera.world_from_camera = AnimatedTransform(keys);
+      scene_.cameras.push_back(std::move(camera));
+    }
+    for (std::string& w : model.warnings) scene_.warnings.push_back(std::move(w));
+  }
+
+  static Light transformed(Light light, const Transform& t) {
+    std::visit(
+        [&](auto& l) {
+          using T = std::decay_t<decltype(l)>;
+          if constexpr (!std::is_same_v<T, DirectionalLight>) l.position = t(l.position);
+          if constexpr (!std::is_same_v<T, PointLight>) l.direction = normalize(t(l.direction));
+        },
+        light.model);
+    return light;
+  }
+
+  void read_light(JsonReader& json) {
+    Light light;
+    light.name = json.string("name", "light " + std::to_string(scene_.lights.size()));
+    std::string type = json.string("type");
+    Rgb color = json.rgb("color", Rgb(1.f));
+    if (type == "point") {
+      light.model = PointLight{point(json.vector3("position")),
+                               color * float(json.number_in("intensity", 1, 0, 1e12))};
+    } else if (type == "spot") {
+      Vector3d position = json.vector3("position");
+      Vector3d target = json.vector3("target");
+      if (length(target - position) == 0)
+        json.fail("target", "the spot light's target equals its position");
+      double inner = json.number_in("inner_cone_degrees", 0, 0, 90);
+      double outer = json.number_in("outer_cone_degrees", 45, inner, 90);
+      light.model = SpotLight{point(position), Vector3f(normalize(target - position)),
+                              color * float(json.number_in("intensity", 1, 0, 1e12)),
+                              float(inner * kRadiansPerDegree), float(outer * kRadiansPerDegree)};
+    } else if (type == "directional") {
+      Vector3d direction = json.vector3("direction");
+      if (length(direction) == 0) json.fail("direction", "the direction must not be zero");
+      light.model = DirectionalLight{Vector3f(normalize(direction)),
+                                     color * float(json.number_in("irradiance", 1, 0, 1e12))};
+    } else {
+      json.fail("type", "unknown light type '" + type + "'; expected point, spot or directional");
+    }
+    json.finish();
+    scene_.lights.push_back(std::move(light));
+  }
+
+  void read_environment(JsonReader json) {
+    Environment env;
+    if (json.has("file")) {
+      std::string file = resolve(json.string("file"));
+      std::error_code ec;
+      if (!std::filesystem::is_regular_file(file, ec))
+        json.fail("file", "environment map '" + file + "' does not exist");
+      env.texture = int32_t(scene_.textures.size());
+      Texture t = read_texture(file, TextureEncoding::kLinear);
+      t.wrap_v = TextureWrap::kClampToEdge;
+      scene_.textures.push_back(std::move(t));
+    }
+    env.color = json.rgb("color", Rgb(1.f));
+    env.intensity = float(json.number_in("intensity", 1, 0, 1e12));
+    double rotation = json.number("rotate_y_degrees", 0);
+    env.world_from_environment = Transform::rotate_y(rotation * kRadiansPerDegree);
+    json.finish();
+    scene_.environment = env;
+  }
+
+  std::string path_;
+  std::filesystem::path directory_;
+  Scene scene_;
+  std::map<std::string, uint32_t> material_index_;
+  std::map<std::pair<std::string, TextureEncoding>, int32_t> textures_;
+};
+
+}  // namespace
+
+Scene load_json_scene(const std::string& path) {
+  return JsonSceneReader(path).read();
+}
+
+}  // namespace obscura

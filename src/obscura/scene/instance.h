@@ -1,0 +1,34 @@
+// An instance places a mesh in the world; many instances may share one mesh (instancing is
+// kept, not expanded). Node hierarchies are flattened: the transform is the full object→world.
+#pragma once
+
+#include <cstdint>
+#include <string>
+#include <vector>
+
+#include "obscura/math/transform.h"
+
+namespace obscura {
+
+// The object→world transform at one moment of an animation.
+struct TransformKey {
+  double time_seconds = 0;
+  Transform world_from_object;
+};
+
+struct Instance {
+  std::string name;
+  uint32_t mesh = 0;  // index into Scene::meshes
+  // Index into Scene::materials to draw this instance with, or −1 for the mesh's own material
+  // (glTF shares one geometry between meshes that differ only in material).
+  int32_t material = -1;
+  Transform world_from_object;
+  // Keyframes for motion blur, sorted by time; empty for a static instance. Between keys the
+  // transform is interpolated (translation and scale linearly, rotation by slerp); before the
+  // first and after the last it holds. `world_from_object` is the pose at time 0.
+  std::vector<TransformKey> motion;
+
+  bool animated() const { return motion.size() > 1; }
+};
+
+}  // namespace obscura

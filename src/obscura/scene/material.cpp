@@ -1,0 +1,32 @@
+#include "obscura/scene/material.h"
+
+namespace obscura {
+
+namespace {
+
+struct TypeName {
+  std::string_view operator()(const DiffuseMaterial&) const { return "diffuse"; }
+  std::string_view operator()(const PhongMaterial&) const { return "phong"; }
+  std::string_view operator()(const ConductorMaterial&) const { return "conductor"; }
+  std::string_view operator()(const DielectricMaterial&) const { return "dielectric"; }
+  std::string_view operator()(const MetallicRoughnessMaterial&) const {
+    return "metallic-roughness";
+  }
+  std::string_view operator()(const EmissiveMaterial&) const { return "emissive"; }
+};
+
+}  // namespace
+
+std::string_view material_type_name(const MaterialModel& model) {
+  return std::visit(TypeName{}, model);
+}
+
+Material diffuse_material(std::string name, Rgb reflectance, Rgb emission) {
+  Material m;
+  m.name = std::move(name);
+  m.model = DiffuseMaterial{.reflectance = reflectance, .reflectance_texture = {}};
+  m.emission = emission;
+  return m;
+}
+
+}  // namespace obscura

@@ -1,0 +1,92 @@
+// Materials: a closed set of surface models (one std::variant, dispatched with std::visit) plus
+// what every surface may have: emission and a normal map.
+//
+// Colours are linear RGB; a texture, where given, multiplies its factor (as glTF does).
+#pragma once
+
+#include <string>
+#include <string_view>
+#include <variant>
+
+#include "obscura/color/rgb.h"
+#include "obscura/scene/texture.h"
+
+namespace obscura {
+
+// Lambertian reflection.
+struct DiffuseMaterial {
+  Rgb reflectance{0.8f, 0.8f, 0.8f};  // albedo, each in [0, 1]
+  TextureRef reflectance_texture;
+};
+
+// Phong / Blinn-Phong, as OBJ/MTL files describe surfaces (Ka, Kd, Ks, Ns, map_Kd).
+struct PhongMaterial {
+  Rgb ambient;                    // Ka: kept for the rasterizer's classic shading
+  Rgb diffuse{0.8f, 0.8f, 0.8f};  // Kd
+  Rgb specular;                   // Ks
+  float shininess = 0;            // Ns: the specular exponent, ≥ 0
+  TextureRef diffuse_texture;     // map_Kd
+  bool blinn = true;              // half-vector (Blinn-Phong) rather than reflection (Phong) lobe
+};
+
+// A metal: complex index of refraction η + ik per RGB channel, GGX roughness.
+struct ConductorMaterial {
+  Rgb eta{0.2f, 0.92f, 1.1f};  // gold-like defaults
+  Rgb k{3.9f, 2.45f, 2.14f};
+  float roughness = 0;  // perceptual (GGX α = roughness²), in [0, 1]; 0 = mirror
+};
+
+// Glass, water: a smooth or rough dielectric interface.
+struct DielectricMaterial {
+  float ior = 1.5f;        // index of refraction inside, relative to outside
+  float roughness = 0;     // as ConductorMaterial
+  Rgb transmittance{1.f};  // tint of transmitted light
+};
+
+// The glTF 2.0 metallic-roughness model, with KHR_materials_specular.
+struct MetallicRoughnessMaterial {
+  Rgb base_color{1.f};
+  float alpha = 1;  // base colour alpha (coverage)
+  TextureRef base_color_texture;
+  float metallic = 1, roughness = 1;      // glTF defaults
+  TextureRef metallic_roughness_texture;  // B = metallic, G = roughness (glTF)
+  TextureRef occlusion_texture;           // R = ambient occlusion
+  // KHR_materials_specular: strength and colour of the dielectric specular layer. A zero
+  // specular makes a non-metal purely diffuse (Blender's exporter writes this for its Diffuse
+  // BSDF).
+  float specular = 1;
+  Rgb specular_color{1.f};
+  float ior = 1.5f;  // KHR_materials_ior; glTF's default 1.5 gives F0 = 0.04
+
+  bool purely_diffuse() const {
+    return metallic == 0 && (specular == 0 || specular_color.is_black());
+  }
+};
+
+// Emits Material::emission and reflects nothing (a light's surface, a black body).
+struct EmissiveMaterial {};
+
+using MaterialModel = std::variant<DiffuseMaterial, PhongMaterial, ConductorMaterial,
+                                   DielectricMaterial, MetallicRoughnessMaterial, EmissiveMaterial>;
+
+struct Material {
+  std::string name;
+  MaterialModel model = DiffuseMaterial{};
+  // Emitted radiance (W·sr⁻¹·m⁻²) from the front face, strength included; the emission texture,
+  // where given, multiplies it. Non-black emission makes the surface an area light.
+  Rgb emission;
+  TextureRef emission_texture;
+  TextureRef normal_texture;  // tangent-space normal map
+  float normal_scale = 1;
+  bool double_sided = true;  // glTF doubleSided; the tracer reflects on both sides regardless
+};
+
+// A Lambertian material, emitting where `emission` is not black: the common case of scenes built
+// in code.
+Material diffuse_material(std::string name, Rgb reflectance, Rgb emission = {});
+
+// "diffuse", "phong", "conductor", "dielectric", "metallic-roughness", "emissive": the names the
+// JSON scene file uses.
+std::string_view material_type_name(const MaterialModel& model);
+
+}  // namespace obscura

@@ -1,0 +1,34 @@
+// A triangle mesh in its own object space: what an Instance places in the world.
+#pragma once
+
+#include <cstdint>
+#include <string>
+#include <vector>
+
+#include "obscura/color/rgb.h"
+#include "obscura/math/bounds.h"
+#include "obscura/math/vector.h"
+
+namespace obscura {
+
+// Indexed triangles. Front faces wind counter-clockwise seen from outside: the geometric normal
+// is (p1 − p0) × (p2 − p0). Every per-vertex array is either empty (absent) or has exactly one
+// entry per position.
+struct Mesh {
+  std::string name;
+  std::vector<Point3f> positions;
+  std::vector<Normal3f> normals;   // unit shading normals
+  std::vector<Point2f> uvs;        // texture coordinates; (0, 0) is the image's top-left (glTF)
+  std::vector<Vector4f> tangents;  // xyz unit tangent along +u, w = ±1 bitangent sign (glTF)
+  std::vector<Rgb> colors;         // linear vertex colours, multiplied into the base colour
+  std::vector<uint32_t> indices;   // three per triangle
+  uint32_t material = 0;           // index into Scene::materials; an Instance may override it
+
+  size_t triangle_count() const { return indices.size() / 3; }
+  size_t vertex_count() const { return positions.size(); }
+  Bounds3f bounds() const;
+  // Heap bytes held by the arrays (capacity, not size).
+  size_t memory_bytes() const;
+};
+
+}  // namespace obscura

@@ -1,0 +1,66 @@
+#include "obscura/scene/texture.h"
+
+#include <cmath>
+
+#include "obscura/color/srgb.h"
+
+namespace obscura {
+
+namespace {
+
+// Texel index along one axis of `size` texels for the integer coordinate i, per the wrap mode.
+int wrap_index(int i, int size, TextureWrap wrap) {
+  switch (wrap) {
+    case TextureWrap::kClampToEdge:
+      return i < 0 ? 0 : (i >= size ? size - 1 : i);
+    case TextureWrap::kMirroredRepeat: {
+      int period = 2 * size;
+      int m = ((i % period) + period) % period;
+      return m < size ? m : period - 1 - m;
+    }
+    case TextureWrap::kRepeat:
+    default:
+      return ((i % size) + size) % size;
+  }
+}
+
+// The linear RGBA value of one texel.
+Vector4f texel_rgba(const Texture& t, int x, int y) {
+  float v[4] = {0, 0, 0, 1};
+  for (int c = 0; c < t.channels && c < 4; ++c) v[c] = t.texel(x, y, c);
+  if (t.channels == 1 || t.channels == 2) {  // grey (+ alpha)
+    if (t.channels == 2) v[3] = v[1];
+    v[1] = v[2] = v[0];
+  }
+  if (t.encoding == TextureEncoding::kSrgb)
+    for (int c = 0; c < 3; ++c) v[c] = srgb_decode(v[c]);
+  return {v[0], v[1], v[2], v[3]};
+}
+
+}  // namespace
+
+Vector4f sample_texture(const Texture& t, Point2f uv) {
+  if (t.width <= 0 || t.height <= 0) return {0, 0, 0, 1};
+  // Continuous texel coordinates, texel centres at integer + ½.
+  float x = uv.x * t.width, y = uv.y * t.height;
+  if (t.filter == TextureFilter::kNearest) {
+    int ix = wrap_index(int(std::floor(x)), t.width, t.wrap_u);
+    int iy = wrap_index(int(std::floor(y)), t.height, t.wrap_v);
+    return texel_rgba(t, ix, iy);
+  }
+  float fx = x - 0.5f, fy = y - 0.5f;
+  int x0 = int(std::floor(fx)), y0 = int(std::floor(fy));
+  float ax = fx - x0, ay = fy - y0;
+  Vector4f result;
+  for (int dy = 0; dy < 2; ++dy)
+    for (int dx = 0; dx < 2; ++dx) {
+      float w = (dx ? ax : 1 - ax) * (dy ? ay : 1 - ay);
+      if (w == 0) continue;
+      Vector4f v = texel_rgba(t, wrap_index(x0 + dx, t.width, t.wrap_u),
+                              wrap_index(y0 + dy, t.height, t.wrap_v));
+      result = result + v * w;
+    }
+  return result;
+}
+
+}  // namespace obscura

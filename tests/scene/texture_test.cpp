@@ -1,0 +1,66 @@
+// Texture lookups worked by hand on tiny images: texel centres, bilinear weights, each wrap
+// mode, sRGB decoding (IEC 61966-2-1: encoded 0.5 is linear 0.21404) and grey expansion.
+#include "obscura/scene/texture.h"
+
+#include <gtest/gtest.h>
+
+namespace obscura {
+namespace {
+
+// A 2 × 1 linear float texture: left texel 0, right texel 1 (one channel).
+Texture ramp(TextureWrap wrap, TextureFilter filter) {
+  Texture t;
+  t.width = 2, t.height = 1, t.channels = 1;
+  t.texels_float = {0.f, 1.f};
+  t.encoding = TextureEncoding::kLinear;
+  t.wrap_u = t.wrap_v = wrap;
+  t.filter = filter;
+  return t;
+}
+
+TEST(Texture, BilinearBetweenTexelCentres) {
+  Texture t = ramp(TextureWrap::kClampToEdge, TextureFilter::kBilinear);
+  EXPECT_FLOAT_EQ(sample_texture(t, {0.25f, 0.5f}).x, 0);    // left centre
+  EXPECT_FLOAT_EQ(sample_texture(t, {0.75f, 0.5f}).x, 1);    // right centre
+  EXPECT_FLOAT_EQ(sample_texture(t, {0.5f, 0.5f}).x, 0.5f);  // half way
+  EXPECT_FLOAT_EQ(sample_texture(t, {0.375f, 0.5f}).x, 0.25f);
+  EXPECT_FLOAT_EQ(sample_texture(t, {0.f, 0.5f}).x, 0);      // clamped beyond the centre
+  EXPECT_FLOAT_EQ(sample_texture(t, {0.5f, 0.5f}).w, 1);     // no alpha channel → 1
+  EXPECT_FLOAT_EQ(sample_texture(t, {0.5f, 0.5f}).y, 0.5f);  // grey fills G and B
+}
+
+TEST(Texture, WrapModes) {
+  // u = 1.0 lies half a texel past the right centre: repeat blends right (1) with left (0).
+  EXPECT_FLOAT_EQ(
+      sample_texture(ramp(TextureWrap::kRepeat, TextureFilter::kBilinear), {1.f, 0.5f}).x, 0.5f);
+  EXPECT_FLOAT_EQ(
+      sample_texture(ramp(TextureWrap::kClampToEdge, TextureFilter::kBilinear), {1.f, 0.5f}).x, 1);
+  // Mirrored: the texel after the right one is the right one again.
+  EXPECT_FLOAT_EQ(
+      sample_texture(ramp(TextureWrap::kMirroredRepeat, TextureFilter::kBilinear), {1.f, 0.5f}).x,
+      1);
+  // Nearest: u = 1.1 repeats to 0.1 (left), mirrors to 0.9 (right).
+  EXPECT_FLOAT_EQ(
+      sample_texture(ramp(TextureWrap::kRepeat, TextureFilter::kNearest), {1.1f, 0.5f}).x, 0);
+  EXPECT_FLOAT_EQ(
+      sample_texture(ramp(TextureWrap::kMirroredRepeat, TextureFilter::kNearest), {1.1f, 0.5f}).x,
+      1);
+  EXPECT_FLOAT_EQ(
+      sample_texture(ramp(TextureWrap::kRepeat, TextureFilter::kNearest), {-0.2f, 0.5f}).x, 1);
+}
+
+TEST(Texture, SrgbEightBitTexelsAreDecoded) {
+  Texture t;
+  t.width = t.height = 1, t.channels = 3;
+  t.texels_8bit = {255, 128, 0};
+  t.filter = TextureFilter::kNearest;
+  Vector4f v = sample_texture(t, {0.5f, 0.5f});
+  EXPECT_FLOAT_EQ(v.x, 1);
+  EXPECT_NEAR(v.y, 0.2158605f, 1e-6);  // 128/255 = 0.50196 encoded → 0.21586 linear
+  EXPECT_FLOAT_EQ(v.z, 0);
+  t.encoding = TextureEncoding::kLinear;
+  EXPECT_NEAR(sample_texture(t, {0.5f, 0.5f}).y, 128 / 255.f, 1e-7);
+}
+
+}  // namespace
+}  // namespace obscura
