@@ -1,0 +1,279 @@
+// Rasterizing one triangle into one tile: setup, coverage by rows, depth test, perspective-
+// correct interpolation, fragment shading and output.
+//
+// Coverage is exact (fill_rule.h): each row's covered span is solved from the integer edge
+// functions, so the pixel loop needs no coverage test and runs in batches of eight pixels that
+// the compiler can vectorize. Depth is interpolated linearly in screen space (window z is affine
+// there); attributes perspective-correctly: f_i = λ_i / w_i is affine in screen space, and the
+// perspective-correct weights are f_i / Σ f_j (Σ f_j = 1/w at the pixel).
+#pragma once
+
+#include <algorithm>
+#include <concepts>
+#include <cstdint>
+#include <utility>
+
+#include "obscura/color/rgb.h"
+#include "obscura/raster/binner.h"
+#include "obscura/raster/depth_test.h"
+#include "obscura/raster/fill_rule.h"
+#include "obscura/raster/msaa.h"
+#include "obscura/raster/render_target.h"
+#include "obscura/raster/shaded_vertex.h"
+#include "obscura/raster/varyings.h"
+
+namespace obscura::raster {
+
+// A program: a vertex shader and a fragment shader sharing a Varyings type.
+template <class P>
+concept Program = VaryingsType<typename P::Varyings> &&
+    requires(const P& p, const typename P::Vertex& v, const typename P::Varyings& var,
+             FragmentInfo info) {
+  { p.vertex(v) } -> std::same_as<VertexOutput<typename P::Varyings>>;
+  { p.fragment(var, info) } -> std::convertible_to<Rgb>;
+};
+
+// Programs may also say which shading normal a fragment has (for the normal output).
+template <class P>
+concept HasNormalOutput = requires(const P& p, const typename P::Varyings& var) {
+  { p.normal(var) } -> std::convertible_to<Vector3f>;
+};
+
+// Edges drawn over the shaded surface, measured in pixels from each triangle's edges.
+struct Wireframe {
+  bool enabled = false;
+  float width_pixels = 1.f;
+  Rgb color{1.f, 1.f, 1.f};
+};
+
+struct FragmentSettings {
+  bool depth_write = true;
+  BlendMode blend = BlendMode::kReplace;
+  FrontFace front_face = FrontFace::kCounterClockwise;
+  uint32_t object_id = 1;
+  Wireframe wireframe;
+};
+
+struct PixelRect {  // [x0, x1) × [y0, y1)
+  int x0, y0, x1, y1;
+};
+
+template <Program P, DepthFunc F>
+class TriangleRasterizer {
+ public:
+  using V = typename P::Varyings;
+  static constexpr int kN = kVaryingFloats<V>;
+
+  TriangleRasterizer(const P& program, RenderTarget& target, const FragmentSettings& settings)
+      : program_(program),
+        target_(target),
+        settings_(settings),
+        offsets_(msaa_sample_offsets(target.samples())) {}
+
+  void draw(const ShadedVertex<V>& a, const ShadedVertex<V>& b, const ShadedVertex<V>& c,
+            uint32_t primitive, PixelRect tile) {
+    if (!setup(a, b, c, primitive, tile)) return;
+    for (int row = rows_.first; row <= rows_.last; ++row) {
+      if (target_.samples() == 1) {
+        shade_row(row);
+      } else {
+        shade_row_multisampled(row);
+      }
+    }
+  }
+
+ private:
+  bool setup(const ShadedVertex<V>& a, const ShadedVertex<V>& b, const ShadedVertex<V>& c,
+             uint32_t primitive, PixelRect tile) {
+    const ShadedVertex<V>* v[3] = {&a, &b, &c};
+    int64_t area2 = twice_signed_area(a.x, a.y, b.x, b.y, c.x, c.y);
+    if (area2 == 0) return false;
+    front_facing_ = is_front_facing(area2, settings_.front_face);
+    if (area2 < 0) std::swap(v[1], v[2]), area2 = -area2;
+    // Start at the topmost-leftmost vertex: the same triangle given in any vertex order then
+    // gets bit-identical planes (equal depths compare equal).
+    int first = 0;
+    for (int i = 1; i < 3; ++i)
+      if (std::pair(v[i]->y, v[i]->x) < std::pair(v[first]->y, v[first]->x)) first = i;
+    std::rotate(v, v + first, v + 3);
+    primitive_ = primitive;
+
+    int extent = 0;
+    for (Vector2i o : offsets_) extent = std::max({extent, std::abs(o.x), std::abs(o.y)});
+    int32_t min_x = std::min({v[0]->x, v[1]->x, v[2]->x}),
+            max_x = std::max({v[0]->x, v[1]->x, v[2]->x});
+    int32_t min_y = std::min({v[0]->y, v[1]->y, v[2]->y}),
+            max_y = std::max({v[0]->y, v[1]->y, v[2]->y});
+    cols_ = pixel_range(min_x, max_x, extent, target_.width());
+    rows_ = pixel_range(min_y, max_y, extent, target_.height());
+    cols_ = {std::max(cols_.first, tile.x0), std::min(cols_.last, tile.x1 - 1)};
+    rows_ = {std::max(rows_.first, tile.y0), std::min(rows_.last, tile.y1 - 1)};
+    if (cols_.first > cols_.last || rows_.first > rows_.last) return false;
+
+    // Everything below is relative to the centre of the first pixel of the box.
+    const int64_t ox = int64_t(cols_.first) * kSubpixelScale + kHalfPixel;
+    const int64_t oy = int64_t(rows_.first) * kSubpixelScale + kHalfPixel;
+    const double inv_area = 1.0 / double(area2);
+    double zc = 0, zx = 0, zy = 0;
+    for (int i = 0; i < 3; ++i) {
+      const ShadedVertex<V>& p = *v[(i + 1) % 3];
+      const ShadedVertex<V>& q = *v[(i + 2) % 3];
+      edge_[i] = EdgeFunction(p.x, p.y, q.x, q.y);  // the edge opposite vertex i
+      edge_at_origin_[i] = edge_[i](ox, oy);
+      double e0 = double(edge_at_origin_[i]) * inv_area;                // λ_i at the origin
+      double ex = double(edge_[i].step_x * kSubpixelScale) * inv_area;  // per pixel
+      double ey = double(edge_[i].step_y * kSubpixelScale) * inv_area;
+      zc += v[i]->z * e0, zx += v[i]->z * ex, zy += v[i]->z * ey;
+      double w = v[i]->inv_w;
+      f0_[i] = float(e0 * w), fx_[i] = float(ex * w), fy_[i] = float(ey * w);
+    }
+    z0_ = float(zc), zx_ = float(zx), zy_ = float(zy);
+    auto v0 = to_floats(v[0]->out.varyings), v1 = to_floats(v[1]->out.varyings),
+         v2 = to_floats(v[2]->out.varyings);
+    for (int k = 0; k < kN; ++k) base_[k] = v0[k], d1_[k] = v1[k] - v0[k], d2_[k] = v2[k] - v0[k];
+    if (settings_.wireframe.enabled) {
+      for (int i = 0; i < 3; ++i) {
+        // Distance in pixels = E / |∇E|, with E in subpixel² and ∇E in subpixels.
+        double g = std::hypot(double(edge_[i].step_x), double(edge_[i].step_y));
+        wire_scale_[i] = float(1.0 / (g * kSubpixelScale));
+      }
+    }
+    return true;
+  }
+
+  V interpolate(float l1, float l2) const {
+    VaryingArray<V> r;
+    for (int k = 0; k < kN; ++k) r[k] = base_[k] + d1_[k] * l1 + d2_[k] * l2;
+    return from_floats<V>(r);
+  }
+
+  // Single sample per pixel: batches of eight pixels along the row's covered span.
+  void shade_row(int row) {
+    int first = cols_.first, last = cols_.last;
+    const int dy = row - rows_.first;
+    for (int i = 0; i < 3; ++i)
+      clip_span_to_edge(edge_at_origin_[i] + edge_[i].step_y * kSubpixelScale * dy +
+                            edge_[i].step_x * kSubpixelScale * (first - cols_.first) +
+                            edge_[i].bias,
+                        edge_[i].step_x * kSubpixelScale, &first, &last);
+    if (first > last) return;
+    const float z_row = z0_ + zy_ * dy;
+    float f_row[3];
+    for (int i = 0; i < 3; ++i) f_row[i] = f0_[i] + fy_[i] * dy;
+    float* depth = target_.depth() + target_.sample_index(0, row);
+
+    constexpr int kBatch = 8;
+    for (int x0 = first; x0 <= last; x0 += kBatch) {
+      const int n = std::min(kBatch, last - x0 + 1);
+      const float dx0 = float(x0 - cols_.first);
+      float z[kBatch];
+      bool pass[kBatch];
+      bool any = false;
+      for (int i = 0; i < n; ++i) {
+        z[i] = std::clamp(z_row + zx_ * (dx0 + float(i)), 0.f, 1.f);
+        pass[i] = depth_passes<F>(z[i], depth[x0 + i]);
+        any |= pass[i];
+      }
+      if (!any) continue;  // early depth rejection of the whole batch
+      float l1[kBatch], l2[kBatch], w[kBatch];
+      for (int i = 0; i < n; ++i) {
+        float dx = dx0 + float(i);
+        float f0 = f_row[0] + fx_[0] * dx, f1 = f_row[1] + fx_[1] * dx, f2 = f_row[2] + fx_[2] * dx;
+        w[i] = 1.f / (f0 + f1 + f2);
+        l1[i] = f1 * w[i], l2[i] = f2 * w[i];
+      }
+      Rgb shaded[kBatch];
+      for (int i = 0; i < n; ++i)
+        shaded[i] = program_.fragment(interpolate(l1[i], l2[i]),
+                                      FragmentInfo{x0 + i, row, primitive_, front_facing_});
+      for (int i = 0; i < n; ++i) {
+        if (!pass[i]) continue;
+        write(target_.sample_index(x0 + i, row), z[i], shaded[i], l1[i], l2[i], w[i], x0 + i, row);
+      }
+    }
+  }
+
+  // MSAA: coverage and depth per sample, the fragment shader once per pixel at its centre.
+  void shade_row_multisampled(int row) {
+    const int samples = target_.samples();
+    const int dy = row - rows_.first;
+    int first[8], last[8];
+    int lo = cols_.last + 1, hi = cols_.first - 1;
+    for (int s = 0; s < samples; ++s) {
+      first[s] = cols_.first, last[s] = cols_.last;
+      for (int i = 0; i < 3; ++i)
+        clip_span_to_edge(edge_at_origin_[i] +
+                              edge_[i].step_y * (kSubpixelScale * dy + offsets_[s].y) +
+                              edge_[i].step_x * offsets_[s].x + edge_[i].bias,
+                          edge_[i].step_x * kSubpixelScale, &first[s], &last[s]);
+      if (first[s] <= last[s]) lo = std::min(lo, first[s]), hi = std::max(hi, last[s]);
+    }
+    for (int x = lo; x <= hi; ++x) {
+      const float dx = float(x - cols_.first);
+      bool shaded = false;
+      Rgb color;
+      float l1 = 0, l2 = 0, w = 0;
+      for (int s = 0; s < samples; ++s) {
+        if (x < first[s] || x > last[s]) continue;
+        float z = std::clamp(z0_ + zx_ * (dx + offsets_[s].x / float(kSubpixelScale)) +
+                                 zy_ * (float(dy) + offsets_[s].y / float(kSubpixelScale)),
+                             0.f, 1.f);
+        size_t index = target_.sample_index(x, row, s);
+        if (!depth_passes<F>(z, target_.depth()[index])) continue;
+        if (!shaded) {
+          float f0 = f0_[0] + fx_[0] * dx + fy_[0] * dy, f1 = f0_[1] + fx_[1] * dx + fy_[1] * dy,
+                f2 = f0_[2] + fx_[2] * dx + fy_[2] * dy;
+          w = 1.f / (f0 + f1 + f2);
+          l1 = f1 * w, l2 = f2 * w;
+          color = program_.fragment(interpolate(l1, l2),
+                                    FragmentInfo{x, row, primitive_, front_facing_});
+          shaded = true;
+        }
+        write(index, z, color, l1, l2, w, x, row);
+      }
+    }
+  }
+
+  void write(size_t index, float z, Rgb color, float l1, float l2, float w, int x, int row) {
+    if (settings_.depth_write) target_.depth()[index] = z;
+    if (settings_.wireframe.enabled) color = apply_wireframe(color, x, row);
+    Rgb& dst = target_.color()[index];
+    dst = settings_.blend == BlendMode::kAdd ? dst + color : color;
+    if (target_.has_aovs()) {
+      target_.object_ids()[index] = settings_.object_id;
+      target_.primitive_ids()[index] = primitive_;
+      target_.view_depth()[index] = w;
+      if constexpr (HasNormalOutput<P>)
+        target_.normals()[index] = program_.normal(interpolate(l1, l2));
+    }
+  }
+
+  // Blends the wire colour in where the pixel centre lies within half the line width of an edge,
+  // with a one-pixel ramp so lines stay smooth.
+  Rgb apply_wireframe(Rgb color, int x, int row) const {
+    const int64_t px = int64_t(x) * kSubpixelScale + kHalfPixel;
+    const int64_t py = int64_t(row) * kSubpixelScale + kHalfPixel;
+    float d = 1e30f;
+    for (int i = 0; i < 3; ++i) d = std::min(d, float(edge_[i](px, py)) * wire_scale_[i]);
+    float half = 0.5f * settings_.wireframe.width_pixels;
+    float t = std::clamp(half + 0.5f - d, 0.f, 1.f);
+    return color * (1.f - t) + settings_.wireframe.color * t;
+  }
+
+  const P& program_;
+  RenderTarget& target_;
+  const FragmentSettings& settings_;
+  std::span<const Vector2i> offsets_;
+  // Per-triangle setup.
+  EdgeFunction edge_[3];
+  int64_t edge_at_origin_[3];
+  PixelRange cols_{}, rows_{};
+  float z0_, zx_, zy_;
+  float f0_[3], fx_[3], fy_[3];
+  float base_[kN], d1_[kN], d2_[kN];
+  float wire_scale_[3];
+  uint32_t primitive_ = 0;
+  bool front_facing_ = true;
+};
+
+}  // namespace obscura::raster
