@@ -24,14 +24,25 @@
 
 namespace obscura::raster {
 
-// A program: a vertex shader and a fragment shader sharing a Varyings type.
+// A program: a vertex shader and a fragment shader sharing a Varyings type. The fragment shader
+// is either fragment(varyings, info), or fragment(varyings, d/dx, d/dy, info) when it needs the
+// screen-space derivatives of its varyings (texture level of detail), which the rasterizer then
+// computes by interpolating at the neighbouring pixel centres, as a GPU's 2×2 quads do.
 template <class P>
-concept Program = VaryingsType<typename P::Varyings> &&
-    requires(const P& p, const typename P::Vertex& v, const typename P::Varyings& var,
-             FragmentInfo info) {
-  { p.vertex(v) } -> std::same_as<VertexOutput<typename P::Varyings>>;
+concept PlainFragmentShader = requires(const P& p, const typename P::Varyings& var,
+                                       FragmentInfo info) {
   { p.fragment(var, info) } -> std::convertible_to<Rgb>;
 };
+template <class P>
+concept DerivativeFragmentShader = requires(const P& p, const typename P::Varyings& var,
+                                            FragmentInfo info) {
+  { p.fragment(var, var, var, info) } -> std::convertible_to<Rgb>;
+};
+template <class P>
+concept Program = VaryingsType<typename P::Varyings> &&
+    requires(const P& p, const typename P::Vertex& v) {
+  { p.vertex(v) } -> std::same_as<VertexOutput<typename P::Varyings>>;
+} &&(PlainFragmentShader<P> || DerivativeFragmentShader<P>);
 
 // Programs may also say which shading normal a fragment has (for the normal output).
 template <class P>
@@ -147,6 +158,32 @@ class TriangleRasterizer {
     return from_floats<V>(r);
   }
 
+  // Perspective-correct weights of vertices 1 and 2 at (dx, dy) pixels from the box origin.
+  void weights(float dx, float dy, float* l1, float* l2, float* w) const {
+    float f0 = f0_[0] + fx_[0] * dx + fy_[0] * dy, f1 = f0_[1] + fx_[1] * dx + fy_[1] * dy,
+          f2 = f0_[2] + fx_[2] * dx + fy_[2] * dy;
+    *w = 1.f / (f0 + f1 + f2);
+    *l1 = f1 * *w, *l2 = f2 * *w;
+  }
+
+  Rgb shade(float l1, float l2, float dx, float dy, int x, int row) const {
+    FragmentInfo info{x, row, primitive_, front_facing_};
+    if constexpr (PlainFragmentShader<P>) {
+      return program_.fragment(interpolate(l1, l2), info);
+    } else {
+      float a1, a2, b1, b2, w;
+      weights(dx + 1, dy, &a1, &a2, &w);
+      weights(dx, dy + 1, &b1, &b2, &w);
+      VaryingArray<V> d_dx, d_dy;
+      for (int k = 0; k < kN; ++k) {
+        d_dx[k] = d1_[k] * (a1 - l1) + d2_[k] * (a2 - l2);
+        d_dy[k] = d1_[k] * (b1 - l1) + d2_[k] * (b2 - l2);
+      }
+      return program_.fragment(interpolate(l1, l2), from_floats<V>(d_dx), from_floats<V>(d_dy),
+                               info);
+    }
+  }
+
   // Single sample per pixel: batches of eight pixels along the row's covered span.
   void shade_row(int row) {
     int first = cols_.first, last = cols_.last;
@@ -184,8 +221,7 @@ class TriangleRasterizer {
       }
       Rgb shaded[kBatch];
       for (int i = 0; i < n; ++i)
-        shaded[i] = program_.fragment(interpolate(l1[i], l2[i]),
-                                      FragmentInfo{x0 + i, row, primitive_, front_facing_});
+        shaded[i] = shade(l1[i], l2[i], dx0 + float(i), float(dy), x0 + i, row);
       for (int i = 0; i < n; ++i) {
         if (!pass[i]) continue;
         write(target_.sample_index(x0 + i, row), z[i], shaded[i], l1[i], l2[i], w[i], x0 + i, row);
@@ -221,12 +257,8 @@ class TriangleRasterizer {
         size_t index = target_.sample_index(x, row, s);
         if (!depth_passes<F>(z, target_.depth()[index])) continue;
         if (!shaded) {
-          float f0 = f0_[0] + fx_[0] * dx + fy_[0] * dy, f1 = f0_[1] + fx_[1] * dx + fy_[1] * dy,
-                f2 = f0_[2] + fx_[2] * dx + fy_[2] * dy;
-          w = 1.f / (f0 + f1 + f2);
-          l1 = f1 * w, l2 = f2 * w;
-          color = program_.fragment(interpolate(l1, l2),
-                                    FragmentInfo{x, row, primitive_, front_facing_});
+          weights(dx, float(dy), &l1, &l2, &w);
+          color = shade(l1, l2, dx, float(dy), x, row);
           shaded = true;
         }
         write(index, z, color, l1, l2, w, x, row);
