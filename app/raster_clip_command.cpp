@@ -225,10 +225,14 @@ void run_raster_clip(const std::string& file, const std::string& out_dir) {
 
   size_t n = size_t(input.width) * input.height;
   std::vector<uint32_t> ids(n), count(n);
-  for (size_t i = 0; i < n; ++i) {
-    ids[i] = target.object_ids()[i] == raster::kNoObject ? 0 : input.ids[target.primitive_ids()[i]];
-    count[i] = uint32_t(counts.color()[i].r);
-  }
+  for (int y = 0; y < input.height; ++y)
+    for (int x = 0; x < input.width; ++x) {
+      size_t i = size_t(y) * input.width + x;
+      ids[i] = target.object_id_at(x, y) == raster::kNoObject
+                   ? 0
+                   : input.ids[target.primitive_id_at(x, y)];
+      count[i] = uint32_t(counts.color_at(x, y).r);
+    }
   write_image(base.string() + ".png", target.resolve_color());
   write_plain_pgm(base.string() + ".ids.pgm", input.width, input.height, ids);
   write_plain_pgm(base.string() + ".count.pgm", input.width, input.height, count);

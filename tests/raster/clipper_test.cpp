@@ -122,9 +122,8 @@ TEST(Clipper, ClippedDepthMatchesTheProjection) {
       double t = glm::dot(n, tri[0]) / glm::dot(n, dir);
       glm::dvec4 c = projection() * glm::dvec4(dir * t, 1);
       double expected = c.z / c.w * 0.5 + 0.5;
-      EXPECT_NEAR(target.depth()[target.sample_index(x, y)], expected, 1e-5) << x << "," << y;
-      EXPECT_NEAR(target.view_depth()[target.sample_index(x, y)], -(dir * t).z,
-                  1e-4 * -(dir * t).z);
+      EXPECT_NEAR(target.depth_at(x, y), expected, 1e-5) << x << "," << y;
+      EXPECT_NEAR(target.view_depth_at(x, y), -(dir * t).z, 1e-4 * -(dir * t).z);
       ++checked;
     }
   EXPECT_GT(checked, 1000);

@@ -64,7 +64,7 @@ TEST(Interpolation, GrazingTexturedPlaneIsPerspectiveCorrect) {
       double u = (hit.x - x0) / (x1 - x0), v = (hit.z - z0) / (z1 - z0);
       // Away from the quad's outline by more than the snapping can move it.
       if (u < 0.01 || u > 0.99 || v < 0.01 || v > 0.99) continue;
-      Rgb got = target.color()[target.sample_index(x, y)];
+      Rgb got = target.color_at(x, y);
       max_error = std::max({max_error, std::abs(got.r - u), std::abs(got.g - v)});
       // Affine: screen-space barycentrics in whichever half holds the pixel.
       for (int t = 0; t < 2; ++t) {

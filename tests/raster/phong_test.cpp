@@ -86,7 +86,7 @@ TEST(Shading, PhongSphereMatchesAnalyticReflection) {
         expected +=
             light * (kd * n_dot_l + ks * std::pow(std::max(glm::dot(r, v), 0.0), shininess));
       }
-      Rgb got = target.color()[target.sample_index(x, y)];
+      Rgb got = target.color_at(x, y);
       for (int k = 0; k < 3; ++k) max_error = std::max(max_error, std::abs(got[k] - expected[k]));
       ++checked;
     }

@@ -39,7 +39,8 @@ inline std::vector<int> coverage_counts(int width, int height, const std::vector
   state.cull = cull;
   draw(target, state, ClipSpaceProgram{}, clip);
   std::vector<int> counts(size_t(width) * height);
-  for (size_t i = 0; i < counts.size(); ++i) counts[i] = int(target.color()[i].r);
+  for (int y = 0; y < height; ++y)
+    for (int x = 0; x < width; ++x) counts[size_t(y) * width + x] = int(target.color_at(x, y).r);
   return counts;
 }
 
@@ -52,8 +53,10 @@ inline std::vector<uint32_t> visible_ids(int width, int height, const std::vecto
   state.depth_func = func;
   draw(target, state, ClipSpaceProgram{}, clip);
   std::vector<uint32_t> ids(size_t(width) * height);
-  for (size_t i = 0; i < ids.size(); ++i)
-    ids[i] = target.object_ids()[i] == kNoObject ? 0 : target.primitive_ids()[i] + 1;
+  for (int y = 0; y < height; ++y)
+    for (int x = 0; x < width; ++x)
+      ids[size_t(y) * width + x] =
+          target.object_id_at(x, y) == kNoObject ? 0 : target.primitive_id_at(x, y) + 1;
   return ids;
 }
 

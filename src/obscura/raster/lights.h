@@ -8,6 +8,7 @@
 
 #include "obscura/color/rgb.h"
 #include "obscura/math/vector.h"
+#include "obscura/raster/varyings.h"
 
 namespace obscura::raster {
 
@@ -41,15 +42,15 @@ struct IncidentLight {
   Rgb strength;
 };
 
-inline IncidentLight incident(const DirectionalLight& light, Point3f) {
+OBSCURA_RASTER_INLINE IncidentLight incident(const DirectionalLight& light, Point3f) {
   return {light.to_light, light.radiance};
 }
-inline IncidentLight incident(const PointLight& light, Point3f p) {
+OBSCURA_RASTER_INLINE IncidentLight incident(const PointLight& light, Point3f p) {
   Vector3f d = light.position - p;
   float d2 = std::max(dot(d, d), 1e-12f);
   return {d / std::sqrt(d2), light.intensity / d2};
 }
-inline IncidentLight incident(const SpotLight& light, Point3f p) {
+OBSCURA_RASTER_INLINE IncidentLight incident(const SpotLight& light, Point3f p) {
   Vector3f d = light.position - p;
   float d2 = std::max(dot(d, d), 1e-12f);
   Vector3f l = d / std::sqrt(d2);

@@ -41,27 +41,59 @@ struct DrawState {
 
 namespace detail {
 
+template <Program P>
+struct TileJob {
+  const P& program;
+  RenderTarget& target;
+  FragmentSettings settings;
+  const std::vector<Chunk<typename P::Varyings>>& chunks;
+  const ShadedVertex<typename P::Varyings>* shared;
+  TileGrid grid;
+};
+
+// One tile: its triangles from every chunk, in submission order.
 template <Program P, DepthFunc F>
-void rasterize_tiles(const P& program, RenderTarget& target, const DrawState& state,
-                     const std::vector<Chunk<typename P::Varyings>>& chunks,
-                     const ShadedVertex<typename P::Varyings>* shared, TileGrid grid) {
-  FragmentSettings settings{.depth_write = state.depth_write,
-                            .blend = state.blend,
-                            .front_face = state.front_face,
-                            .object_id = state.object_id,
-                            .wireframe = state.wireframe};
-  tbb::parallel_for(0, grid.count(), [&](int tile) {
-    PixelRect rect{(tile % grid.columns) * kTileSize, (tile / grid.columns) * kTileSize, 0, 0};
-    rect.x1 = std::min(rect.x0 + kTileSize, target.width());
-    rect.y1 = std::min(rect.y0 + kTileSize, target.height());
-    TriangleRasterizer<P, F> rasterizer(program, target, settings);
-    for (const auto& chunk : chunks) {
-      for (uint32_t k = chunk.bin_start[tile]; k < chunk.bin_start[tile + 1]; ++k) {
-        const BinnedTriangle& t = chunk.triangles[chunk.bin_items[k]];
-        rasterizer.draw(chunk.vertex(t.vertex[0], shared), chunk.vertex(t.vertex[1], shared),
-                        chunk.vertex(t.vertex[2], shared), t.primitive, rect);
-      }
+OBSCURA_RASTER_INLINE void rasterize_tile(const TileJob<P>& job, int tile) {
+  PixelRect rect{(tile % job.grid.columns) * kTileSize, (tile / job.grid.columns) * kTileSize, 0,
+                 0};
+  rect.x1 = std::min(rect.x0 + kTileSize, job.target.width());
+  rect.y1 = std::min(rect.y0 + kTileSize, job.target.height());
+  TriangleRasterizer<P, F> rasterizer(job.program, job.target, job.settings);
+  for (const auto& chunk : job.chunks) {
+    for (uint32_t k = chunk.bin_start[tile]; k < chunk.bin_start[tile + 1]; ++k) {
+      const BinnedTriangle& t = chunk.triangles[chunk.bin_items[k]];
+      rasterizer.draw(chunk.vertex(t.vertex[0], job.shared), chunk.vertex(t.vertex[1], job.shared),
+                      chunk.vertex(t.vertex[2], job.shared), t.primitive, rect);
     }
+  }
+}
+
+// flatten: the program's own helper functions inline too, whatever the compiler's heuristics.
+template <Program P, DepthFunc F>
+[[gnu::flatten]] void rasterize_tile_baseline(const TileJob<P>& job, int tile) {
+  rasterize_tile<P, F>(job, tile);
+}
+
+#if defined(__x86_64__) && defined(__GNUC__)
+// The same code compiled for AVX2 (8-wide float vectors), used when the CPU has it. Only this
+// function carries the target, so nothing compiled for AVX2 can run on a CPU without it.
+template <Program P, DepthFunc F>
+[[gnu::target("avx2"), gnu::flatten]] void rasterize_tile_avx2(const TileJob<P>& job, int tile) {
+  rasterize_tile<P, F>(job, tile);
+}
+inline bool cpu_has_avx2() {
+  static const bool has = __builtin_cpu_supports("avx2");
+  return has;
+}
+#endif
+
+template <Program P, DepthFunc F>
+void rasterize_tiles(const TileJob<P>& job) {
+  tbb::parallel_for(0, job.grid.count(), [&](int tile) {
+#if defined(__x86_64__) && defined(__GNUC__)
+    if (cpu_has_avx2()) return rasterize_tile_avx2<P, F>(job, tile);
+#endif
+    rasterize_tile_baseline<P, F>(job, tile);
   });
 }
 
@@ -119,10 +151,17 @@ void draw(RenderTarget& target, const DrawState& state, const P& program,
   });
 
   // 3. Tiles: the depth function is a template argument so the pixel loop has no switch.
+  FragmentSettings settings;
+  settings.depth_write = state.depth_write;
+  settings.blend = state.blend;
+  settings.front_face = state.front_face;
+  settings.object_id = state.object_id;
+  settings.wireframe = state.wireframe;
+  const detail::TileJob<P> job{program, target, settings, chunks, shared.get(), grid};
   switch (state.depth_func) {
-#define OBSCURA_RASTER_CASE(F)                                                         \
-  case F:                                                                              \
-    detail::rasterize_tiles<P, F>(program, target, state, chunks, shared.get(), grid); \
+#define OBSCURA_RASTER_CASE(F)          \
+  case F:                               \
+    detail::rasterize_tiles<P, F>(job); \
     break;
     OBSCURA_RASTER_CASE(DepthFunc::kNever)
     OBSCURA_RASTER_CASE(DepthFunc::kLess)

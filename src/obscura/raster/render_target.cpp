@@ -10,13 +10,17 @@
 namespace obscura::raster {
 
 RenderTarget::RenderTarget(int width, int height, int samples, bool aovs)
-    : width_(width), height_(height), samples_(samples), aovs_(aovs) {
+    : width_(width),
+      height_(height),
+      samples_(samples),
+      stride_((width + kRowAlignment - 1) / kRowAlignment * kRowAlignment),
+      aovs_(aovs) {
   if (width <= 0 || height <= 0)
     throw Error("render target", "size must be positive; got " + std::to_string(width) + "x" +
                                      std::to_string(height));
   if (!is_valid_sample_count(samples))
     throw Error("render target", "MSAA samples must be 1, 4 or 8; got " + std::to_string(samples));
-  size_t n = size_t(width) * height * samples;
+  size_t n = size_t(stride_) * height * samples;
   color_.resize(n);
   depth_.resize(n, 1.f);
   if (aovs) {

@@ -4,7 +4,9 @@
 // as for the tracer. Depth is window depth (ndc_z·0.5 + 0.5). With `aovs` on, each sample also
 // keeps the object and primitive id of the visible fragment, its view depth (clip w, the distance
 // along the view axis for a perspective projection) and a shading normal.
-// Storage is sample-major inside each pixel: element (x, y, s) is at (y·width + x)·samples + s.
+// Storage is sample-major inside each pixel: element (x, y, s) is at (y·stride + x)·samples + s,
+// where the row stride is the width rounded up to a multiple of kRowAlignment pixels, so that the
+// pixel loop can always work on whole aligned blocks of a row.
 #pragma once
 
 #include <cstdint>
@@ -18,6 +20,7 @@
 namespace obscura::raster {
 
 inline constexpr uint32_t kNoObject = 0;  // object id of the background
+inline constexpr int kRowAlignment = 8;   // pixels
 
 class RenderTarget {
  public:
@@ -27,14 +30,24 @@ class RenderTarget {
   int width() const { return width_; }
   int height() const { return height_; }
   int samples() const { return samples_; }
+  int stride() const { return stride_; }
   bool has_aovs() const { return aovs_; }
 
   // Sets every sample's colour and depth; ids to kNoObject, view depth to +∞, normals to zero.
   void clear(Rgb color = {}, float depth = 1.f);
 
   size_t sample_index(int x, int y, int s = 0) const {
-    return (size_t(y) * width_ + x) * samples_ + s;
+    return (size_t(y) * stride_ + x) * samples_ + s;
   }
+  Rgb color_at(int x, int y, int s = 0) const { return color_[sample_index(x, y, s)]; }
+  float depth_at(int x, int y, int s = 0) const { return depth_[sample_index(x, y, s)]; }
+  // Need aovs.
+  uint32_t object_id_at(int x, int y, int s = 0) const { return object_id_[sample_index(x, y, s)]; }
+  uint32_t primitive_id_at(int x, int y, int s = 0) const {
+    return primitive_id_[sample_index(x, y, s)];
+  }
+  float view_depth_at(int x, int y, int s = 0) const { return view_depth_[sample_index(x, y, s)]; }
+
   Rgb* color() { return color_.data(); }
   float* depth() { return depth_.data(); }
   uint32_t* object_ids() { return object_id_.data(); }
@@ -58,7 +71,7 @@ class RenderTarget {
   Image normal_image() const;
 
  private:
-  int width_, height_, samples_;
+  int width_, height_, samples_, stride_;
   bool aovs_;
   std::vector<Rgb> color_;
   std::vector<float> depth_;

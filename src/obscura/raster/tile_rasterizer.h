@@ -69,6 +69,11 @@ struct PixelRect {  // [x0, x1) × [y0, y1)
   int x0, y0, x1, y1;
 };
 
+// Clamps to [0, 1] by value (a vector select), NaN to 0.
+OBSCURA_RASTER_INLINE float clamp_unit(float x) {
+  return x > 0.f ? (x < 1.f ? x : 1.f) : 0.f;
+}
+
 template <Program P, DepthFunc F>
 class TriangleRasterizer {
  public:
@@ -81,8 +86,8 @@ class TriangleRasterizer {
         settings_(settings),
         offsets_(msaa_sample_offsets(target.samples())) {}
 
-  void draw(const ShadedVertex<V>& a, const ShadedVertex<V>& b, const ShadedVertex<V>& c,
-            uint32_t primitive, PixelRect tile) {
+  OBSCURA_RASTER_INLINE void draw(const ShadedVertex<V>& a, const ShadedVertex<V>& b,
+                                  const ShadedVertex<V>& c, uint32_t primitive, PixelRect tile) {
     if (!setup(a, b, c, primitive, tile)) return;
     for (int row = rows_.first; row <= rows_.last; ++row) {
       if (target_.samples() == 1) {
@@ -94,8 +99,8 @@ class TriangleRasterizer {
   }
 
  private:
-  bool setup(const ShadedVertex<V>& a, const ShadedVertex<V>& b, const ShadedVertex<V>& c,
-             uint32_t primitive, PixelRect tile) {
+  OBSCURA_RASTER_INLINE bool setup(const ShadedVertex<V>& a, const ShadedVertex<V>& b,
+                                   const ShadedVertex<V>& c, uint32_t primitive, PixelRect tile) {
     const ShadedVertex<V>* v[3] = {&a, &b, &c};
     int64_t area2 = twice_signed_area(a.x, a.y, b.x, b.y, c.x, c.y);
     if (area2 == 0) return false;
@@ -139,6 +144,9 @@ class TriangleRasterizer {
       f0_[i] = float(e0 * w), fx_[i] = float(ex * w), fy_[i] = float(ey * w);
     }
     z0_ = float(zc), zx_ = float(zx), zy_ = float(zy);
+    for (int i = 0; i < 3; ++i)
+      for (int lane = 0; lane < kRowAlignment; ++lane)
+        lane_step_[i][lane] = edge_[i].step_x * kSubpixelScale * lane;
     auto v0 = to_floats(v[0]->out.varyings), v1 = to_floats(v[1]->out.varyings),
          v2 = to_floats(v[2]->out.varyings);
     for (int k = 0; k < kN; ++k) base_[k] = v0[k], d1_[k] = v1[k] - v0[k], d2_[k] = v2[k] - v0[k];
@@ -152,7 +160,7 @@ class TriangleRasterizer {
     return true;
   }
 
-  V interpolate(float l1, float l2) const {
+  OBSCURA_RASTER_INLINE V interpolate(float l1, float l2) const {
     VaryingArray<V> r;
     for (int k = 0; k < kN; ++k) r[k] = base_[k] + d1_[k] * l1 + d2_[k] * l2;
     return from_floats<V>(r);
@@ -166,7 +174,7 @@ class TriangleRasterizer {
     *l1 = f1 * *w, *l2 = f2 * *w;
   }
 
-  Rgb shade(float l1, float l2, float dx, float dy, int x, int row) const {
+  OBSCURA_RASTER_INLINE Rgb shade(float l1, float l2, float dx, float dy, int x, int row) const {
     FragmentInfo info{x, row, primitive_, front_facing_};
     if constexpr (PlainFragmentShader<P>) {
       return program_.fragment(interpolate(l1, l2), info);
@@ -184,48 +192,105 @@ class TriangleRasterizer {
     }
   }
 
-  // Single sample per pixel: batches of eight pixels along the row's covered span.
-  void shade_row(int row) {
-    int first = cols_.first, last = cols_.last;
+  // Single sample per pixel: aligned blocks of kBlock pixels along the row, each lane masked by
+  // coverage and the depth test. Every loop below has a fixed trip count, so the compiler
+  // vectorizes them; lanes outside the span recompute but never store (the row stride is padded
+  // to whole blocks, so a block never reaches into another tile).
+  OBSCURA_RASTER_INLINE void shade_row(int row) {
+    constexpr int kBlock = kRowAlignment;
+    constexpr int kWideRow = 16;  // wider boxes solve each row's span once (3 divisions)
     const int dy = row - rows_.first;
-    for (int i = 0; i < 3; ++i)
-      clip_span_to_edge(edge_at_origin_[i] + edge_[i].step_y * kSubpixelScale * dy +
-                            edge_[i].step_x * kSubpixelScale * (first - cols_.first) +
-                            edge_[i].bias,
-                        edge_[i].step_x * kSubpixelScale, &first, &last);
-    if (first > last) return;
-    const float z_row = z0_ + zy_ * dy;
+    int64_t e_row[3], step[3];  // edge values (+ bias) at the box's first pixel in this row
+    for (int i = 0; i < 3; ++i) {
+      e_row[i] = edge_at_origin_[i] + edge_[i].step_y * kSubpixelScale * dy + edge_[i].bias;
+      step[i] = edge_[i].step_x * kSubpixelScale;
+    }
+    int first = cols_.first, last = cols_.last;
+    const bool exact_span = last - first >= kWideRow;
+    if (exact_span) {
+      for (int i = 0; i < 3; ++i)  // each edge narrows the span left by the previous ones
+        clip_span_to_edge(e_row[i] + step[i] * (first - cols_.first), step[i], &first, &last);
+      if (first > last) return;
+    }
+    const float z_row = z0_ + zy_ * float(dy);
     float f_row[3];
-    for (int i = 0; i < 3; ++i) f_row[i] = f0_[i] + fy_[i] * dy;
+    for (int i = 0; i < 3; ++i) f_row[i] = f0_[i] + fy_[i] * float(dy);
     float* depth = target_.depth() + target_.sample_index(0, row);
+    Rgb* color = target_.color() + target_.sample_index(0, row);
 
-    constexpr int kBatch = 8;
-    for (int x0 = first; x0 <= last; x0 += kBatch) {
-      const int n = std::min(kBatch, last - x0 + 1);
-      const float dx0 = float(x0 - cols_.first);
-      float z[kBatch];
-      bool pass[kBatch];
-      bool any = false;
-      for (int i = 0; i < n; ++i) {
-        z[i] = std::clamp(z_row + zx_ * (dx0 + float(i)), 0.f, 1.f);
-        pass[i] = depth_passes<F>(z[i], depth[x0 + i]);
-        any |= pass[i];
+    for (int x0 = first & ~(kBlock - 1); x0 <= last; x0 += kBlock) {
+      bool lane[kBlock];
+      float z[kBlock];
+      const int64_t k0 = x0 - cols_.first;
+      int64_t e_block[3];
+      for (int i = 0; i < 3; ++i) e_block[i] = e_row[i] + step[i] * k0;
+      int live = 0;
+      for (int i = 0; i < kBlock; ++i) {
+        const int x = x0 + i;
+        bool inside = x >= first && x <= last;
+        if (!exact_span)
+          inside = inside && e_block[0] + lane_step_[0][i] >= 0 &&
+                   e_block[1] + lane_step_[1][i] >= 0 && e_block[2] + lane_step_[2][i] >= 0;
+        z[i] = clamp_unit(z_row + zx_ * float(k0 + i));
+        lane[i] = inside && depth_passes<F>(z[i], depth[x]);
+        live += lane[i];
       }
-      if (!any) continue;  // early depth rejection of the whole batch
-      float l1[kBatch], l2[kBatch], w[kBatch];
-      for (int i = 0; i < n; ++i) {
-        float dx = dx0 + float(i);
+      if (live == 0) continue;  // early depth rejection of the whole block
+      if (live <= 2) {          // small triangles: shade only the live pixels
+        for (int i = 0; i < kBlock; ++i) {
+          if (!lane[i]) continue;
+          float l1, l2, w;
+          weights(float(k0 + i), float(dy), &l1, &l2, &w);
+          write(target_.sample_index(x0 + i, row), z[i],
+                shade(l1, l2, float(k0 + i), float(dy), x0 + i, row), l1, l2, w, x0 + i, row);
+        }
+        continue;
+      }
+
+      float l1[kBlock], l2[kBlock], w[kBlock], r[kBlock], g[kBlock], b[kBlock];
+      for (int i = 0; i < kBlock; ++i) {
+        const float dx = float(x0 + i - cols_.first);
         float f0 = f_row[0] + fx_[0] * dx, f1 = f_row[1] + fx_[1] * dx, f2 = f_row[2] + fx_[2] * dx;
         w[i] = 1.f / (f0 + f1 + f2);
         l1[i] = f1 * w[i], l2[i] = f2 * w[i];
       }
-      Rgb shaded[kBatch];
-      for (int i = 0; i < n; ++i)
-        shaded[i] = shade(l1[i], l2[i], dx0 + float(i), float(dy), x0 + i, row);
-      for (int i = 0; i < n; ++i) {
-        if (!pass[i]) continue;
-        write(target_.sample_index(x0 + i, row), z[i], shaded[i], l1[i], l2[i], w[i], x0 + i, row);
+      // Kept a loop (not unrolled) so that the loop vectorizer, rather than straight-line SLP,
+      // turns the whole fragment shader into vector code, one pixel per lane.
+#if defined(__GNUC__) && !defined(__clang__)
+#pragma GCC unroll 1
+#pragma GCC ivdep
+#endif
+      for (int i = 0; i < kBlock; ++i) {
+        Rgb c = shade(l1[i], l2[i], float(x0 + i - cols_.first), float(dy), x0 + i, row);
+        r[i] = c.r, g[i] = c.g, b[i] = c.b;
       }
+      if (settings_.wireframe.enabled)
+        for (int i = 0; i < kBlock; ++i) {
+          Rgb c = apply_wireframe({r[i], g[i], b[i]}, x0 + i, row);
+          r[i] = c.r, g[i] = c.g, b[i] = c.b;
+        }
+      if (live == kBlock && settings_.blend == BlendMode::kReplace) {
+        // The common case inside large triangles: plain stores, which vectorize.
+        if (settings_.depth_write)
+          for (int i = 0; i < kBlock; ++i) depth[x0 + i] = z[i];
+        for (int i = 0; i < kBlock; ++i) color[x0 + i] = Rgb(r[i], g[i], b[i]);
+        if (target_.has_aovs())
+          for (int i = 0; i < kBlock; ++i)
+            write_aovs(target_.sample_index(x0 + i, row), l1[i], l2[i], w[i]);
+        continue;
+      }
+      if (settings_.depth_write)
+        for (int i = 0; i < kBlock; ++i) depth[x0 + i] = lane[i] ? z[i] : depth[x0 + i];
+      if (settings_.blend == BlendMode::kAdd) {
+        for (int i = 0; i < kBlock; ++i)
+          if (lane[i]) color[x0 + i] += Rgb(r[i], g[i], b[i]);
+      } else {
+        for (int i = 0; i < kBlock; ++i)
+          if (lane[i]) color[x0 + i] = Rgb(r[i], g[i], b[i]);
+      }
+      if (target_.has_aovs())
+        for (int i = 0; i < kBlock; ++i)
+          if (lane[i]) write_aovs(target_.sample_index(x0 + i, row), l1[i], l2[i], w[i]);
     }
   }
 
@@ -271,13 +336,15 @@ class TriangleRasterizer {
     if (settings_.wireframe.enabled) color = apply_wireframe(color, x, row);
     Rgb& dst = target_.color()[index];
     dst = settings_.blend == BlendMode::kAdd ? dst + color : color;
-    if (target_.has_aovs()) {
-      target_.object_ids()[index] = settings_.object_id;
-      target_.primitive_ids()[index] = primitive_;
-      target_.view_depth()[index] = w;
-      if constexpr (HasNormalOutput<P>)
-        target_.normals()[index] = program_.normal(interpolate(l1, l2));
-    }
+    if (target_.has_aovs()) write_aovs(index, l1, l2, w);
+  }
+
+  void write_aovs(size_t index, float l1, float l2, float w) {
+    target_.object_ids()[index] = settings_.object_id;
+    target_.primitive_ids()[index] = primitive_;
+    target_.view_depth()[index] = w;
+    if constexpr (HasNormalOutput<P>)
+      target_.normals()[index] = program_.normal(interpolate(l1, l2));
   }
 
   // Blends the wire colour in where the pixel centre lies within half the line width of an edge,
@@ -303,7 +370,8 @@ class TriangleRasterizer {
   float z0_, zx_, zy_;
   float f0_[3], fx_[3], fy_[3];
   float base_[kN], d1_[kN], d2_[kN];
-  float wire_scale_[3];
+  float wire_scale_[3] = {};
+  int64_t lane_step_[3][kRowAlignment];  // edge step × lane index, to add without multiplying
   uint32_t primitive_ = 0;
   bool front_facing_ = true;
 };

@@ -7,9 +7,20 @@
 
 #include <array>
 #include <bit>
+#include <cstdint>
 #include <type_traits>
 
 #include "obscura/math/vector.h"
+
+// The tile loop is compiled twice on x86-64 (baseline and AVX2, chosen at run time; see
+// pipeline.h). Per-pixel code must inline into each copy to be compiled for its target, and
+// compilers do not inline across targets on their own: shader helper functions called per pixel
+// should be declared OBSCURA_RASTER_INLINE (members defined in the class body are inlined).
+#if defined(__GNUC__)
+#define OBSCURA_RASTER_INLINE [[gnu::always_inline]] inline
+#else
+#define OBSCURA_RASTER_INLINE inline
+#endif
 
 namespace obscura::raster {
 
