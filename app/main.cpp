@@ -9,6 +9,7 @@
 #include "color_command.h"
 #include "image_command.h"
 #include "info_command.h"
+#include "raster_clip_command.h"
 #include "render_command.h"
 #include "usage_error.h"
 
@@ -21,6 +22,7 @@ int main(int argc, char** argv) {
   obscura::app::add_color_command(app);
   obscura::app::add_image_command(app);
   obscura::app::add_info_command(app);
+  obscura::app::add_raster_clip_command(app);
 
   try {
     app.parse(argc, argv);

@@ -1,0 +1,187 @@
+// The rasterization pipeline: one draw call from vertices to pixels.
+//
+//   1. vertex shader, once per vertex (parallel);
+//   2. primitive assembly, clipping, culling, snapping and binning into 64×64 tiles, in chunks of
+//      consecutive triangles (parallel);
+//   3. per tile, the tile's triangles in submission order: rasterization, depth test,
+//      perspective-correct interpolation, fragment shader, output (parallel over tiles).
+// Every pixel sees its triangles in submission order, so the image is identical for any number
+// of threads. A Program is a plain C++ type (see tile_rasterizer.h's concept); it is a template
+// argument, so shaders inline into the pixel loop: no virtual call per pixel or vertex.
+#pragma once
+
+#include <cstdint>
+#include <memory>
+#include <span>
+#include <string>
+#include <vector>
+
+#include <tbb/parallel_for.h>
+
+#include "obscura/math/error.h"
+#include "obscura/raster/binner.h"
+#include "obscura/raster/clipper.h"
+#include "obscura/raster/depth_test.h"
+#include "obscura/raster/msaa.h"
+#include "obscura/raster/render_target.h"
+#include "obscura/raster/shaded_vertex.h"
+#include "obscura/raster/tile_rasterizer.h"
+
+namespace obscura::raster {
+
+struct DrawState {
+  DepthFunc depth_func = DepthFunc::kLess;
+  bool depth_write = true;
+  CullMode cull = CullMode::kNone;
+  FrontFace front_face = FrontFace::kCounterClockwise;
+  BlendMode blend = BlendMode::kReplace;
+  uint32_t object_id = 1;  // written to the id output; 0 (kNoObject) is the background
+  Wireframe wireframe;
+};
+
+namespace detail {
+
+template <Program P>
+struct TileJob {
+  const P& program;
+  RenderTarget& target;
+  FragmentSettings settings;
+  const std::vector<Chunk<typename P::Varyings>>& chunks;
+  const ShadedVertex<typename P::Varyings>* shared;
+  TileGrid grid;
+};
+
+// One tile: its triangles from every chunk, in submission order.
+template <Program P, DepthFunc F>
+OBSCURA_RASTER_INLINE void rasterize_tile(const TileJob<P>& job, int tile) {
+  PixelRect rect{(tile % job.grid.columns) * kTileSize, (tile / job.grid.columns) * kTileSize, 0,
+                 0};
+  rect.x1 = std::min(rect.x0 + kTileSize, job.target.width());
+  rect.y1 = std::min(rect.y0 + kTileSize, job.target.height());
+  TriangleRasterizer<P, F> rasterizer(job.program, job.target, job.settings);
+  for (const auto& chunk : job.chunks) {
+    for (uint32_t k = chunk.bin_start[tile]; k < chunk.bin_start[tile + 1]; ++k) {
+      const BinnedTriangle& t = chunk.triangles[chunk.bin_items[k]];
+      rasterizer.draw(chunk.vertex(t.vertex[0], job.shared), chunk.vertex(t.vertex[1], job.shared),
+                      chunk.vertex(t.vertex[2], job.shared), t.primitive, rect);
+    }
+  }
+}
+
+// flatten: the program's own helper functions inline too, whatever the compiler's heuristics.
+template <Program P, DepthFunc F>
+[[gnu::flatten]] void rasterize_tile_baseline(const TileJob<P>& job, int tile) {
+  rasterize_tile<P, F>(job, tile);
+}
+
+#if defined(__x86_64__) && defined(__GNUC__)
+// The same code compiled for AVX2 (8-wide float vectors), used when the CPU has it. Only this
+// function carries the target, so nothing compiled for AVX2 can run on a CPU without it.
+template <Program P, DepthFunc F>
+[[gnu::target("avx2"), gnu::flatten]] void rasterize_tile_avx2(const TileJob<P>& job, int tile) {
+  rasterize_tile<P, F>(job, tile);
+}
+inline bool cpu_has_avx2() {
+  static const bool has = __builtin_cpu_supports("avx2");
+  return has;
+}
+#endif
+
+template <Program P, DepthFunc F>
+void rasterize_tiles(const TileJob<P>& job) {
+  tbb::parallel_for(0, job.grid.count(), [&](int tile) {
+#if defined(__x86_64__) && defined(__GNUC__)
+    if (cpu_has_avx2()) return rasterize_tile_avx2<P, F>(job, tile);
+#endif
+    rasterize_tile_baseline<P, F>(job, tile);
+  });
+}
+
+}  // namespace detail
+
+// Draws triangles: with `indices` empty, vertices 3t, 3t+1, 3t+2 form triangle t; otherwise
+// indices 3t..3t+2 do. Throws obscura::Error for an index out of range or a count not a multiple
+// of three.
+template <Program P>
+void draw(RenderTarget& target, const DrawState& state, const P& program,
+          std::span<const typename P::Vertex> vertices, std::span<const uint32_t> indices = {}) {
+  using V = typename P::Varyings;
+  const bool indexed = !indices.empty();
+  const size_t corner_count = indexed ? indices.size() : vertices.size();
+  if (corner_count % 3 != 0)
+    throw Error("draw", "the number of " + std::string(indexed ? "indices" : "vertices") + " (" +
+                            std::to_string(corner_count) + ") is not a multiple of 3");
+  if (indexed)
+    for (size_t i = 0; i < indices.size(); ++i)
+      if (indices[i] >= vertices.size())
+        throw Error("draw", "index " + std::to_string(i) + " is " + std::to_string(indices[i]) +
+                                " but there are only " + std::to_string(vertices.size()) +
+                                " vertices");
+  const uint32_t triangle_count = uint32_t(corner_count / 3);
+  if (triangle_count == 0) return;
+
+  const Viewport viewport{target.width(), target.height()};
+  const GuardBand guard = GuardBand::for_viewport(viewport.width, viewport.height);
+
+  // 1. Vertex shader.
+  auto shared = std::make_unique_for_overwrite<ShadedVertex<V>[]>(vertices.size());
+  tbb::parallel_for(tbb::blocked_range<size_t>(0, vertices.size(), 4096),
+                    [&](const tbb::blocked_range<size_t>& r) {
+                      for (size_t i = r.begin(); i < r.end(); ++i)
+                        shared[i] =
+                            make_shaded_vertex(program.vertex(vertices[i]), viewport, guard);
+                    });
+
+  // 2. Assembly, clipping, culling, binning.
+  int extent = 0;
+  for (Vector2i o : msaa_sample_offsets(target.samples()))
+    extent = std::max({extent, std::abs(o.x), std::abs(o.y)});
+  const BinSettings bin{.viewport = viewport,
+                        .guard = guard,
+                        .cull = state.cull,
+                        .front_face = state.front_face,
+                        .sample_extent = extent};
+  const TileGrid grid(viewport);
+  std::vector<Chunk<V>> chunks((triangle_count + kChunkTriangles - 1) / kChunkTriangles);
+  auto corner = [&](uint32_t t, int k) { return indexed ? indices[3 * t + k] : 3 * t + k; };
+  tbb::parallel_for(size_t(0), chunks.size(), [&](size_t c) {
+    uint32_t first = uint32_t(c) * kChunkTriangles;
+    uint32_t last = std::min(triangle_count, first + kChunkTriangles);
+    chunks[c].build(first, last, corner, shared.get(), bin, grid);
+  });
+
+  // 3. Tiles: the depth function is a template argument so the pixel loop has no switch.
+  FragmentSettings settings;
+  settings.depth_write = state.depth_write;
+  settings.blend = state.blend;
+  settings.front_face = state.front_face;
+  settings.object_id = state.object_id;
+  settings.wireframe = state.wireframe;
+  const detail::TileJob<P> job{program, target, settings, chunks, shared.get(), grid};
+  switch (state.depth_func) {
+#define OBSCURA_RASTER_CASE(F)          \
+  case F:                               \
+    detail::rasterize_tiles<P, F>(job); \
+    break;
+    OBSCURA_RASTER_CASE(DepthFunc::kNever)
+    OBSCURA_RASTER_CASE(DepthFunc::kLess)
+    OBSCURA_RASTER_CASE(DepthFunc::kEqual)
+    OBSCURA_RASTER_CASE(DepthFunc::kLessEqual)
+    OBSCURA_RASTER_CASE(DepthFunc::kGreater)
+    OBSCURA_RASTER_CASE(DepthFunc::kNotEqual)
+    OBSCURA_RASTER_CASE(DepthFunc::kGreaterEqual)
+    OBSCURA_RASTER_CASE(DepthFunc::kAlways)
+#undef OBSCURA_RASTER_CASE
+  }
+}
+
+// The same for a std::vector or any contiguous range.
+template <Program P>
+void draw(RenderTarget& target, const DrawState& state, const P& program,
+          const std::vector<typename P::Vertex>& vertices,
+          const std::vector<uint32_t>& indices = {}) {
+  draw(target, state, program, std::span<const typename P::Vertex>(vertices),
+       std::span<const uint32_t>(indices));
+}
+
+}  // namespace obscura::raster

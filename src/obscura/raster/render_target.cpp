@@ -1,0 +1,93 @@
+#include "obscura/raster/render_target.h"
+
+#include <algorithm>
+#include <limits>
+#include <string>
+
+#include "obscura/math/error.h"
+#include "obscura/raster/msaa.h"
+
+namespace obscura::raster {
+
+RenderTarget::RenderTarget(int width, int height, int samples, bool aovs)
+    : width_(width),
+      height_(height),
+      samples_(samples),
+      stride_((width + kRowAlignment - 1) / kRowAlignment * kRowAlignment),
+      aovs_(aovs) {
+  if (width <= 0 || height <= 0)
+    throw Error("render target", "size must be positive; got " + std::to_string(width) + "x" +
+                                     std::to_string(height));
+  if (!is_valid_sample_count(samples))
+    throw Error("render target", "MSAA samples must be 1, 4 or 8; got " + std::to_string(samples));
+  size_t n = size_t(stride_) * height * samples;
+  color_.resize(n);
+  depth_.resize(n, 1.f);
+  if (aovs) {
+    object_id_.resize(n, kNoObject);
+    primitive_id_.resize(n, 0);
+    view_depth_.resize(n, std::numeric_limits<float>::infinity());
+    normal_.resize(n);
+  }
+}
+
+void RenderTarget::clear(Rgb color, float depth) {
+  std::fill(color_.begin(), color_.end(), color);
+  std::fill(depth_.begin(), depth_.end(), depth);
+  if (aovs_) {
+    std::fill(object_id_.begin(), object_id_.end(), kNoObject);
+    std::fill(primitive_id_.begin(), primitive_id_.end(), 0u);
+    std::fill(view_depth_.begin(), view_depth_.end(), std::numeric_limits<float>::infinity());
+    std::fill(normal_.begin(), normal_.end(), Vector3f());
+  }
+}
+
+Image RenderTarget::resolve_color() const {
+  Image image(width_, height_, 3);
+  const float inv = 1.f / float(samples_);
+  for (int y = 0; y < height_; ++y)
+    for (int x = 0; x < width_; ++x) {
+      Rgb sum;
+      for (int s = 0; s < samples_; ++s) sum += color_[sample_index(x, y, s)];
+      image.set_rgb(x, y, sum * inv);
+    }
+  return image;
+}
+
+void RenderTarget::accumulate_into(Film& film, float weight) const {
+  if (film.width() != width_ || film.height() != height_)
+    throw Error("render target", "film size " + std::to_string(film.width()) + "x" +
+                                     std::to_string(film.height()) + " differs from " +
+                                     std::to_string(width_) + "x" + std::to_string(height_));
+  Image resolved = resolve_color();
+  for (int y = 0; y < height_; ++y)
+    for (int x = 0; x < width_; ++x) film.add_sample({x, y}, resolved.rgb(x, y), weight);
+}
+
+Image RenderTarget::depth_image() const {
+  Image image(width_, height_, 1);
+  for (int y = 0; y < height_; ++y)
+    for (int x = 0; x < width_; ++x) image.at(x, y, 0) = depth_[sample_index(x, y)];
+  return image;
+}
+
+Image RenderTarget::view_depth_image() const {
+  if (!aovs_) throw Error("render target", "view depth needs a render target with aovs on");
+  Image image(width_, height_, 1);
+  for (int y = 0; y < height_; ++y)
+    for (int x = 0; x < width_; ++x) image.at(x, y, 0) = view_depth_[sample_index(x, y)];
+  return image;
+}
+
+Image RenderTarget::normal_image() const {
+  if (!aovs_) throw Error("render target", "normals need a render target with aovs on");
+  Image image(width_, height_, 3);
+  for (int y = 0; y < height_; ++y)
+    for (int x = 0; x < width_; ++x) {
+      Vector3f n = normal_[sample_index(x, y)];
+      image.set_rgb(x, y, {n.x, n.y, n.z});
+    }
+  return image;
+}
+
+}  // namespace obscura::raster

@@ -1,0 +1,90 @@
+#include "obscura/raster/texture.h"
+
+#include <algorithm>
+#include <cmath>
+
+#include "obscura/math/error.h"
+
+namespace obscura::raster {
+
+namespace {
+
+int wrap(int i, int n) {
+  int r = i % n;
+  return r < 0 ? r + n : r;
+}
+
+}  // namespace
+
+Texture::Texture(const Image& image) {
+  if (image.width <= 0 || image.height <= 0 || image.channels < 3)
+    throw Error("texture", "expected a non-empty RGB or RGBA image");
+  Level base{image.width, image.height, {}};
+  base.texels.resize(size_t(image.width) * image.height);
+  for (int y = 0; y < image.height; ++y)
+    for (int x = 0; x < image.width; ++x)
+      base.texels[size_t(y) * image.width + x] = image.rgb(x, y);
+  levels_.push_back(std::move(base));
+  while (levels_.back().width > 1 || levels_.back().height > 1) {
+    const Level& src = levels_.back();
+    Level dst{std::max(1, src.width / 2), std::max(1, src.height / 2), {}};
+    dst.texels.resize(size_t(dst.width) * dst.height);
+    for (int y = 0; y < dst.height; ++y)
+      for (int x = 0; x < dst.width; ++x) {
+        // The source texels whose centres fall in this texel's footprint.
+        int x0 = x * src.width / dst.width, x1 = (x + 1) * src.width / dst.width;
+        int y0 = y * src.height / dst.height, y1 = (y + 1) * src.height / dst.height;
+        Rgb sum;
+        for (int j = y0; j < y1; ++j)
+          for (int i = x0; i < x1; ++i) sum += src.texels[size_t(j) * src.width + i];
+        dst.texels[size_t(y) * dst.width + x] = sum / float((x1 - x0) * (y1 - y0));
+      }
+    levels_.push_back(std::move(dst));
+  }
+}
+
+Rgb Texture::texel(int level, int i, int j) const {
+  const Level& l = levels_[level];
+  return l.texels[size_t(wrap(j, l.height)) * l.width + wrap(i, l.width)];
+}
+
+Rgb Texture::sample_nearest(float u, float v) const {
+  return texel(0, int(std::floor(u * width())), int(std::floor(v * height())));
+}
+
+Rgb Texture::sample_bilinear(float u, float v, int level) const {
+  level = std::clamp(level, 0, levels() - 1);
+  float x = u * width(level) - 0.5f, y = v * height(level) - 0.5f;
+  float fx = std::floor(x), fy = std::floor(y);
+  int i = int(fx), j = int(fy);
+  float tx = x - fx, ty = y - fy;
+  return (texel(level, i, j) * (1 - tx) + texel(level, i + 1, j) * tx) * (1 - ty) +
+         (texel(level, i, j + 1) * (1 - tx) + texel(level, i + 1, j + 1) * tx) * ty;
+}
+
+Rgb Texture::sample_trilinear(float u, float v, float du_dx, float dv_dx, float du_dy,
+                              float dv_dy) const {
+  float w = float(width()), h = float(height());
+  float rho = std::max(std::hypot(du_dx * w, dv_dx * h), std::hypot(du_dy * w, dv_dy * h));
+  float lambda = rho > 0 ? std::log2(rho) : 0.f;
+  if (lambda <= 0) return sample_bilinear(u, v, 0);
+  if (lambda >= float(levels() - 1)) return sample_bilinear(u, v, levels() - 1);
+  int lo = int(lambda);
+  float t = lambda - float(lo);
+  return sample_bilinear(u, v, lo) * (1 - t) + sample_bilinear(u, v, lo + 1) * t;
+}
+
+Rgb Texture::sample(TextureFilter filter, float u, float v, float du_dx, float dv_dx, float du_dy,
+                    float dv_dy) const {
+  switch (filter) {
+    case TextureFilter::kNearest:
+      return sample_nearest(u, v);
+    case TextureFilter::kBilinear:
+      return sample_bilinear(u, v, 0);
+    case TextureFilter::kTrilinear:
+      return sample_trilinear(u, v, du_dx, dv_dx, du_dy, dv_dy);
+  }
+  return {};
+}
+
+}  // namespace obscura::raster
