@@ -36,6 +36,7 @@ void linearize_if_encoded(const std::string& path, Image& image) {
 void run_convert(const ConvertOptions& o) {
   ImageWriteOptions write_options = image_write_options(o.display);
   check_output_path(o.output);
+  check_not_an_input(o.output, {o.input});
   Image image = read_image(o.input);
   try {
     image_format_for_path(o.input);
@@ -59,7 +60,10 @@ Rgb heat_color(float t) {
 }
 
 void run_diff(const DiffOptions& o) {
-  if (!o.heatmap.empty()) check_output_path(o.heatmap);
+  if (!o.heatmap.empty()) {
+    check_output_path(o.heatmap);
+    check_not_an_input(o.heatmap, {o.a, o.b});
+  }
   Image a = read_image(o.a), b = read_image(o.b);
   if (a.width != b.width || a.height != b.height || a.channels != b.channels)
     throw Error(o.b, "cannot compare a " + std::to_string(b.width) + "x" +

@@ -155,6 +155,16 @@ TEST(ColorCli, ImageConvertAndDiff) {
   Result sizes = run("image diff " + exr + " " + small);
   EXPECT_EQ(sizes.exit_code, 1);
   EXPECT_NE(sizes.out.find("cannot compare"), std::string::npos) << sizes.out;
+
+  // Never overwrite an input: converting a file onto itself, or a heat map onto a compared file.
+  auto before = fs::last_write_time(png);
+  Result onto_itself = run("image convert " + png + " " + png);
+  EXPECT_EQ(onto_itself.exit_code, 1) << onto_itself.out;
+  EXPECT_NE(onto_itself.out.find("refusing to overwrite an input"), std::string::npos)
+      << onto_itself.out;
+  Result heat_onto_input = run("image diff " + png + " " + other + " --heatmap " + other);
+  EXPECT_EQ(heat_onto_input.exit_code, 1) << heat_onto_input.out;
+  EXPECT_EQ(fs::last_write_time(png), before);
   fs::remove_all(dir);
 }
 

@@ -40,7 +40,7 @@ Scene sky_over_floor(float s = 100) {
   scene.materials = {diffuse_material("floor", Rgb(0.5f)),
                      diffuse_material("sky", Rgb(0.f), Rgb(1.f))};
   scene.add_meshes({quad("floor", 0, {-s, 0, -s}, {-s, 0, s}, {s, 0, s}, {s, 0, -s}),
-                  quad("sky", 1, {-s, 2, -s}, {s, 2, -s}, {s, 2, s}, {-s, 2, s})});
+                    quad("sky", 1, {-s, 2, -s}, {s, 2, -s}, {s, 2, s}, {-s, 2, s})});
   return scene;
 }
 
@@ -65,8 +65,7 @@ TEST(Whitted, GlassSlabTransmitsWhatFresnelLeaves) {
   Scene scene = sky_over_floor();
   scene.materials.push_back(diffuse_material("glass", Rgb(0.f)));
   const float s = 100;
-  scene.add_mesh(
-      quad("slab top", 2, {-s, 1.2f, -s}, {-s, 1.2f, s}, {s, 1.2f, s}, {s, 1.2f, -s}));
+  scene.add_mesh(quad("slab top", 2, {-s, 1.2f, -s}, {-s, 1.2f, s}, {s, 1.2f, s}, {s, 1.2f, -s}));
   scene.add_mesh(quad("slab bottom", 2, {-s, 1, -s}, {s, 1, -s}, {s, 1, s}, {-s, 1, s}));
   TraceScene trace_scene(scene, device());
   trace_scene.set_material(2, TraceMaterial(DielectricBsdf(1.5f, 0)));

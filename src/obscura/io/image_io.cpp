@@ -180,6 +180,14 @@ bool is_display_format(ImageFormat f) {
          f == ImageFormat::kY4m;
 }
 
+void check_not_an_input(const std::string& output, std::initializer_list<std::string> inputs) {
+  std::error_code ec;
+  for (const std::string& input : inputs)
+    if (fs::exists(output, ec) && fs::equivalent(output, input, ec))
+      throw Error(output, "output is the input file '" + input +
+                              "'; refusing to overwrite an input, choose another output path");
+}
+
 void check_output_path(const std::string& path) {
   if (path.empty()) throw Error("output path is empty");
   fs::path target(path);

@@ -14,6 +14,7 @@
 // half-float EXR holds are clamped to its largest value.
 #pragma once
 
+#include <initializer_list>
 #include <string>
 
 #include "obscura/color/develop.h"
@@ -41,6 +42,10 @@ struct ImageWriteOptions {
 struct WriteReport {
   DevelopStats stats;  // non-finite and out-of-gamut pixel counts
 };
+
+// Throws obscura::Error when `output` names the same file as one of `inputs`: a command never
+// overwrites what it reads.
+void check_not_an_input(const std::string& output, std::initializer_list<std::string> inputs);
 
 // Writes a linear RGB(A) image (grey images are written as grey where the format allows).
 WriteReport write_image(const std::string& path, const Image& linear_image,

@@ -2,7 +2,6 @@
 
 #include <variant>
 
-
 namespace obscura {
 
 TraceMaterial::TraceMaterial(const Material& material, const std::vector<Texture>* textures)

@@ -21,7 +21,8 @@ std::vector<Mesh> flatten_instances(const Scene& scene) {
     world.uvs = mesh.uvs;
     world.positions.reserve(mesh.positions.size());
     for (Point3f p : mesh.positions) world.positions.push_back(instance.world_from_object(p));
-    for (Normal3f n : mesh.normals) world.normals.push_back(normalize(instance.world_from_object(n)));
+    for (Normal3f n : mesh.normals)
+      world.normals.push_back(normalize(instance.world_from_object(n)));
     // A mirroring transform turns counter-clockwise faces clockwise; restore the winding.
     if (instance.world_from_object.swaps_handedness())
       for (size_t t = 0; t < world.indices.size(); t += 3)
