@@ -25,13 +25,6 @@ bool consistent_sides(const SurfaceHit& hit, Vector3f wo, Vector3f wi, bool tran
   return transmission ? side_o * side_i < 0 : side_o * side_i > 0;
 }
 
-Ray spawn_ray(const TraceScene& scene, const SurfaceHit& hit, Vector3f w) {
-  Ray ray;
-  ray.origin = offset_ray_origin(hit.position, hit.geometric_normal, w, scene.ray_epsilon());
-  ray.direction = w;
-  return ray;
-}
-
 }  // namespace
 
 Rgb PathTracer::radiance(const TraceScene& scene, const Ray& camera_ray, Sampler& sampler,

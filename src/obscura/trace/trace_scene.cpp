@@ -148,6 +148,13 @@ Point3f offset_ray_origin(Point3f p, Normal3f n, Vector3f w, float epsilon) {
 
 namespace obscura {
 
+Ray spawn_ray(const TraceScene& scene, const SurfaceHit& hit, Vector3f w) {
+  Ray ray;
+  ray.origin = offset_ray_origin(hit.position, hit.geometric_normal, w, scene.ray_epsilon());
+  ray.direction = w;
+  return ray;
+}
+
 Ray shadow_ray(const TraceScene& scene, const SurfaceHit& hit, const LightSample& light) {
   Ray ray;
   ray.origin = offset_ray_origin(hit.position, hit.geometric_normal, light.wi, scene.ray_epsilon());

@@ -49,6 +49,9 @@ class TraceScene {
 // Points a ray's origin off a surface along its normal, to the side the ray leaves towards.
 Point3f offset_ray_origin(Point3f p, Normal3f n, Vector3f w, float epsilon);
 
+// A ray leaving `hit` in direction `w`, its origin moved off the surface to the side it leaves to.
+Ray spawn_ray(const TraceScene& scene, const SurfaceHit& hit, Vector3f w);
+
 // The shadow ray from a hit towards a light sample: it leaves the surface on wi's side and stops
 // just in front of the light's surface (offset along the light's normal, so grazing rays to
 // large lights are not blocked by the light itself), or runs to infinity for distant lights.

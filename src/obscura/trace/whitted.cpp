@@ -4,17 +4,6 @@
 
 namespace obscura {
 
-namespace {
-
-Ray spawn_ray(const TraceScene& scene, const SurfaceHit& hit, Vector3f w) {
-  Ray ray;
-  ray.origin = offset_ray_origin(hit.position, hit.geometric_normal, w, scene.ray_epsilon());
-  ray.direction = w;
-  return ray;
-}
-
-}  // namespace
-
 Rgb WhittedIntegrator::radiance(const TraceScene& scene, const Ray& ray, Sampler& sampler,
                                 RayCounts& counts, FirstHit* first_hit) const {
   Ray unit = ray;
