@@ -64,10 +64,10 @@ TEST(Sampling, ConcentricDiskIsUniformAndMapsEdgesToTheRim) {
   }
   EXPECT_NEAR(r2 / kN, 0.5, 0.005);  // E[r²] = 1/2 for a uniform unit disk
   for (int q : quadrant) EXPECT_NEAR(q, kN / 4, 5 * std::sqrt(kN * 0.25 * 0.75));
-  Point2f rim = sample_uniform_disk_concentric({1.f, 0.5f});
+  Point2f rim = sample_uniform_disk_concentric(Point2f{1.f, 0.5f});
   EXPECT_NEAR(rim.x, 1.f, 1e-6f);
   EXPECT_NEAR(rim.y, 0.f, 1e-6f);
-  Point2f centre = sample_uniform_disk_concentric({0.5f, 0.5f});
+  Point2f centre = sample_uniform_disk_concentric(Point2f{0.5f, 0.5f});
   EXPECT_EQ(centre, Point2f(0, 0));
 }
 

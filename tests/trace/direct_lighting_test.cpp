@@ -5,6 +5,8 @@
 #include <cmath>
 #include <numbers>
 
+#include "trace_test_scenes.h"
+
 namespace obscura {
 namespace {
 
@@ -13,15 +15,6 @@ namespace {
 double corner_form_factor(double X, double Y) {
   double sx = std::sqrt(1 + X * X), sy = std::sqrt(1 + Y * Y);
   return (X / sx * std::atan(Y / sx) + Y / sy * std::atan(X / sy)) / (2 * std::numbers::pi);
-}
-
-Mesh quad(const char* name, uint32_t material, Point3f a, Point3f b, Point3f c, Point3f d) {
-  Mesh m;
-  m.name = name;
-  m.positions = {a, b, c, d};
-  m.indices = {0, 1, 2, 0, 2, 3};
-  m.material = material;
-  return m;
 }
 
 Material lambertian(const char* name, float albedo, float radiance) {
@@ -40,12 +33,12 @@ struct LitFloor {
     scene.materials = {lambertian("floor", kAlbedo, 0), lambertian("light", 0, kRadiance)};
     // Floor facing up; light facing down (its winding is clockwise seen from below... i.e. the
     // normal (p1 − p0) × (p2 − p0) points to −Y).
-    scene.add_mesh(quad("floor", 0, {-5, 0, -5}, {-5, 0, 5}, {5, 0, 5}, {5, 0, -5}));
+    scene.add_mesh(testing::make_quad("floor", 0, {-5, 0, -5}, {-5, 0, 5}, {5, 0, 5}, {5, 0, -5}));
     const float a = kHalfSide, h = kHeight;
-    scene.add_mesh(quad("light", 1, {-a, h, -a}, {a, h, -a}, {a, h, a}, {-a, h, a}));
+    scene.add_mesh(testing::make_quad("light", 1, {-a, h, -a}, {a, h, -a}, {a, h, a}, {-a, h, a}));
     if (with_blocker)
-      scene.add_mesh(
-          quad("blocker", 0, {-2, 0.5f, -2}, {-2, 0.5f, 2}, {2, 0.5f, 2}, {2, 0.5f, -2}));
+      scene.add_mesh(testing::make_quad("blocker", 0, {-2, 0.5f, -2}, {-2, 0.5f, 2}, {2, 0.5f, 2},
+                                        {2, 0.5f, -2}));
   }
 };
 

@@ -42,6 +42,17 @@ inline Mesh make_sphere(Point3f centre, float radius, uint32_t material, int rin
 
 // A pinhole camera at `eye` looking at `target`, square film of `size` pixels and the given
 // horizontal field of view.
+// A quad p0 p1 p2 p3 as two triangles; its front face is the side (p1 − p0) × (p2 − p0) points to.
+inline Mesh make_quad(const char* name, uint32_t material, Point3f p0, Point3f p1, Point3f p2,
+                      Point3f p3) {
+  Mesh mesh;
+  mesh.name = name;
+  mesh.positions = {p0, p1, p2, p3};
+  mesh.indices = {0, 1, 2, 0, 2, 3};
+  mesh.material = material;
+  return mesh;
+}
+
 inline Camera make_camera(Point3d eye, Point3d target, int size, double hfov_degrees) {
   Camera camera;
   camera.world_from_camera = world_from_camera_look_at(eye, target);

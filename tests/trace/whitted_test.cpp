@@ -10,15 +10,6 @@
 namespace obscura {
 namespace {
 
-Mesh quad(const char* name, uint32_t material, Point3f a, Point3f b, Point3f c, Point3f d) {
-  Mesh m;
-  m.name = name;
-  m.positions = {a, b, c, d};
-  m.indices = {0, 1, 2, 0, 2, 3};
-  m.material = material;
-  return m;
-}
-
 std::shared_ptr<EmbreeDevice> device() {
   static auto d = std::make_shared<EmbreeDevice>();
   return d;
@@ -39,8 +30,8 @@ Scene sky_over_floor(float s = 100) {
   scene.name = "sky";
   scene.materials = {diffuse_material("floor", Rgb(0.5f)),
                      diffuse_material("sky", Rgb(0.f), Rgb(1.f))};
-  scene.add_meshes({quad("floor", 0, {-s, 0, -s}, {-s, 0, s}, {s, 0, s}, {s, 0, -s}),
-                    quad("sky", 1, {-s, 2, -s}, {s, 2, -s}, {s, 2, s}, {-s, 2, s})});
+  scene.add_meshes({testing::make_quad("floor", 0, {-s, 0, -s}, {-s, 0, s}, {s, 0, s}, {s, 0, -s}),
+                    testing::make_quad("sky", 1, {-s, 2, -s}, {s, 2, -s}, {s, 2, s}, {-s, 2, s})});
   return scene;
 }
 
@@ -65,8 +56,10 @@ TEST(Whitted, GlassSlabTransmitsWhatFresnelLeaves) {
   Scene scene = sky_over_floor();
   scene.materials.push_back(diffuse_material("glass", Rgb(0.f)));
   const float s = 100;
-  scene.add_mesh(quad("slab top", 2, {-s, 1.2f, -s}, {-s, 1.2f, s}, {s, 1.2f, s}, {s, 1.2f, -s}));
-  scene.add_mesh(quad("slab bottom", 2, {-s, 1, -s}, {s, 1, -s}, {s, 1, s}, {-s, 1, s}));
+  scene.add_mesh(testing::make_quad("slab top", 2, {-s, 1.2f, -s}, {-s, 1.2f, s}, {s, 1.2f, s},
+                                    {s, 1.2f, -s}));
+  scene.add_mesh(
+      testing::make_quad("slab bottom", 2, {-s, 1, -s}, {s, 1, -s}, {s, 1, s}, {-s, 1, s}));
   TraceScene trace_scene(scene, device());
   trace_scene.set_material(2, TraceMaterial(DielectricBsdf(1.5f, 0)));
   trace_scene.set_material(0, TraceMaterial(LambertianBsdf{Rgb(0.f)}));  // no light from below
@@ -120,7 +113,8 @@ TraceScene lone_floor() {
   scene.name = "floor";
   scene.materials = {diffuse_material("floor", Rgb(0.5f))};
   const float s = 100;
-  scene.add_meshes({quad("floor", 0, {-s, 0, -s}, {-s, 0, s}, {s, 0, s}, {s, 0, -s})});
+  scene.add_meshes(
+      {testing::make_quad("floor", 0, {-s, 0, -s}, {-s, 0, s}, {s, 0, s}, {s, 0, -s})});
   return TraceScene(scene, device());
 }
 

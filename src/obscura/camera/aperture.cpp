@@ -6,34 +6,24 @@
 
 #include "obscura/camera/number_text.h"
 #include "obscura/math/error.h"
+#include "obscura/math/sampling.h"
 
 namespace obscura {
 
 namespace {
 
-constexpr double kPi = std::numbers::pi;
-
 Point2d polygon_vertex(const Aperture& a, int k) {
-  double angle = a.rotation_degrees * (kPi / 180) + 2 * kPi * k / a.blades;
+  double angle =
+      a.rotation_degrees * (std::numbers::pi / 180) + 2 * std::numbers::pi * k / a.blades;
   return {std::cos(angle), std::sin(angle)};
 }
 
 }  // namespace
 
 Point2d sample_aperture(const Aperture& a, Point2d u) {
+  if (a.blades == 0) return sample_uniform_disk_concentric(u);
   double ox = 2 * u.x - 1, oy = 2 * u.y - 1;
   if (ox == 0 && oy == 0) return {0, 0};
-  if (a.blades == 0) {  // Shirley–Chiu concentric square-to-disk
-    double r, theta;
-    if (std::abs(ox) > std::abs(oy)) {
-      r = ox;
-      theta = (kPi / 4) * (oy / ox);
-    } else {
-      r = oy;
-      theta = kPi / 2 - (kPi / 4) * (ox / oy);
-    }
-    return {r * std::cos(theta), r * std::sin(theta)};
-  }
   // The square ring at max-norm r holds area ∝ r², as the polygon ring r·boundary does; along a
   // ring, distance along the square's boundary maps linearly onto the polygon's edges, and a
   // straight edge seen from the centre sweeps area linearly too, so the map preserves area.
@@ -67,8 +57,8 @@ bool aperture_contains(const Aperture& a, Point2d p) {
 }
 
 double aperture_area(const Aperture& a) {
-  if (a.blades == 0) return kPi;
-  return 0.5 * a.blades * std::sin(2 * kPi / a.blades);
+  if (a.blades == 0) return std::numbers::pi;
+  return 0.5 * a.blades * std::sin(2 * std::numbers::pi / a.blades);
 }
 
 void validate(const Aperture& a) {

@@ -5,20 +5,6 @@
 
 namespace obscura {
 
-Point2f sample_uniform_disk_concentric(Point2f u) {
-  float ox = 2 * u.x - 1, oy = 2 * u.y - 1;
-  if (ox == 0 && oy == 0) return {0, 0};
-  float r, theta;
-  if (std::abs(ox) > std::abs(oy)) {
-    r = ox;
-    theta = (kPi / 4) * (oy / ox);
-  } else {
-    r = oy;
-    theta = kPi / 2 - (kPi / 4) * (ox / oy);
-  }
-  return {r * std::cos(theta), r * std::sin(theta)};
-}
-
 Point2f sample_uniform_disk_polar(Point2f u) {
   float r = std::sqrt(u.x), phi = 2 * kPi * u.y;
   return {r * std::cos(phi), r * std::sin(phi)};
