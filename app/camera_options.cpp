@@ -97,8 +97,8 @@ const Camera& find_camera(const Scene& scene, const std::optional<std::string>& 
     known += (known.empty() ? "" : ", ") + c.name;
   }
   if (known.empty()) known = scene.camera.name.empty() ? "(one, unnamed)" : scene.camera.name;
-  throw Error("--camera", "scene '" + scene.name + "' has no camera '" + *name +
-                              "'; its cameras: " + known);
+  throw Error("--camera",
+              "scene '" + scene.name + "' has no camera '" + *name + "'; its cameras: " + known);
 }
 
 void apply_lens_overrides(Camera& camera, const CameraOverrides& o) {
@@ -114,6 +114,9 @@ void apply_lens_overrides(Camera& camera, const CameraOverrides& o) {
     Perspective& p = perspective_for(camera, "--sensor");
     p.sensor_width_mm = size[0];
     p.sensor_height_mm = size[1];
+    // A physical sensor fits as Blender's default does (the width spans the larger image
+    // dimension), whatever fit the scene's field of view implied; --sensor-fit overrides it.
+    p.sensor_fit = SensorFit::automatic;
   }
   if (o.sensor_fit)
     perspective_for(camera, "--sensor-fit").sensor_fit = sensor_fit_from_name(*o.sensor_fit);
@@ -155,6 +158,11 @@ void apply_lens_overrides(Camera& camera, const CameraOverrides& o) {
   }
   if (o.focus_distance_m) camera.lens.focus_distance_m = *o.focus_distance_m;
   if (o.aperture_blades) camera.lens.aperture.blades = *o.aperture_blades;
+  if (o.focus_breathing) {
+    if (*o.focus_breathing != "on" && *o.focus_breathing != "off")
+      throw UsageError("--focus-breathing expects on or off; got '" + *o.focus_breathing + "'");
+    camera.lens.focus_breathing = *o.focus_breathing == "on";
+  }
   if (o.aperture_rotation_degrees)
     camera.lens.aperture.rotation_degrees = *o.aperture_rotation_degrees;
 }
@@ -225,6 +233,11 @@ void add_camera_options(CLI::App& command, CameraOverrides& o) {
   command
       .add_option("--aperture-blades", o.aperture_blades,
                   "Aperture blades (0 = circle, >= 3 = polygon bokeh); turns on depth of field")
+      ->group(group);
+  command
+      .add_option("--focus-breathing", o.focus_breathing,
+                  "on (default): the sensor moves to the image distance as a real lens focuses; "
+                  "off: the field of view stays fixed (Blender Cycles' and pbrt's convention)")
       ->group(group);
   command
       .add_option("--aperture-rotation", o.aperture_rotation_degrees,

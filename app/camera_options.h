@@ -23,6 +23,7 @@ struct CameraOverrides {
   std::optional<double> view_height_m;
   std::optional<double> f_number, focus_distance_m, aperture_rotation_degrees;
   std::optional<int> aperture_blades;
+  std::optional<std::string> focus_breathing;  // on | off
   std::optional<std::string> shutter;  // "OPEN:CLOSE" in seconds, fractions allowed (0:1/60)
   std::optional<double> iso, exposure_ev;
   std::optional<std::string> exposure_mode;

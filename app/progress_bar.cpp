@@ -8,8 +8,12 @@ namespace obscura::app {
 
 std::string format_seconds(double s) {
   char buffer[32];
-  if (s < 60) std::snprintf(buffer, sizeof buffer, "%.1fs", s);
-  else std::snprintf(buffer, sizeof buffer, "%dm%02ds", int(s) / 60, int(s) % 60);
+  if (s < 10)
+    std::snprintf(buffer, sizeof buffer, "%.2fs", s);
+  else if (s < 60)
+    std::snprintf(buffer, sizeof buffer, "%.1fs", s);
+  else
+    std::snprintf(buffer, sizeof buffer, "%dm%02ds", int(s) / 60, int(s) % 60);
   return buffer;
 }
 

@@ -6,6 +6,7 @@
 
 #include "obscura/io/image_io.h"
 #include "run_command.h"
+#include "test_paths.h"
 
 namespace obscura {
 namespace {
@@ -51,6 +52,23 @@ TEST(CameraCli, OverridesResolveLikeAPhotographersCamera) {
   EXPECT_TRUE(contains(fisheye.output, "glTF has no fisheye camera")) << fisheye.output;
 }
 
+TEST(CameraCli, APhysicalSensorFitsAsBlenderWhateverTheSceneFit) {
+  // The reference Cornell glb's camera is a glTF yfov (a vertical fit). Given a lens and a sensor,
+  // Blender's AUTO fit applies: on a square image the 36 mm width spans it, 2·atan(18/50).
+  auto result = test::run_cli("camera " + test::shared_path("reference/cornell/cornell.glb") +
+                              " --width 128 --height 128 --focal-length 50 --sensor 36x24"
+                              " --fstop 0.25 --focus-distance 3.4 --focus-breathing off");
+  ASSERT_EQ(result.exit_code, 0) << result.output;
+  EXPECT_TRUE(contains(result.output, "39.5978° horizontal, 39.5978° vertical")) << result.output;
+  EXPECT_TRUE(contains(result.output, "image distance  50 mm")) << result.output;
+  // With breathing (the default) the sensor sits at v = 50 · 3400 / 3350 = 50.7463 mm.
+  auto breathing = test::run_cli("camera " + test::shared_path("reference/cornell/cornell.glb") +
+                                 " --focal-length 50 --sensor 36x24 --fstop 0.25"
+                                 " --focus-distance 3.4");
+  ASSERT_EQ(breathing.exit_code, 0) << breathing.output;
+  EXPECT_TRUE(contains(breathing.output, "image distance  50.7463 mm")) << breathing.output;
+}
+
 struct BadCall {
   const char* arguments;
   int exit_code;
@@ -77,6 +95,8 @@ INSTANTIATE_TEST_SUITE_P(
         BadCall{"camera --near 0", 2, "near_m: must be positive; got 0"},
         BadCall{"camera --near 5 --far 2", 2, "far_m: must exceed near"},
         BadCall{"camera --fstop 0", 2, "f_number: must be positive; got 0"},
+        BadCall{"camera --fstop 2 --focus-breathing maybe", 2,
+                "--focus-breathing expects on or off; got 'maybe'"},
         BadCall{"camera --focus-distance -1", 2, "focus_distance_m: must be positive; got -1"},
         BadCall{"camera --width 0", 2, "--width must be a positive"},
         BadCall{"camera --crop 0,0,1.5,1", 2, "crop: must lie within [0, 1]"},

@@ -4,6 +4,7 @@
 #include "obscura/camera/thin_lens.h"
 
 #include <cmath>
+#include <vector>
 
 #include <gtest/gtest.h>
 
@@ -60,35 +61,59 @@ Point2d film_point_seeing(const Camera& c, Point3d world, Point2d u) {
   return film;
 }
 
+// The spread of a point's image over the aperture's rim, in mm on a 36 mm-wide sensor.
+double defocus_spread_mm(const Camera& c, double depth) {
+  Point3d world = *c.unproject({600, 400}, depth);
+  // Lens samples on the rim of the square map to the rim of the aperture: the spread's diameter
+  // is the largest distance between two of their film points.
+  std::vector<Point2d> rim;
+  for (int i = 0; i < 64; ++i) {
+    double s = (i + 0.5) / 64;
+    rim.push_back(film_point_seeing(c, world, {s, 0}));
+    rim.push_back(film_point_seeing(c, world, {0, s}));
+  }
+  double diameter_px = 0;
+  for (Point2d a : rim)
+    for (Point2d b : rim) diameter_px = std::max(diameter_px, length(a - b));
+  // Random interior samples stay inside the disk.
+  Pcg32 rng(5);
+  Point2d centre = c.project(world)->film_point;
+  for (int i = 0; i < 200; ++i) {
+    Point2d f = film_point_seeing(c, world, {rng.next_float(), rng.next_float()});
+    EXPECT_LE(length(f - centre), 0.5 * diameter_px * (1 + 1e-9));
+  }
+  return diameter_px * 36.0 / 1200;
+}
+
 TEST(ThinLens, DefocusSpreadMatchesTheCircleOfConfusion) {
   Camera c = lens_camera();
   double mm_per_px = 36.0 / 1200;
   for (double depth : {0.8, 1.5, 3.0, 8.0}) {
-    Point3d world = *c.unproject({600, 400}, depth);
-    // Lens samples on the rim of the square map to the rim of the aperture: the spread's
-    // diameter is the largest distance between two of their film points.
-    std::vector<Point2d> rim;
-    for (int i = 0; i < 64; ++i) {
-      double s = (i + 0.5) / 64;
-      rim.push_back(film_point_seeing(c, world, {s, 0}));
-      rim.push_back(film_point_seeing(c, world, {0, s}));
-    }
-    double diameter_px = 0;
-    for (Point2d a : rim)
-      for (Point2d b : rim) diameter_px = std::max(diameter_px, length(a - b));
     // The formula with A = 25 mm, f = 50 mm, S_f = 2000 mm.
     double s = depth * 1000;
     double expected_mm = 25 * std::abs(s - 2000) / s * 50 / (2000 - 50);
-    EXPECT_NEAR(diameter_px * mm_per_px, expected_mm, expected_mm * 1e-3) << depth << " m";
+    EXPECT_NEAR(defocus_spread_mm(c, depth), expected_mm, expected_mm * 1e-3) << depth << " m";
     EXPECT_NEAR(circle_of_confusion_mm(c.lens, 50, depth), expected_mm, 1e-12);
     EXPECT_NEAR(c.circle_of_confusion_px(depth), expected_mm / mm_per_px, 1e-9);
-    // Random interior samples stay inside the disk.
-    Pcg32 rng(5);
-    Point2d centre = c.project(world)->film_point;
-    for (int i = 0; i < 200; ++i) {
-      Point2d f = film_point_seeing(c, world, {rng.next_float(), rng.next_float()});
-      EXPECT_LE(length(f - centre), 0.5 * diameter_px * (1 + 1e-9));
-    }
+  }
+}
+
+TEST(ThinLens, WithoutFocusBreathingTheFramingIsThePinholesAsInCycles) {
+  // Blender Cycles' thin lens: the field of view of f on the sensor at any focus, rays from the
+  // aperture (radius f / 2N) through the focus plane, so c = A · |S − S_f| / S · f / S_f.
+  Camera c = lens_camera();
+  c.lens.focus_breathing = false;
+  Camera pinhole = lens_camera();
+  pinhole.lens.depth_of_field = false;
+  EXPECT_NEAR(c.fov_degrees().x, 39.597752709, 1e-8);  // 2·atan(18/50), as without the lens
+  EXPECT_NEAR(c.fov_degrees().x, pinhole.fov_degrees().x, 1e-12);
+  EXPECT_DOUBLE_EQ(c.image_distance_mm(), 50);
+  double mm_per_px = 36.0 / 1200;
+  for (double depth : {0.8, 1.5, 3.0, 8.0}) {
+    double s = depth * 1000;
+    double expected_mm = 25 * std::abs(s - 2000) / s * 50 / 2000;
+    EXPECT_NEAR(defocus_spread_mm(c, depth), expected_mm, expected_mm * 1e-3) << depth << " m";
+    EXPECT_NEAR(c.circle_of_confusion_px(depth), expected_mm / mm_per_px, 1e-9);
   }
 }
 

@@ -83,7 +83,9 @@ double Camera::focal_length_mm() const {
 
 double Camera::image_distance_mm() const {
   double f = focal_length_mm();
-  return lens.depth_of_field ? obscura::image_distance_mm(f, lens.focus_distance_m) : f;
+  return lens.depth_of_field && lens.focus_breathing
+             ? obscura::image_distance_mm(f, lens.focus_distance_m)
+             : f;
 }
 
 Vector2d Camera::film_size_mm() const {

@@ -32,7 +32,10 @@ double circle_of_confusion_mm(const ThinLens& lens, double focal_length_mm, doub
   double s = depth_m * kMillimetresPerMetre;
   double s_f = lens.focus_distance_m * kMillimetresPerMetre;
   if (std::isinf(s_f)) return a * focal_length_mm / s;  // the limit of the formula as S_f → ∞
-  return a * std::abs(s - s_f) / s * focal_length_mm / (s_f - focal_length_mm);
+  // The sensor at v = f·S_f/(S_f − f), or at f without breathing.
+  double sensor_per_focus =
+      lens.focus_breathing ? focal_length_mm / (s_f - focal_length_mm) : focal_length_mm / s_f;
+  return a * std::abs(s - s_f) / s * sensor_per_focus;
 }
 
 void validate(const ThinLens& lens, double focal_length_mm) {

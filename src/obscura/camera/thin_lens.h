@@ -5,6 +5,9 @@
 //   c = A · |S − S_f| / S · f / (S_f − f)        (on the sensor, same units as A)
 // Because the sensor sits at v rather than f, a lens focused close sees slightly less than at
 // infinity focus ("focus breathing"), as real lenses do; at S_f = ∞ the framing is the pinhole's.
+// With focus_breathing off the sensor stays at f whatever the focus, so the framing is the
+// pinhole's at every focus distance (the convention of Blender Cycles and pbrt), and then
+//   c = A · |S − S_f| / S · f / S_f.
 #pragma once
 
 #include <optional>
@@ -20,6 +23,9 @@ struct ThinLens {
   // > 0 when given; overrides f_number (then N = focal length / diameter).
   std::optional<double> aperture_diameter_mm;
   double focus_distance_m = 10;  // S_f > focal length, measured from the lens along its axis
+  // On: the sensor sits at the image distance v (a physical lens). Off: at f, the framing of
+  // renderers that keep the field of view fixed (Cycles, pbrt), to match their images.
+  bool focus_breathing = true;
   Aperture aperture;
 };
 
@@ -29,8 +35,9 @@ double aperture_diameter_mm(const ThinLens& lens, double focal_length_mm);
 double effective_f_number(const ThinLens& lens, double focal_length_mm);
 // v = f·S_f / (S_f − f), in mm.
 double image_distance_mm(double focal_length_mm, double focus_distance_m);
-// c = A · |S − S_f| / S · f / (S_f − f), in mm on the sensor, for a point at depth S (metres
-// along the optical axis, > 0). Zero when depth of field is off.
+// c = A · |S − S_f| / S · f / (S_f − f) (or · f / S_f without focus breathing), in mm on the
+// sensor, for a point at depth S (metres along the optical axis, > 0). Zero when depth of field
+// is off.
 double circle_of_confusion_mm(const ThinLens& lens, double focal_length_mm, double depth_m);
 
 // Throws obscura::Error naming the first invalid parameter and its value. The focus distance

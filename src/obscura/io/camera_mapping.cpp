@@ -121,6 +121,7 @@ Camera camera_from_json(JsonReader& json) {
   if (json.has("aperture_diameter_mm"))
     c.lens.aperture_diameter_mm = json.number_in("aperture_diameter_mm", 1, 1e-6, 1e4);
   c.lens.focus_distance_m = json.number_in("focus_distance", length(target - eye), 1e-6, 1e30);
+  c.lens.focus_breathing = json.boolean("focus_breathing", true);
   c.lens.aperture.blades = json.integer("aperture_blades", 0, 0, 64);
   c.lens.aperture.rotation_degrees = json.number("aperture_rotation_degrees", 0);
   c.shutter.open_s = json.number("shutter_open", c.shutter.open_s);
