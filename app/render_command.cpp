@@ -13,6 +13,7 @@
 #include "camera_options.h"
 #include "display_options.h"
 #include "progress_bar.h"
+#include "raster_options.h"
 #include "tracer_options.h"
 #include "usage_error.h"
 
@@ -32,6 +33,7 @@ struct RenderOptions {
   CameraOverrides camera;
   DisplayOptions display;
   TracerOptions tracer;
+  RasterOptions raster;
   // Which options were given on the command line: those override the scene file's settings.
   bool width_given = false, height_given = false, spp_given = false, seed_given = false;
 };
@@ -65,6 +67,7 @@ void run_render(RenderOptions options) {
   }
   validate(options);
   validate(options.tracer);
+  validate(options.raster, options.tracer.renderer);
   check_output_path(options.output);  // fail before rendering, not after
 
   std::optional<tbb::global_control> thread_limit;
@@ -78,10 +81,24 @@ void run_render(RenderOptions options) {
   scene.camera = resolve_camera(scene, options.camera, options.width, options.height);
   scene.validate();
 
-  auto device = std::make_shared<EmbreeDevice>();
-  TraceScene trace_scene(scene, device);
   Bounds2i crop = scene.camera.film.crop_pixels();
   Film film(crop.width(), crop.height());
+  if (options.tracer.renderer == "raster") {
+    RasterRender r = render_raster(scene, options.raster, options.tracer.aovs, film, options.output);
+    report_write(options.output,
+                 write_image(options.output, film.to_image(), image_write_options(options.display)),
+                 options.quiet);
+    if (!options.quiet) {
+      for (const std::string& w : r.warnings) std::fprintf(stderr, "warning: %s\n", w.c_str());
+      std::fprintf(stderr, "rendered %s: %dx%d (raster) in %s\n", scene.name.c_str(), options.width,
+                   options.height, format_seconds(r.seconds).c_str());
+    }
+    std::printf("%s\n", options.output.c_str());
+    for (const std::string& path : r.aov_paths) std::printf("%s\n", path.c_str());
+    return;
+  }
+  auto device = std::make_shared<EmbreeDevice>();
+  TraceScene trace_scene(scene, device);
   InterruptGuard interrupt;
   RenderSettings settings{.samples_per_pixel = samples_per_pixel(options.tracer, options.spp),
                           .seed = options.seed,
@@ -136,6 +153,7 @@ void add_render_command(CLI::App& app) {
   add_camera_options(*render, options->camera);
   add_display_options(render, options->display);
   add_tracer_options(*render, options->tracer);
+  add_raster_options(*render, options->raster);
   render->callback([options, render] {
     options->width_given = render->count("--width") > 0;
     options->height_given = render->count("--height") > 0;

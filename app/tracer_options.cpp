@@ -23,7 +23,7 @@ extern "C" void on_sigint(int) {
 }  // namespace
 
 void add_tracer_options(CLI::App& render, TracerOptions& o) {
-  render.add_option("--renderer", o.renderer, "path (physically based), whitted, or direct")
+  render.add_option("--renderer", o.renderer, "path (physically based), whitted, direct, or raster (the rasterizer)")
       ->capture_default_str();
   render.add_option("--sampler", o.sampler, "sobol (Owen-scrambled) or independent")
       ->capture_default_str();
@@ -38,8 +38,10 @@ void add_tracer_options(CLI::App& render, TracerOptions& o) {
 }
 
 void validate(const TracerOptions& o) {
-  if (o.renderer != "path" && o.renderer != "whitted" && o.renderer != "direct")
-    throw UsageError("--renderer must be path, whitted or direct; got '" + o.renderer + "'");
+  if (o.renderer != "path" && o.renderer != "whitted" && o.renderer != "direct" &&
+      o.renderer != "raster")
+    throw UsageError("--renderer must be path, whitted, direct or raster; got '" + o.renderer +
+                     "'");
   if (o.sampler != "sobol" && o.sampler != "independent")
     throw UsageError("--sampler must be sobol or independent; got '" + o.sampler + "'");
   bool depth_given = o.max_depth_option && o.max_depth_option->count() > 0;

@@ -1,7 +1,9 @@
 // Shading: a finely tessellated sphere under one directional light with per-pixel Phong shading
 // against the Phong reflection model evaluated analytically at the point where each pixel
 // centre's ray meets the true sphere (ray casting and the formula written out here, in double,
-// with glm's camera matrices).
+// with glm's camera matrices), in both conventions: energy-conserving (the BRDF
+// k_d/π + k_s·(n+2)/2π·(R·V)ⁿ times the irradiance E·cos θ, as the tracer's PhongBsdf) and
+// classic (E·(k_d·cos θ + k_s·(R·V)ⁿ)).
 #include "obscura/raster/phong.h"
 
 #include <gtest/gtest.h>
@@ -24,7 +26,10 @@ Matrix4 to_matrix4(const glm::dmat4& m) {  // glm is column-major: m[column][row
   return r;
 }
 
-TEST(Shading, PhongSphereMatchesAnalyticReflection) {
+class PhongSphere : public ::testing::TestWithParam<PhongConvention> {};
+
+TEST_P(PhongSphere, MatchesAnalyticReflection) {
+  const bool classic = GetParam() == PhongConvention::kClassic;
   const int rings = 384, segments = 768;
   std::vector<MeshVertex> vertices;
   std::vector<uint32_t> indices;
@@ -59,7 +64,7 @@ TEST(Shading, PhongSphereMatchesAnalyticReflection) {
                    Point3f(float(eye.x), float(eye.y), float(eye.z)), &lights};
   program.material = {Rgb(float(ka.x), float(ka.y), float(ka.z)),
                       Rgb(float(kd.x), float(kd.y), float(kd.z)),
-                      Rgb(float(ks.x), float(ks.y), float(ks.z)), float(shininess)};
+                      Rgb(float(ks.x), float(ks.y), float(ks.z)), float(shininess), GetParam()};
   RenderTarget target(kSize, kSize);
   target.clear();
   DrawState state;
@@ -83,8 +88,13 @@ TEST(Shading, PhongSphereMatchesAnalyticReflection) {
       glm::dvec3 expected = ka * ambient_light;
       if (n_dot_l > 0) {
         glm::dvec3 r = 2 * n_dot_l * n - to_light;
-        expected +=
-            light * (kd * n_dot_l + ks * std::pow(std::max(glm::dot(r, v), 0.0), shininess));
+        double lobe = std::pow(std::max(glm::dot(r, v), 0.0), shininess);
+        if (classic) {
+          expected += light * (kd * n_dot_l + ks * lobe);
+        } else {
+          // k_d + k_s ≤ 1 in every channel here, so no energy scaling applies.
+          expected += light * n_dot_l * (kd / M_PI + ks * ((shininess + 2) / (2 * M_PI)) * lobe);
+        }
       }
       Rgb got = target.color_at(x, y);
       for (int k = 0; k < 3; ++k) max_error = std::max(max_error, std::abs(got[k] - expected[k]));
@@ -92,6 +102,44 @@ TEST(Shading, PhongSphereMatchesAnalyticReflection) {
     }
   EXPECT_GT(checked, 2000);
   EXPECT_LT(max_error, 1e-3);
+}
+
+INSTANTIATE_TEST_SUITE_P(Conventions, PhongSphere,
+                         ::testing::Values(PhongConvention::kEnergyConserving,
+                                           PhongConvention::kClassic),
+                         [](const auto& info) {
+                           return info.param == PhongConvention::kClassic ? "Classic"
+                                                                          : "EnergyConserving";
+                         });
+
+// The normalized lobes reflect exactly all light arriving along the normal: ∫ c(n)·lobeⁿ·cos θ dω
+// = 1 over the hemisphere, by midpoint quadrature in (θ, φ) (the lobes written out here).
+TEST(Shading, NormalizedLobesReflectAllLightAtNormalIncidence) {
+  for (float n : {1.f, 10.f, 100.f}) {
+    double phong = 0, blinn = 0;
+    const int kTheta = 2000;
+    for (int i = 0; i < kTheta; ++i) {
+      double theta = (i + 0.5) * (M_PI / 2) / kTheta;
+      double d_omega = std::sin(theta) * (M_PI / 2 / kTheta) * (2 * M_PI);  // φ-symmetric
+      // Light and viewer both along the normal: R·V = cos θ; N·H = cos(θ/2).
+      phong += std::pow(std::cos(theta), n) * std::cos(theta) * d_omega;
+      blinn += std::pow(std::cos(theta / 2), n) * std::cos(theta) * d_omega;
+    }
+    EXPECT_NEAR(phong * phong_lobe_normalization(n), 1, 2e-3) << n;
+    EXPECT_NEAR(blinn * blinn_phong_lobe_normalization(n), 1, 2e-3) << n;
+  }
+}
+
+// Energy conservation: where k_d + k_s exceeds 1, both are scaled by the largest sum.
+TEST(Shading, EnergyConservingPhongNeverReflectsMoreThanArrives) {
+  PhongMaterial m{Rgb(), Rgb(0.9f, 0.5f, 0.1f), Rgb(0.6f), 0};  // n = 0: a constant lobe
+  LightSet lights;
+  lights.directional.push_back({Vector3f(0, 1, 0), Rgb(1.f)});
+  Rgb c = shade_phong<SpecularModel::kPhong>(m, lights, Point3f(), Vector3f(0, 1, 0),
+                                             Vector3f(0, 1, 0));
+  // f = (k_d/π + k_s/π)/1.5 (c(0) = 1/π), times E cos θ = 1.
+  EXPECT_NEAR(c.r, (0.9 + 0.6) / 1.5 / M_PI, 1e-6);
+  EXPECT_NEAR(c.b, (0.1 + 0.6) / 1.5 / M_PI, 1e-6);
 }
 
 TEST(Shading, SpecularPowerIsExactForIntegerExponents) {
@@ -103,7 +151,7 @@ TEST(Shading, SpecularPowerIsExactForIntegerExponents) {
 
 TEST(Shading, BlinnPhongUsesTheHalfVector) {
   // Light and eye mirrored about the normal: H = N, so the lobe is 1 for any exponent.
-  PhongMaterial m{Rgb(), Rgb(), Rgb(1.f), 64};
+  PhongMaterial m{Rgb(), Rgb(), Rgb(1.f), 64, PhongConvention::kClassic};
   LightSet lights;
   lights.directional.push_back({normalize(Vector3f(1, 1, 0)), Rgb(1.f)});
   Rgb c = shade_phong<SpecularModel::kBlinnPhong>(m, lights, Point3f(), Vector3f(0, 1, 0),
@@ -112,7 +160,7 @@ TEST(Shading, BlinnPhongUsesTheHalfVector) {
 }
 
 TEST(Shading, PointAndSpotLightsFallOffWithDistanceAndCone) {
-  PhongMaterial m{Rgb(), Rgb(1.f), Rgb(), 1};
+  PhongMaterial m{Rgb(), Rgb(1.f), Rgb(), 1, PhongConvention::kClassic};
   LightSet lights;
   lights.point.push_back({Point3f(0, 2, 0), Rgb(4.f)});
   Rgb c = shade_phong<SpecularModel::kPhong>(m, lights, Point3f(), Vector3f(0, 1, 0),

@@ -302,11 +302,14 @@ class TriangleRasterizer {
     int lo = cols_.last + 1, hi = cols_.first - 1;
     for (int s = 0; s < samples; ++s) {
       first[s] = cols_.first, last[s] = cols_.last;
+      // Each edge narrows the span the previous ones left: its value is taken at first[s].
       for (int i = 0; i < 3; ++i)
-        clip_span_to_edge(edge_at_origin_[i] +
-                              edge_[i].step_y * (kSubpixelScale * dy + offsets_[s].y) +
-                              edge_[i].step_x * offsets_[s].x + edge_[i].bias,
-                          edge_[i].step_x * kSubpixelScale, &first[s], &last[s]);
+        clip_span_to_edge(
+            edge_at_origin_[i] + edge_[i].step_y * (kSubpixelScale * dy + offsets_[s].y) +
+                edge_[i].step_x *
+                    (offsets_[s].x + kSubpixelScale * int64_t(first[s] - cols_.first)) +
+                edge_[i].bias,
+            edge_[i].step_x * kSubpixelScale, &first[s], &last[s]);
       if (first[s] <= last[s]) lo = std::min(lo, first[s]), hi = std::max(hi, last[s]);
     }
     for (int x = lo; x <= hi; ++x) {

@@ -1,0 +1,71 @@
+#include "raster_options.h"
+
+#include <chrono>
+
+#include "obscura/io/image_io.h"
+#include "usage_error.h"
+
+namespace obscura::app {
+
+void add_raster_options(CLI::App& render, RasterOptions& o) {
+  o.registered = {
+      render.add_option("--msaa", o.msaa, "raster: multisample anti-aliasing, 1, 4 or 8 samples"),
+      render.add_option("--shading", o.shading,
+                        "raster: flat, gouraud, phong (per pixel; default) or blinn-phong "
+                        "(per pixel, half-vector lobe for Phong materials)"),
+      render.add_flag("--cull", o.cull, "raster: cull back faces"),
+      render.add_flag("--wireframe", o.wireframe, "raster: draw triangle edges over the image")};
+}
+
+void validate(const RasterOptions& o, const std::string& renderer) {
+  if (renderer != "raster") {
+    for (const CLI::Option* option : o.registered)
+      if (option && option->count() > 0)
+        throw UsageError(option->get_name() +
+                         " applies to --renderer raster only (the renderer is '" + renderer + "')");
+    return;
+  }
+  if (o.msaa != 1 && o.msaa != 4 && o.msaa != 8)
+    throw UsageError("--msaa must be 1, 4 or 8 samples; got " + std::to_string(o.msaa));
+  if (o.shading != "flat" && o.shading != "gouraud" && o.shading != "phong" &&
+      o.shading != "blinn-phong")
+    throw UsageError("--shading must be flat, gouraud, phong or blinn-phong; got '" + o.shading +
+                     "'");
+}
+
+raster::RasterSettings raster_settings(const RasterOptions& o, bool aovs) {
+  raster::RasterSettings s;
+  s.msaa_samples = o.msaa;
+  s.shading = o.shading == "flat"          ? raster::ShadingMode::kFlat
+              : o.shading == "gouraud"     ? raster::ShadingMode::kGouraud
+              : o.shading == "blinn-phong" ? raster::ShadingMode::kBlinnPhong
+                                           : raster::ShadingMode::kPhong;
+  s.cull_back_faces = o.cull;
+  s.wireframe.enabled = o.wireframe;
+  s.aovs = aovs;
+  return s;
+}
+
+RasterRender render_raster(const Scene& scene, const RasterOptions& options, bool aovs, Film& film,
+                           const std::string& output) {
+  auto start = std::chrono::steady_clock::now();
+  raster::SceneRasterizer rasterizer(scene, raster_settings(options, aovs));
+  raster::RenderTarget target = rasterizer.make_target(scene.camera);
+  rasterizer.render(scene.camera, film, &target);
+  RasterRender result;
+  result.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  result.warnings = rasterizer.warnings();
+  if (aovs) {
+    std::string stem = output.substr(0, output.find_last_of('.'));
+    auto write = [&](const char* name, const Image& image) {
+      result.aov_paths.push_back(stem + "." + name + ".exr");
+      write_image(result.aov_paths.back(), image);
+    };
+    write("normal", raster::normal_image(target));
+    write("depth", raster::distance_image(target, scene.camera));
+    write("id", raster::id_image(target));
+  }
+  return result;
+}
+
+}  // namespace obscura::app

@@ -1,0 +1,155 @@
+// The programs that draw a scene's instances: object-space vertices in, exposed linear radiance
+// out, shading each material with the scene's lights (surface_material.h).
+//
+//   ScenePixelProgram    per-pixel shading (Phong shading, the default), or per-face normals
+//                        (flat); the geometric normal comes from the screen-space derivatives of
+//                        the world position, so no per-face data is needed
+//   SceneGouraudProgram  lighting at the vertices, interpolated; textures modulate it per pixel
+#pragma once
+
+#include "obscura/raster/clip_transform.h"
+#include "obscura/raster/lights.h"
+#include "obscura/raster/shaders.h"
+#include "obscura/raster/surface_material.h"
+#include "obscura/raster/varyings.h"
+
+namespace obscura::raster {
+
+// What every draw of one instance shares.
+struct InstanceUniforms {
+  Matrix4f clip_from_object;
+  Matrix4f world_from_object;
+  Matrix4f normal_from_object;  // the inverse transpose of world_from_object's linear part
+  // The eye: a point (perspective) or, for orthographic views, the direction towards the viewer.
+  Point3f eye;
+  Vector3f to_viewer;
+  bool eye_at_infinity = false;
+  const LightSet* lights = nullptr;
+  const SurfaceMaterial* material = nullptr;
+  float exposure = 1;        // the camera's exposure scale, applied to everything drawn
+  bool flat = false;         // flat shading: the face normal instead of the interpolated one
+  bool force_blinn = false;  // shade Phong materials with the half-vector lobe
+
+  OBSCURA_RASTER_INLINE Vector3f view_direction(Point3f p) const {
+    return eye_at_infinity ? to_viewer : normalize(eye - p);
+  }
+  OBSCURA_RASTER_INLINE Point3f world_point(Point3f p) const {
+    const auto& m = world_from_object.m;
+    return {m[0][0] * p.x + m[0][1] * p.y + m[0][2] * p.z + m[0][3],
+            m[1][0] * p.x + m[1][1] * p.y + m[1][2] * p.z + m[1][3],
+            m[2][0] * p.x + m[2][1] * p.y + m[2][2] * p.z + m[2][3]};
+  }
+  OBSCURA_RASTER_INLINE Vector3f world_normal(Vector3f n) const {
+    return normal_from_object.apply_to_vector(n);
+  }
+};
+
+// Light reflected towards v at p by a surface point with unit normal n (facing v); `geometric`
+// is the true surface's normal facing v: light from behind it is blocked, as in the tracer.
+OBSCURA_RASTER_INLINE Rgb shade_surface(const SurfacePoint& s, const LightSet& lights, Point3f p,
+                                        Vector3f n, Vector3f geometric, Vector3f v) {
+  Rgb sum = ambient_reflectance(s, dot(n, v)) * lights.ambient;
+  auto add = [&](const IncidentLight& in) {
+    if (dot(geometric, in.to_light) > 0)
+      sum += in.strength * reflected_cosine(s, n, v, in.to_light);
+  };
+  for (const DirectionalLight& l : lights.directional) add(incident(l, p));
+  for (const PointLight& l : lights.point) add(incident(l, p));
+  for (const SpotLight& l : lights.spot) add(incident(l, p));
+  for (const SurfaceLight& l : lights.surface) add(incident(l, p));
+  return sum;
+}
+
+OBSCURA_RASTER_INLINE Vector3f face_towards(Vector3f n, Vector3f v) {
+  return dot(n, v) < 0 ? -n : n;
+}
+
+struct ScenePixelProgram {
+  using Vertex = MeshVertex;  // object space
+  struct Varyings {
+    Point3f position;  // world
+    Vector3f normal;   // world, interpolated (not unit)
+    float u, v;
+    Rgb color;
+  };
+  InstanceUniforms uniforms;
+
+  VertexOutput<Varyings> vertex(const MeshVertex& m) const {
+    return {uniforms.clip_from_object(m.position),
+            {uniforms.world_point(m.position), uniforms.world_normal(m.normal), m.uv.x, m.uv.y,
+             m.color}};
+  }
+
+  Rgb fragment(const Varyings& a, const Varyings& dx, const Varyings& dy, FragmentInfo info) const {
+    const SurfaceMaterial& m = *uniforms.material;
+    Vector3f v = uniforms.view_direction(a.position);
+    // The plane of the triangle from the derivatives of the position; facing the viewer.
+    Vector3f geometric = cross(Vector3f(dx.position.x, dx.position.y, dx.position.z),
+                               Vector3f(dy.position.x, dy.position.y, dy.position.z));
+    float g2 = dot(geometric, geometric);
+    Vector3f interpolated = a.normal;
+    float i2 = dot(interpolated, interpolated);
+    geometric = g2 > 0 ? geometric / std::sqrt(g2) : interpolated / std::sqrt(std::max(i2, 1e-30f));
+    geometric = face_towards(geometric, v);
+    Vector3f n = geometric;
+    if (!uniforms.flat && i2 > 0)  // the tracer's convention: on the geometric side, then to v
+      n = face_towards(face_towards(interpolated / std::sqrt(i2), geometric), v);
+
+    TextureCoordinates tc{a.u, a.v, dx.u, dx.v, dy.u, dy.v};
+    SurfacePoint s = surface_point(m, tc, a.color);
+    if (uniforms.force_blinn && s.model == SurfaceModel::kPhong) {
+      s.model = SurfaceModel::kBlinnPhong;
+      s.lobe_normalization = blinn_phong_lobe_normalization(s.shininess);
+    }
+    Rgb c = shade_surface(s, *uniforms.lights, a.position, n, geometric, v);
+    if (info.front_facing) c += m.emission * sample_or_one(m.emission_texture, m.filter, tc);
+    return c * uniforms.exposure;
+  }
+
+  // The shading normal facing the viewer (world space), for the normal output.
+  Vector3f normal(const Varyings& a) const {
+    float i2 = dot(a.normal, a.normal);
+    if (i2 <= 0) return {};
+    return face_towards(a.normal / std::sqrt(i2), uniforms.view_direction(a.position));
+  }
+};
+
+struct SceneGouraudProgram {
+  using Vertex = MeshVertex;
+  struct Varyings {
+    Point3f position;
+    Vector3f normal;
+    float u, v;
+    Rgb lit;  // reflected light at the vertex, before the base texture
+  };
+  InstanceUniforms uniforms;
+
+  VertexOutput<Varyings> vertex(const MeshVertex& m) const {
+    Point3f p = uniforms.world_point(m.position);
+    Vector3f n = normalize(uniforms.world_normal(m.normal));
+    Vector3f v = uniforms.view_direction(p);
+    n = face_towards(n, v);
+    SurfacePoint s = surface_point_untextured(*uniforms.material, m.color);
+    if (uniforms.force_blinn && s.model == SurfaceModel::kPhong) {
+      s.model = SurfaceModel::kBlinnPhong;
+      s.lobe_normalization = blinn_phong_lobe_normalization(s.shininess);
+    }
+    Rgb lit = shade_surface(s, *uniforms.lights, p, n, n, v);
+    return {uniforms.clip_from_object(m.position), {p, n, m.uv.x, m.uv.y, lit}};
+  }
+
+  Rgb fragment(const Varyings& a, const Varyings& dx, const Varyings& dy, FragmentInfo info) const {
+    const SurfaceMaterial& m = *uniforms.material;
+    TextureCoordinates tc{a.u, a.v, dx.u, dx.v, dy.u, dy.v};
+    Rgb c = a.lit * sample_or_one(m.base_texture, m.filter, tc);  // modulate, as fixed-function GL
+    if (info.front_facing) c += m.emission * sample_or_one(m.emission_texture, m.filter, tc);
+    return c * uniforms.exposure;
+  }
+
+  Vector3f normal(const Varyings& a) const {
+    float i2 = dot(a.normal, a.normal);
+    return i2 > 0 ? a.normal / std::sqrt(i2) : Vector3f();
+  }
+};
+
+}  // namespace obscura::raster

@@ -1,0 +1,355 @@
+#include "obscura/raster/scene_rasterizer.h"
+
+#include <cmath>
+#include <limits>
+#include <numbers>
+#include <variant>
+
+#include "obscura/math/error.h"
+#include "obscura/raster/msaa.h"
+#include "obscura/raster/pipeline.h"
+#include "obscura/raster/scene_program.h"
+
+namespace obscura::raster {
+
+namespace {
+
+constexpr float kPi = std::numbers::pi_v<float>;
+
+// Object-space vertices of a mesh. Meshes without normals get one vertex per corner carrying the
+// face normal (what the tracer shades them with), drawn unindexed.
+void compile_mesh(const Mesh& mesh, std::vector<MeshVertex>& vertices,
+                  std::vector<uint32_t>& indices) {
+  auto vertex = [&](uint32_t i, Vector3f n) {
+    return MeshVertex{mesh.positions[i], n, mesh.uvs.empty() ? Point2f() : mesh.uvs[i],
+                      mesh.colors.empty() ? Rgb(1.f) : mesh.colors[i]};
+  };
+  if (!mesh.normals.empty()) {
+    vertices.reserve(mesh.positions.size());
+    for (uint32_t i = 0; i < mesh.positions.size(); ++i)
+      vertices.push_back(vertex(i, to_vector(mesh.normals[i])));
+    indices = mesh.indices;
+    return;
+  }
+  vertices.reserve(mesh.indices.size());
+  for (size_t t = 0; t + 2 < mesh.indices.size(); t += 3) {
+    const uint32_t* c = &mesh.indices[t];
+    Vector3f n = cross(mesh.positions[c[1]] - mesh.positions[c[0]],
+                       mesh.positions[c[2]] - mesh.positions[c[0]]);
+    float len = length(n);
+    n = len > 0 ? n / len : Vector3f();
+    for (int k = 0; k < 3; ++k) vertices.push_back(vertex(c[k], n));
+  }
+}
+
+// A scene texture decoded to linear RGB, mipmapped.
+Texture compile_texture(const obscura::Texture& t) {
+  Image image(t.width, t.height, 3);
+  for (int y = 0; y < t.height; ++y)
+    for (int x = 0; x < t.width; ++x) {
+      Vector4f v = sample_texture(t, {(x + 0.5f) / t.width, (y + 0.5f) / t.height});
+      image.set_rgb(x, y, {v.x, v.y, v.z});
+    }
+  return Texture(image);
+}
+
+void mark_used(const TextureRef& ref, std::vector<bool>& used) {
+  if (ref.valid() && size_t(ref.texture) < used.size()) used[ref.texture] = true;
+}
+
+std::vector<bool> used_textures(const Scene& scene) {
+  std::vector<bool> used(scene.textures.size(), false);
+  for (const Material& m : scene.materials) {
+    mark_used(m.emission_texture, used);
+    std::visit(
+        [&](const auto& model) {
+          using T = std::decay_t<decltype(model)>;
+          if constexpr (std::is_same_v<T, DiffuseMaterial>)
+            mark_used(model.reflectance_texture, used);
+          if constexpr (std::is_same_v<T, obscura::PhongMaterial>)
+            mark_used(model.diffuse_texture, used);
+          if constexpr (std::is_same_v<T, MetallicRoughnessMaterial>) {
+            mark_used(model.base_color_texture, used);
+            mark_used(model.metallic_roughness_texture, used);
+            mark_used(model.occlusion_texture, used);
+          }
+        },
+        m.model);
+  }
+  return used;
+}
+
+// An emissive instance as one SurfaceLight (at its time-0 pose): at the area-weighted centroid;
+// flat emitters (all faces within ~2.5° of one normal) emit a cosine lobe, others uniformly.
+std::optional<SurfaceLight> surface_light(const Mesh& mesh, const Transform& world_from_object,
+                                          Rgb radiance) {
+  double area = 0;
+  Vector3d centroid, normal_sum;
+  for (size_t t = 0; t + 2 < mesh.indices.size(); t += 3) {
+    Point3f p[3];
+    for (int k = 0; k < 3; ++k) p[k] = world_from_object(mesh.positions[mesh.indices[t + k]]);
+    Vector3f n = cross(p[1] - p[0], p[2] - p[0]) * 0.5f;
+    double a = length(n);
+    area += a;
+    normal_sum += Vector3d(n.x, n.y, n.z);
+    centroid +=
+        Vector3d(p[0].x + p[1].x + p[2].x, p[0].y + p[1].y + p[2].y, p[0].z + p[1].z + p[2].z) *
+        (a / 3);
+  }
+  if (area <= 0) return std::nullopt;
+  if (world_from_object.swaps_handedness()) normal_sum = -normal_sum;
+  centroid = centroid / area;
+  SurfaceLight light;
+  light.position = Point3f(float(centroid.x), float(centroid.y), float(centroid.z));
+  double flatness = length(normal_sum) / area;  // 1 for a flat emitter
+  light.one_sided = flatness > 0.999;
+  if (light.one_sided) {
+    Vector3d n = normal_sum / length(normal_sum);
+    light.normal = Vector3f(float(n.x), float(n.y), float(n.z));
+    light.intensity = radiance * float(area);
+    light.radius2 = float(area / std::numbers::pi);
+  } else {
+    light.intensity = radiance * float(area / 4);
+    light.radius2 = float(area / (4 * std::numbers::pi));
+  }
+  return light;
+}
+
+void compile_lights(const Scene& scene, LightSet& lights) {
+  for (const Light& light : scene.lights) {
+    std::visit(
+        [&](const auto& l) {
+          using T = std::decay_t<decltype(l)>;
+          if constexpr (std::is_same_v<T, obscura::PointLight>) {
+            lights.point.push_back({l.position, l.intensity});
+          } else if constexpr (std::is_same_v<T, obscura::SpotLight>) {
+            lights.spot.push_back({l.position, normalize(l.direction), l.intensity,
+                                   std::cos(l.inner_cone_radians), std::cos(l.outer_cone_radians)});
+          } else {
+            lights.directional.push_back({-normalize(l.direction), l.irradiance});
+          }
+        },
+        light.model);
+  }
+}
+
+Matrix4 to_matrix(const Transform& t) {
+  return t.matrix();
+}
+
+// NDC of the full image → NDC of the crop window (affine, so it applies to clip coordinates).
+Matrix4 crop_from_full_ndc(const Camera& camera) {
+  Bounds2i crop = camera.film.crop_pixels();
+  double cw = crop.width(), ch = crop.height();
+  Matrix4 crop_ndc_from_raster = Matrix4::from_rows({{{2 / cw, 0, 0, -2 * crop.min.x / cw - 1},
+                                                      {0, -2 / ch, 0, 1 + 2 * crop.min.y / ch},
+                                                      {0, 0, 1, 0},
+                                                      {0, 0, 0, 1}}});
+  return crop_ndc_from_raster * camera.raster_from_ndc();
+}
+
+}  // namespace
+
+SceneRasterizer::SceneRasterizer(const Scene& scene, RasterSettings settings)
+    : settings_(settings) {
+  if (!is_valid_sample_count(settings.msaa_samples))
+    throw Error("raster settings",
+                "MSAA samples must be 1, 4 or 8; got " + std::to_string(settings.msaa_samples));
+  scene.validate();
+  vertices_.resize(scene.meshes.size());
+  indices_.resize(scene.meshes.size());
+  for (size_t m = 0; m < scene.meshes.size(); ++m)
+    compile_mesh(scene.meshes[m], vertices_[m], indices_[m]);
+
+  std::vector<bool> used = used_textures(scene);
+  std::vector<const Texture*> texture_of(scene.textures.size(), nullptr);
+  textures_.reserve(scene.textures.size());
+  for (size_t t = 0; t < scene.textures.size(); ++t)
+    if (used[t] && scene.textures[t].width > 0 && scene.textures[t].height > 0)
+      textures_.push_back(compile_texture(scene.textures[t]));
+  for (size_t t = 0, k = 0; t < scene.textures.size(); ++t)
+    if (used[t] && scene.textures[t].width > 0 && scene.textures[t].height > 0)
+      texture_of[t] = &textures_[k++];
+  for (const Material& m : scene.materials) materials_.push_back(compile_material(m, texture_of));
+
+  compile_lights(scene, lights_);
+  for (const Instance& instance : scene.instances) {
+    CompiledInstance c{instance.mesh, scene.material_of(instance), instance.world_from_object, {}};
+    if (instance.animated()) {
+      std::vector<AnimatedTransform::Key> keys;
+      for (const TransformKey& k : instance.motion)
+        keys.push_back({k.time_seconds, k.world_from_object});
+      try {
+        c.motion.emplace(std::move(keys));
+      } catch (const Error& e) {
+        warnings_.push_back("instance '" + instance.name +
+                            "': motion keys the rasterizer cannot interpolate (" + e.what() +
+                            "); drawn at its time-0 pose");
+      }
+    }
+    instances_.push_back(std::move(c));
+    const Material& material = scene.materials[scene.material_of(instance)];
+    if (settings.surface_lights && !material.emission.is_black())
+      if (auto light = surface_light(scene.meshes[instance.mesh], instance.world_from_object,
+                                     material.emission))
+        lights_.surface.push_back(*light);
+  }
+
+  if (scene.environment) {
+    const Environment& env = *scene.environment;
+    environment_scale_ = env.color * env.intensity;
+    environment_from_world_ = inverse(env.world_from_environment);
+    Rgb mean = environment_scale_;
+    if (env.texture >= 0) {
+      const obscura::Texture& t = scene.textures[env.texture];
+      environment_map_ = Image(t.width, t.height, 3);
+      Rgb sum;
+      double weight = 0;
+      for (int y = 0; y < t.height; ++y) {
+        // Rows of an equirectangular map cover solid angle ∝ sin θ.
+        float w = std::sin(kPi * (y + 0.5f) / t.height);
+        for (int x = 0; x < t.width; ++x) {
+          Vector4f v = sample_texture(t, {(x + 0.5f) / t.width, (y + 0.5f) / t.height});
+          environment_map_.set_rgb(x, y, {v.x, v.y, v.z});
+          sum += Rgb(v.x, v.y, v.z) * w;
+        }
+        weight += double(w) * t.width;
+      }
+      mean = environment_scale_ * (sum / float(weight));
+    }
+    lights_.ambient = mean;
+  }
+}
+
+Transform SceneRasterizer::world_from_object(const CompiledInstance& instance,
+                                             double time_s) const {
+  return instance.motion ? instance.motion->at(time_s) : instance.world_from_object;
+}
+
+RenderTarget SceneRasterizer::make_target(const Camera& camera) const {
+  Bounds2i crop = camera.film.crop_pixels();
+  return RenderTarget(crop.width(), crop.height(), settings_.msaa_samples, settings_.aovs);
+}
+
+void SceneRasterizer::draw_background(const Matrix4& world_from_clip, RenderTarget& target,
+                                      float exposure) const {
+  if (environment_map_.width == 0) {
+    target.clear(environment_scale_ * exposure);
+    return;
+  }
+  target.clear();
+  const int w = target.width(), h = target.height();
+  tbb::parallel_for(0, h, [&](int y) {
+    for (int x = 0; x < w; ++x) {
+      double nx = 2 * (x + 0.5) / w - 1, ny = 1 - 2 * (y + 0.5) / h;
+      Vector4d a = world_from_clip * Vector4d(nx, ny, -1, 1);
+      Vector4d b = world_from_clip * Vector4d(nx, ny, 0, 1);
+      Vector3f d(float(b.x / b.w - a.x / a.w), float(b.y / b.w - a.y / a.w),
+                 float(b.z / b.w - a.z / a.w));
+      Vector3f l = normalize(environment_from_world_(d));
+      // The tracer's equirectangular mapping: u = 0.5 along −Z, growing towards +X; v = θ/π.
+      float theta = std::atan2(std::sqrt(l.x * l.x + l.z * l.z), l.y);
+      float u = 0.5f + std::atan2(l.x, -l.z) / (2 * kPi);
+      u -= std::floor(u);
+      int tx = std::min(int(u * environment_map_.width), environment_map_.width - 1);
+      int ty = std::min(int(theta / kPi * environment_map_.height), environment_map_.height - 1);
+      Rgb c = environment_map_.rgb(tx, ty) * environment_scale_ * exposure;
+      for (int s = 0; s < target.samples(); ++s) target.color()[target.sample_index(x, y, s)] = c;
+    }
+  });
+}
+
+void SceneRasterizer::render_frame(const Camera& camera, const RasterFrame& frame,
+                                   RenderTarget& target) const {
+  Bounds2i crop = camera.film.crop_pixels();
+  if (target.width() != crop.width() || target.height() != crop.height())
+    throw Error("render_frame",
+                "the target (" + std::to_string(target.width()) + "x" +
+                    std::to_string(target.height()) + ") must match the camera's crop (" +
+                    std::to_string(crop.width()) + "x" + std::to_string(crop.height()) + ")");
+  const Matrix4 view = frame.view ? *frame.view : camera.view_matrix(frame.time_s);
+  const Matrix4 projection = frame.projection ? *frame.projection : camera.projection_matrix();
+  const Matrix4 clip_from_world = crop_from_full_ndc(camera) * projection * view;
+  std::optional<Matrix4> world_from_clip = inverse(clip_from_world);
+  std::optional<Matrix4> world_from_camera = inverse(view);
+  if (!world_from_clip || !world_from_camera)
+    throw Error("render_frame", "the view or projection matrix is singular");
+  const auto exposure = float(camera.exposure_scale());
+  draw_background(*world_from_clip, target, exposure);
+
+  InstanceUniforms base;
+  const Matrix4& wc = *world_from_camera;
+  // A projection whose w does not depend on z is orthographic: the eye is infinitely far.
+  base.eye_at_infinity = projection[3][2] == 0;
+  base.eye = Point3f(float(wc[0][3]), float(wc[1][3]), float(wc[2][3]));
+  base.to_viewer = normalize(Vector3f(float(wc[0][2]), float(wc[1][2]), float(wc[2][2])));
+  base.lights = &lights_;
+  base.exposure = exposure;
+  base.flat = settings_.shading == ShadingMode::kFlat;
+  base.force_blinn = settings_.shading == ShadingMode::kBlinnPhong;
+
+  for (size_t i = 0; i < instances_.size(); ++i) {
+    const CompiledInstance& instance = instances_[i];
+    const Transform world_from_object = this->world_from_object(instance, frame.time_s);
+    InstanceUniforms u = base;
+    u.clip_from_object = Matrix4f(clip_from_world * to_matrix(world_from_object));
+    u.world_from_object = Matrix4f(world_from_object.matrix());
+    u.normal_from_object = Matrix4f(transpose(world_from_object.inverse_matrix()));
+    u.material = &materials_[instance.material];
+    DrawState state;
+    state.object_id = uint32_t(i + 1);
+    state.cull = settings_.cull_back_faces ? CullMode::kBack : CullMode::kNone;
+    // A mirroring transform turns counter-clockwise faces clockwise.
+    state.front_face =
+        world_from_object.swaps_handedness() ? FrontFace::kClockwise : FrontFace::kCounterClockwise;
+    state.wireframe = settings_.wireframe;
+    const std::vector<MeshVertex>& vertices = vertices_[instance.mesh];
+    const std::vector<uint32_t>& indices = indices_[instance.mesh];
+    if (settings_.shading == ShadingMode::kGouraud) {
+      draw(target, state, SceneGouraudProgram{u}, vertices, indices);
+    } else {
+      draw(target, state, ScenePixelProgram{u}, vertices, indices);
+    }
+  }
+}
+
+void SceneRasterizer::render(const Camera& camera, Film& film, RenderTarget* target) const {
+  std::optional<RenderTarget> own;
+  if (!target) target = &own.emplace(make_target(camera));
+  RasterFrame frame;
+  frame.time_s = camera.shutter.time_at(0.5);
+  render_frame(camera, frame, *target);
+  target->accumulate_into(film);
+}
+
+Image id_image(const RenderTarget& target) {
+  if (!target.has_aovs()) throw Error("id_image", "the render target has no aovs");
+  Image image(target.width(), target.height(), 1);
+  image.channel_names = {"id"};
+  for (int y = 0; y < target.height(); ++y)
+    for (int x = 0; x < target.width(); ++x)
+      image.at(x, y, 0) = float(int64_t(target.object_id_at(x, y)) - 1);
+  return image;
+}
+
+Image distance_image(const RenderTarget& target, const Camera& camera) {
+  Image image = target.view_depth_image();
+  image.channel_names = {"Z"};
+  if (!std::holds_alternative<Perspective>(camera.projection)) return image;
+  Bounds2i crop = camera.film.crop_pixels();
+  for (int y = 0; y < target.height(); ++y)
+    for (int x = 0; x < target.width(); ++x) {
+      // The ray through the pixel centre travels |(wx, wy, −1)| per unit of depth.
+      Point2d w = camera.window_from_raster({crop.min.x + x + 0.5, crop.min.y + y + 0.5});
+      image.at(x, y, 0) *= float(std::sqrt(w.x * w.x + w.y * w.y + 1));
+    }
+  return image;
+}
+
+Image normal_image(const RenderTarget& target) {
+  Image image = target.normal_image();
+  image.channel_names = {"X", "Y", "Z"};
+  return image;
+}
+
+}  // namespace obscura::raster

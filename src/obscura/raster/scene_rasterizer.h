@@ -1,0 +1,107 @@
+// Draws a Scene through the rasterization pipeline with the scene's camera: the rasterizer's
+// counterpart of the tracer's TraceScene + render().
+//
+// Compiled once from the authoring scene: one object-space vertex array per mesh, one
+// SurfaceMaterial per material (textures as mipmapped raster textures), the lights (point, spot
+// and directional as they are; every emissive instance also as a SurfaceLight, the area light
+// seen as a point; the environment as a constant ambient equal to its mean radiance, and as the
+// background). Then any number of frames, each at one shutter time and optionally with the
+// camera's matrices replaced (jittered lens positions for accumulated depth of field).
+#pragma once
+
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "obscura/camera/animated_transform.h"
+#include "obscura/camera/camera.h"
+#include "obscura/film/film.h"
+#include "obscura/film/image.h"
+#include "obscura/math/matrix4.h"
+#include "obscura/raster/lights.h"
+#include "obscura/raster/render_target.h"
+#include "obscura/raster/shaders.h"
+#include "obscura/raster/surface_material.h"
+#include "obscura/raster/texture.h"
+#include "obscura/raster/tile_rasterizer.h"
+#include "obscura/scene/scene.h"
+
+namespace obscura::raster {
+
+enum class ShadingMode {
+  kFlat,        // per-pixel lighting with each triangle's own (face) normal
+  kGouraud,     // lighting at the vertices, interpolated
+  kPhong,       // per-pixel lighting with interpolated normals; materials keep their lobes
+  kBlinnPhong,  // as kPhong, and Phong materials use the half-vector lobe
+};
+
+struct RasterSettings {
+  int msaa_samples = 1;  // 1, 4 or 8
+  ShadingMode shading = ShadingMode::kPhong;
+  bool cull_back_faces = false;  // front faces wind counter-clockwise (the scene's convention)
+  Wireframe wireframe;
+  bool aovs = false;           // keep object ids, view depth and normals (make_target)
+  bool surface_lights = true;  // emissive instances light the scene as SurfaceLights
+};
+
+// One frame's camera. Unset matrices come from the camera at `time_s`.
+struct RasterFrame {
+  double time_s = 0;  // instances' motion keys and the camera's animated transform are taken here
+  std::optional<Matrix4> view;        // camera_from_world, replacing camera.view_matrix(time_s)
+  std::optional<Matrix4> projection;  // clip_from_camera, replacing camera.projection_matrix()
+};
+
+class SceneRasterizer {
+ public:
+  // Throws obscura::Error for an invalid scene or settings (MSAA not 1, 4 or 8).
+  explicit SceneRasterizer(const Scene& scene, RasterSettings settings = {});
+
+  // A target covering the camera's crop window, with the settings' MSAA and AOVs.
+  RenderTarget make_target(const Camera& camera) const;
+  // Clears `target` (the background: the environment, or black) and draws every instance into
+  // it: exposed linear radiance (× camera.exposure_scale()), ready for a film. The target must
+  // have the crop window's size. Throws obscura::Error for cameras without a projection matrix
+  // (spherical ones) unless `frame.projection` is given.
+  void render_frame(const Camera& camera, const RasterFrame& frame, RenderTarget& target) const;
+  // One frame in the middle of the shutter interval, added to `film` (the crop's size) with
+  // weight 1; fills `target` if given (else a temporary one).
+  void render(const Camera& camera, Film& film, RenderTarget* target = nullptr) const;
+
+  const LightSet& lights() const { return lights_; }
+  const RasterSettings& settings() const { return settings_; }
+  // What compilation approximated or skipped, for the user.
+  const std::vector<std::string>& warnings() const { return warnings_; }
+
+ private:
+  struct CompiledInstance {
+    uint32_t mesh, material;
+    Transform world_from_object;
+    std::optional<AnimatedTransform> motion;
+  };
+  Transform world_from_object(const CompiledInstance& instance, double time_s) const;
+  void draw_background(const Matrix4& world_from_clip, RenderTarget& target, float exposure) const;
+
+  RasterSettings settings_;
+  std::vector<std::vector<MeshVertex>> vertices_;  // per mesh, object space
+  std::vector<std::vector<uint32_t>> indices_;     // per mesh (empty: unindexed)
+  std::vector<Texture> textures_;                  // the used scene textures
+  std::vector<SurfaceMaterial> materials_;
+  std::vector<CompiledInstance> instances_;
+  LightSet lights_;
+  // Background: an equirectangular radiance map (empty: constant) times a colour.
+  Image environment_map_;
+  Rgb environment_scale_;
+  Transform environment_from_world_;
+  std::vector<std::string> warnings_;
+};
+
+// The outputs the tracer also writes (its AOVs), from a target rendered with aovs on:
+// the instance index per pixel (−1 for the background), as float;
+Image id_image(const RenderTarget& target);
+// the distance from the camera along the pixel centre's ray (m; +∞ for the background), from
+// the view depth (perspective: scaled by the ray's length per unit depth);
+Image distance_image(const RenderTarget& target, const Camera& camera);
+// the world-space shading normal facing the camera.
+Image normal_image(const RenderTarget& target);
+
+}  // namespace obscura::raster

@@ -1,0 +1,158 @@
+#include "obscura/raster/surface_material.h"
+
+#include <algorithm>
+#include <variant>
+
+namespace obscura::raster {
+
+namespace {
+
+const Texture* texture_of(const TextureRef& ref, const std::vector<const Texture*>& textures) {
+  return ref.valid() && size_t(ref.texture) < textures.size() ? textures[ref.texture] : nullptr;
+}
+
+float ggx_alpha(float roughness) {
+  float r = std::clamp(roughness, 0.f, 1.f);
+  return r * r;
+}
+
+Rgb min(Rgb a, float b) {
+  return {std::min(a.r, b), std::min(a.g, b), std::min(a.b, b)};
+}
+
+}  // namespace
+
+SurfaceMaterial compile_material(const Material& material,
+                                 const std::vector<const Texture*>& textures) {
+  SurfaceMaterial s;
+  s.emission = material.emission;
+  s.emission_texture = texture_of(material.emission_texture, textures);
+  s.double_sided = material.double_sided;
+  struct Visitor {
+    SurfaceMaterial& s;
+    const std::vector<const Texture*>& textures;
+    void operator()(const DiffuseMaterial& m) const {
+      s.model = SurfaceModel::kLambert;
+      s.base = m.reflectance;
+      s.base_texture = texture_of(m.reflectance_texture, textures);
+    }
+    void operator()(const obscura::PhongMaterial& m) const {
+      s.model = m.blinn ? SurfaceModel::kBlinnPhong : SurfaceModel::kPhong;
+      s.base = m.diffuse;
+      s.specular = m.specular;
+      s.shininess = std::max(0.f, m.shininess);
+      s.base_texture = texture_of(m.diffuse_texture, textures);
+    }
+    void operator()(const ConductorMaterial& m) const {
+      s.model = SurfaceModel::kConductor;
+      s.eta = m.eta, s.k = m.k;
+      s.alpha = std::max(ggx_alpha(m.roughness), kMinHighlightAlpha);
+    }
+    void operator()(const DielectricMaterial& m) const {
+      s.model = SurfaceModel::kDielectric;
+      s.ior = m.ior;
+      s.transmittance = m.transmittance;
+      s.alpha = std::max(ggx_alpha(m.roughness), kMinHighlightAlpha);
+    }
+    void operator()(const MetallicRoughnessMaterial& m) const {
+      s.base = m.base_color;
+      s.base_texture = texture_of(m.base_color_texture, textures);
+      s.occlusion_texture = texture_of(m.occlusion_texture, textures);
+      // KHR_materials_specular with a zero specular: a plain Lambertian surface (as the tracer).
+      if (m.purely_diffuse()) {
+        s.model = SurfaceModel::kLambert;
+        return;
+      }
+      s.model = SurfaceModel::kMetallicRoughness;
+      s.metallic = m.metallic, s.roughness = m.roughness;
+      s.specular_strength = m.specular, s.specular = m.specular_color, s.ior = m.ior;
+      s.metallic_roughness_texture = texture_of(m.metallic_roughness_texture, textures);
+    }
+    void operator()(const EmissiveMaterial&) const { s.model = SurfaceModel::kBlack; }
+  };
+  std::visit(Visitor{s, textures}, material.model);
+  return s;
+}
+
+SurfacePoint surface_point_untextured(const SurfaceMaterial& m, Rgb vertex_color) {
+  SurfacePoint p{};
+  p.model = m.model;
+  p.base = m.base * vertex_color;
+  p.specular = m.specular;
+  p.shininess = m.shininess;
+  p.metallic = m.metallic;
+  p.specular_strength = m.specular_strength;
+  p.alpha = m.alpha;
+  p.ior = m.ior;
+  p.eta = m.eta, p.k = m.k, p.transmittance = m.transmittance;
+  p.occlusion = 1;
+  switch (m.model) {
+    case SurfaceModel::kPhong:
+    case SurfaceModel::kBlinnPhong:
+      conserve_energy(p.base, p.specular);
+      p.lobe_normalization = m.model == SurfaceModel::kPhong
+                                 ? phong_lobe_normalization(p.shininess)
+                                 : blinn_phong_lobe_normalization(p.shininess);
+      break;
+    case SurfaceModel::kMetallicRoughness:
+      // The tracer's floor on α (twice its mirror threshold) keeps D finite in float.
+      p.alpha = std::max(ggx_alpha(m.roughness), 2e-3f);
+      p.specular =
+          min(m.specular * (((m.ior - 1) / (m.ior + 1)) * ((m.ior - 1) / (m.ior + 1))), 1.f);
+      break;
+    default:
+      break;
+  }
+  return p;
+}
+
+SurfacePoint surface_point(const SurfaceMaterial& m, const TextureCoordinates& tc,
+                           Rgb vertex_color) {
+  Rgb color = vertex_color * sample_or_one(m.base_texture, m.filter, tc);
+  if (m.model == SurfaceModel::kMetallicRoughness && m.metallic_roughness_texture) {
+    Rgb mr = sample_or_one(m.metallic_roughness_texture, m.filter, tc);
+    SurfaceMaterial textured = m;
+    textured.roughness *= mr.g;
+    textured.metallic *= mr.b;
+    SurfacePoint p = surface_point_untextured(textured, color);
+    p.occlusion = m.occlusion_texture ? sample_or_one(m.occlusion_texture, m.filter, tc).r : 1.f;
+    return p;
+  }
+  SurfacePoint p = surface_point_untextured(m, color);
+  if (m.occlusion_texture) p.occlusion = sample_or_one(m.occlusion_texture, m.filter, tc).r;
+  return p;
+}
+
+Rgb ambient_reflectance(const SurfacePoint& s, float n_dot_v) {
+  Rgb r;
+  switch (s.model) {
+    case SurfaceModel::kBlack:
+      return {};
+    case SurfaceModel::kLambert:
+      r = s.base;
+      break;
+    case SurfaceModel::kPhong:
+    case SurfaceModel::kBlinnPhong:
+      r = s.base + s.specular;  // a normalized lobe reflects k_s of a uniform surround
+      break;
+    case SurfaceModel::kMetallicRoughness: {
+      float f0 = std::max({s.specular.r, s.specular.g, s.specular.b});
+      float fd = s.specular_strength * schlick(f0, n_dot_v);
+      Rgb dielectric = s.base * (1 - fd) + schlick(s.specular, n_dot_v) * s.specular_strength;
+      r = dielectric * (1 - s.metallic) + schlick(s.base, n_dot_v) * s.metallic;
+      break;
+    }
+    case SurfaceModel::kConductor:
+      r = fresnel_conductor_reflectance(n_dot_v, s.eta, s.k);
+      break;
+    case SurfaceModel::kDielectric: {
+      // Reflected surround plus the surround seen through the glass.
+      float f = fresnel_dielectric_reflectance(n_dot_v, s.ior);
+      r = Rgb(f) + s.transmittance * (1 - f);
+      break;
+    }
+  }
+  return r * s.occlusion;
+}
+
+}  // namespace obscura::raster

@@ -1,0 +1,144 @@
+// A scene material as the rasterizer shades it: one flat struct for every model, its textures
+// resolved to mipmapped raster textures, evaluated per fragment (or per vertex for Gouraud).
+//
+// The mapping (docs/rasterizer.md has the reasoning):
+//   diffuse             Lambert, reflectance × texture
+//   phong               energy-conserving Phong / Blinn-Phong, the tracer's PhongBsdf
+//   metallic-roughness  glTF's model as the tracer evaluates it (GGX, Smith, Schlick); metallic
+//                       and roughness textures (B, G), occlusion (R) darkens the ambient term
+//   conductor           GGX with the exact conductor Fresnel; a mirror's lobe is widened to
+//                       α = kMinHighlightAlpha so lights show as small highlights
+//   dielectric          its GGX reflection lobe with the dielectric Fresnel (widened likewise);
+//                       refraction shows only as ambient light passing through
+//   emissive            reflects nothing
+// Every material adds its emission (× emission texture) on its front face.
+#pragma once
+
+#include <cstdint>
+#include <vector>
+
+#include "obscura/color/rgb.h"
+#include "obscura/raster/brdf.h"
+#include "obscura/raster/texture.h"
+#include "obscura/raster/varyings.h"
+#include "obscura/scene/material.h"
+
+namespace obscura::raster {
+
+enum class SurfaceModel : uint8_t {
+  kBlack,
+  kLambert,
+  kPhong,
+  kBlinnPhong,
+  kMetallicRoughness,
+  kConductor,
+  kDielectric
+};
+
+// Perfectly smooth conductors and glass reflect a punctual light in one direction only; the
+// rasterizer shades them with at least this GGX width (a highlight a few pixels across).
+inline constexpr float kMinHighlightAlpha = 0.02f;
+
+struct SurfaceMaterial {
+  SurfaceModel model = SurfaceModel::kLambert;
+  Rgb base{0.8f, 0.8f, 0.8f};  // Lambert reflectance, Phong k_d, glTF base colour
+  Rgb specular;                // Phong k_s; glTF KHR_materials_specular colour
+  float shininess = 0;         // Phong exponent
+  float metallic = 0, roughness = 1, specular_strength = 1, ior = 1.5f;  // glTF
+  float alpha = 1;         // conductor, dielectric: GGX width
+  Rgb eta, k;              // conductor
+  Rgb transmittance{1.f};  // dielectric
+  Rgb emission;
+  // Textures (null: none). Base multiplies `base`; metallic-roughness: G roughness, B metallic.
+  const Texture* base_texture = nullptr;
+  const Texture* metallic_roughness_texture = nullptr;
+  const Texture* occlusion_texture = nullptr;
+  const Texture* emission_texture = nullptr;
+  TextureFilter filter = TextureFilter::kTrilinear;
+  bool double_sided = true;
+};
+
+// `textures[i]` is the raster form of Scene::textures[i] (null where unused).
+SurfaceMaterial compile_material(const Material& material,
+                                 const std::vector<const Texture*>& textures);
+
+// Texture coordinates and their screen-space derivatives at a fragment.
+struct TextureCoordinates {
+  float u = 0, v = 0, du_dx = 0, dv_dx = 0, du_dy = 0, dv_dy = 0;
+};
+
+// The material at one point: textures applied, vertex colour multiplied into the base colour.
+// Per point the fields mean what they mean in SurfaceMaterial, except: Phong's k_d/k_s are
+// scaled to k_d + k_s ≤ 1; glTF's roughness is folded into `alpha`, and `specular` holds the
+// dielectric F0 (KHR_materials_specular colour × ((η−1)/(η+1))², at most 1).
+struct SurfacePoint {
+  SurfaceModel model;
+  Rgb base, specular;
+  float shininess, lobe_normalization;  // Phong: n and c(n)
+  float metallic, specular_strength, alpha, ior;
+  Rgb eta, k, transmittance;
+  float occlusion;
+};
+
+OBSCURA_RASTER_INLINE Rgb sample_or_one(const Texture* t, TextureFilter filter,
+                                        const TextureCoordinates& c) {
+  return t ? t->sample(filter, c.u, c.v, c.du_dx, c.dv_dx, c.du_dy, c.dv_dy) : Rgb(1.f);
+}
+
+SurfacePoint surface_point(const SurfaceMaterial& m, const TextureCoordinates& tc,
+                           Rgb vertex_color);
+// The same without textures (Gouraud shading at vertices).
+SurfacePoint surface_point_untextured(const SurfaceMaterial& m, Rgb vertex_color);
+
+// f(v, l)·cos θ_l for unit n, v, l (n facing v); zero for light from behind.
+OBSCURA_RASTER_INLINE Rgb reflected_cosine(const SurfacePoint& s, Vector3f n, Vector3f v,
+                                           Vector3f l) {
+  float n_dot_l = dot(n, l), n_dot_v = dot(n, v);
+  if (n_dot_l <= 0 || n_dot_v <= 0) return {};
+  switch (s.model) {
+    case SurfaceModel::kBlack:
+      return {};
+    case SurfaceModel::kLambert:
+      return s.base * (kBrdfInvPi * n_dot_l);
+    case SurfaceModel::kPhong:
+    case SurfaceModel::kBlinnPhong: {
+      float lobe;
+      if (s.model == SurfaceModel::kPhong) {
+        lobe = dot(n * (2 * n_dot_v) - v, l);  // the mirror of v against l
+      } else {
+        lobe = dot(n, normalize(v + l));
+      }
+      float spec = lobe > 0 ? std::pow(lobe, s.shininess) * s.lobe_normalization : 0.f;
+      return (s.base * kBrdfInvPi + s.specular * spec) * n_dot_l;
+    }
+    case SurfaceModel::kMetallicRoughness: {
+      Vector3f h = normalize(v + l);
+      float v_h = dot(v, h);
+      float lobe = ggx_specular(n_dot_v, n_dot_l, dot(n, h), s.alpha);
+      float f0 = std::max({s.specular.r, s.specular.g, s.specular.b});
+      float diffuse_weight = (1 - s.specular_strength * schlick(f0, n_dot_v)) *
+                             (1 - s.specular_strength * schlick(f0, n_dot_l));
+      Rgb dielectric = s.base * (diffuse_weight * kBrdfInvPi) +
+                       schlick(s.specular, v_h) * (s.specular_strength * lobe);
+      Rgb metal = schlick(s.base, v_h) * lobe;
+      return (dielectric * (1 - s.metallic) + metal * s.metallic) * n_dot_l;
+    }
+    case SurfaceModel::kConductor: {
+      Vector3f h = normalize(v + l);
+      float lobe = ggx_specular(n_dot_v, n_dot_l, dot(n, h), s.alpha);
+      return fresnel_conductor_reflectance(dot(v, h), s.eta, s.k) * (lobe * n_dot_l);
+    }
+    case SurfaceModel::kDielectric: {
+      Vector3f h = normalize(v + l);
+      float lobe = ggx_specular(n_dot_v, n_dot_l, dot(n, h), s.alpha);
+      return Rgb(fresnel_dielectric_reflectance(dot(v, h), s.ior) * lobe * n_dot_l);
+    }
+  }
+  return {};
+}
+
+// How much of a uniform ambient radiance the surface reflects towards v (its directional
+// albedo, approximated by Fresnel at n·v for the glossy models), occlusion texture applied.
+Rgb ambient_reflectance(const SurfacePoint& s, float n_dot_v);
+
+}  // namespace obscura::raster
