@@ -6,10 +6,17 @@
 //     TraceScene::intersect (closest hit + the SurfaceHit shading needs) and
 //     TraceScene::occluded; "embree_raw" calls rtcIntersect1/rtcOccluded1 on an Embree scene
 //     built with the same flags.
+//     Scenes with instances are built the same way on both sides: a mesh placed once is copied
+//     into world space, a mesh placed several times is one Embree scene under one
+//     RTC_GEOMETRY_TYPE_INSTANCE per placement (TraceScene's default policy, redone here with
+//     raw Embree calls).
 //   cornell/path/<spp>: renders ../shared/reference/cornell at 128², reports RMSE vs the
 //     16,384-spp Cycles reference.
+//   cornell/equal_time/<solid_angle|area>/<ms>: the same render, area lights sampled by solid
+//     angle or by area, for a fixed time: RMSE at equal time.
 // Scenes: the Stanford bunny (../shared/assets/meshes/stanford_bunny/bun_zipper.ply, 69 k
-// triangles) and, when OBSCURA_BENCH_OBJ names it, the 1 M-triangle sphere grid written by
+// triangles), a 4×4 grid of bunny instances (one mesh, 16 placements, 1.1 M triangles) and, when
+// OBSCURA_BENCH_OBJ names it, the 1 M-triangle sphere grid written by
 // ../shared/tools/peers/embree/run.sh --write-obj.
 // Run: OBSCURA_BENCH_OBJ=spheres.obj build/bench/tracer_bench --benchmark_counters_tabular=true
 #include <benchmark/benchmark.h>
@@ -98,35 +105,78 @@ struct BenchScene {
   RayBatch rays;
 };
 
+RTCGeometry raw_triangles(RTCDevice device, const Mesh& m, const Transform& world_from_object) {
+  RTCGeometry g = rtcNewGeometry(device, RTC_GEOMETRY_TYPE_TRIANGLE);
+  auto* v = static_cast<float*>(rtcSetNewGeometryBuffer(g, RTC_BUFFER_TYPE_VERTEX, 0,
+                                                        RTC_FORMAT_FLOAT3, 12, m.positions.size()));
+  auto* i = static_cast<unsigned*>(rtcSetNewGeometryBuffer(
+      g, RTC_BUFFER_TYPE_INDEX, 0, RTC_FORMAT_UINT3, 12, m.triangle_count()));
+  for (size_t k = 0; k < m.positions.size(); ++k) {
+    Point3f p = world_from_object(m.positions[k]);
+    v[3 * k] = p.x, v[3 * k + 1] = p.y, v[3 * k + 2] = p.z;
+  }
+  for (size_t k = 0; k < m.indices.size(); ++k) i[k] = m.indices[k];
+  rtcCommitGeometry(g);
+  return g;
+}
+
+RTCScene raw_scene(RTCDevice device) {
+  RTCScene scene = rtcNewScene(device);
+  rtcSetSceneFlags(scene, RTC_SCENE_FLAG_ROBUST);
+  rtcSetSceneBuildQuality(scene, RTC_BUILD_QUALITY_HIGH);
+  return scene;
+}
+
 void build_raw(BenchScene& s) {
   s.raw_device = rtcNewDevice(nullptr);
-  s.raw = rtcNewScene(s.raw_device);
-  rtcSetSceneFlags(s.raw, RTC_SCENE_FLAG_ROBUST);
-  rtcSetSceneBuildQuality(s.raw, RTC_BUILD_QUALITY_HIGH);
-  for (const Mesh& m : s.scene.meshes) {
-    RTCGeometry g = rtcNewGeometry(s.raw_device, RTC_GEOMETRY_TYPE_TRIANGLE);
-    auto* v = static_cast<float*>(rtcSetNewGeometryBuffer(
-        g, RTC_BUFFER_TYPE_VERTEX, 0, RTC_FORMAT_FLOAT3, 12, m.positions.size()));
-    auto* i = static_cast<unsigned*>(rtcSetNewGeometryBuffer(
-        g, RTC_BUFFER_TYPE_INDEX, 0, RTC_FORMAT_UINT3, 12, m.triangle_count()));
-    for (size_t k = 0; k < m.positions.size(); ++k)
-      v[3 * k] = m.positions[k].x, v[3 * k + 1] = m.positions[k].y, v[3 * k + 2] = m.positions[k].z;
-    for (size_t k = 0; k < m.indices.size(); ++k) i[k] = m.indices[k];
+  s.raw = raw_scene(s.raw_device);
+  std::vector<int> uses(s.scene.meshes.size(), 0);
+  for (const Instance& in : s.scene.instances) ++uses[in.mesh];
+  std::vector<RTCScene> prototypes(s.scene.meshes.size(), nullptr);
+  for (const Instance& in : s.scene.instances) {
+    const Mesh& m = s.scene.meshes[in.mesh];
+    if (uses[in.mesh] == 1) {
+      RTCGeometry g = raw_triangles(s.raw_device, m, in.world_from_object);
+      rtcAttachGeometry(s.raw, g);
+      rtcReleaseGeometry(g);
+      continue;
+    }
+    if (!prototypes[in.mesh]) {
+      prototypes[in.mesh] = raw_scene(s.raw_device);
+      RTCGeometry g = raw_triangles(s.raw_device, m, Transform());
+      rtcAttachGeometry(prototypes[in.mesh], g);
+      rtcReleaseGeometry(g);
+      rtcCommitScene(prototypes[in.mesh]);
+    }
+    RTCGeometry g = rtcNewGeometry(s.raw_device, RTC_GEOMETRY_TYPE_INSTANCE);
+    rtcSetGeometryInstancedScene(g, prototypes[in.mesh]);
+    float xfm[3][4];
+    for (int r = 0; r < 3; ++r)
+      for (int c = 0; c < 4; ++c) xfm[r][c] = float(in.world_from_object.matrix().m[r][c]);
+    rtcSetGeometryTransform(g, 0, RTC_FORMAT_FLOAT3X4_ROW_MAJOR, xfm);
     rtcCommitGeometry(g);
     rtcAttachGeometry(s.raw, g);
     rtcReleaseGeometry(g);
   }
   rtcCommitScene(s.raw);
+  for (RTCScene p : prototypes)
+    if (p) rtcReleaseScene(p);  // the instances hold their own references
 }
 
-// Frames the mesh's bounds from the front-top and builds the three ray sets.
-BenchScene make_bench_scene(Mesh mesh) {
+// A scene of one mesh, placed once.
+Scene single(Mesh mesh) {
+  Scene scene;
+  scene.name = mesh.name;
+  scene.materials = {diffuse_material("grey", Rgb(0.5f))};
+  scene.add_meshes({std::move(mesh)});
+  return scene;
+}
+
+// Frames the scene's bounds from the front-top and builds the three ray sets.
+BenchScene make_bench_scene(Scene scene) {
   BenchScene s;
-  s.scene.name = mesh.name;
-  s.scene.materials = {diffuse_material("grey", Rgb(0.5f))};
-  Bounds3f b;
-  for (Point3f p : mesh.positions) b = unite(b, p);
-  s.scene.add_meshes({std::move(mesh)});
+  s.scene = std::move(scene);
+  Bounds3f b = s.scene.bounds();
   Point3f c = b.min + (b.max - b.min) * 0.5f;
   float r = 0.5f * distance(b.min, b.max);
   Camera camera =
@@ -159,16 +209,35 @@ BenchScene make_bench_scene(Mesh mesh) {
   return s;
 }
 
+Mesh bunny_mesh() {
+  return read_mesh(shared("assets/meshes/stanford_bunny/bun_zipper.ply"));
+}
+
 BenchScene& bunny() {
-  static BenchScene s =
-      make_bench_scene(read_mesh(shared("assets/meshes/stanford_bunny/bun_zipper.ply")));
+  static BenchScene s = make_bench_scene(single(bunny_mesh()));
   return s;
+}
+
+// 16 bunnies on a 4 × 4 grid, each turned differently: one mesh, 16 Embree instances.
+BenchScene* bunny_grid() {
+  static BenchScene s = [] {
+    Scene scene = single(bunny_mesh());
+    scene.instances.clear();
+    for (int i = 0; i < 16; ++i) {
+      Instance& in = scene.instances.emplace_back();
+      in.name = "bunny";
+      in.world_from_object =
+          Transform::translate({0.2 * (i % 4), 0, -0.2 * (i / 4)}) * Transform::rotate_y(0.4 * i);
+    }
+    return make_bench_scene(std::move(scene));
+  }();
+  return &s;
 }
 
 BenchScene* spheres() {
   static std::unique_ptr<BenchScene> s = [] {
     const char* path = std::getenv("OBSCURA_BENCH_OBJ");
-    return path ? std::make_unique<BenchScene>(make_bench_scene(read_mesh(path))) : nullptr;
+    return path ? std::make_unique<BenchScene>(make_bench_scene(single(read_mesh(path)))) : nullptr;
   }();
   return s.get();
 }
@@ -233,7 +302,9 @@ BenchScene* bunny_ptr() {
 void register_ray_benchmarks() {
   const char* kinds[] = {"primary", "shadow", "bounce"};
   const char* impls[] = {"obscura", "embree_raw"};
-  for (auto [name, scene] : {std::pair{"bunny", &bunny_ptr}, std::pair{"spheres_1M", &spheres}})
+  for (auto [name, scene] :
+       {std::pair{"bunny", &bunny_ptr}, std::pair{"bunny_grid_16", &bunny_grid},
+        std::pair{"spheres_1M", &spheres}})
     for (int k = 0; k < 3; ++k)
       for (int i = 0; i < 2; ++i)
         benchmark::RegisterBenchmark(
@@ -267,6 +338,54 @@ void cornell_path(benchmark::State& state) {
   }
   state.counters["rmse"] = rmse / state.iterations();
 }
+
+// The same render for a fixed wall time (state.range(0) ms), area lights sampled by solid angle
+// or by area: the RMSE reached, the samples per pixel and seconds that took (passes end before
+// the limit), and RMSE·√seconds — the error either would reach in one second, which compares
+// the two at exactly equal time since the error falls as 1/√time.
+void cornell_equal_time(benchmark::State& state, AreaLightSampling sampling) {
+  tbb::global_control threads(tbb::global_control::max_allowed_parallelism, 2);
+  Scene scene = load_scene_file(shared("reference/cornell/cornell.glb"));
+  Camera camera = testing::make_camera({0, 1, 3.9}, {0, 1, 0}, 128, 39.597752709049864);
+  TraceScene trace(scene, std::make_shared<EmbreeDevice>(), {.area_light_sampling = sampling});
+  Image reference = read_image(shared("reference/cornell/cornell_ref.exr"));
+  double rmse = 0, spp = 0, seconds = 0, efficiency = 0;
+  uint64_t seed = 100;
+  for (auto _ : state) {
+    Film film(128, 128);
+    RenderStats stats = render(trace, camera, PathTracer(),
+                               {.samples_per_pixel = 1 << 20,
+                                .seed = seed++,
+                                .time_limit_s = double(state.range(0)) / 1000},
+                               film);
+    double se = 0;
+    for (int y = 0; y < 128; ++y)
+      for (int x = 0; x < 128; ++x)
+        for (int c = 0; c < 3; ++c)
+          se += std::pow(film.pixel({x, y})[c] - reference.at(x, y, c), 2);
+    double e = std::sqrt(se / (128 * 128 * 3));
+    rmse += e;
+    spp += stats.samples_per_pixel;
+    seconds += stats.seconds;
+    efficiency += e * std::sqrt(stats.seconds);
+  }
+  double n = double(state.iterations());
+  state.counters["rmse"] = rmse / n;
+  state.counters["spp"] = spp / n;
+  state.counters["render_s"] = seconds / n;
+  state.counters["rmse_x_sqrt_s"] = efficiency / n;
+}
+
+BENCHMARK_CAPTURE(cornell_equal_time, solid_angle, AreaLightSampling::kSolidAngle)
+    ->Name("cornell/equal_time/solid_angle")
+    ->Arg(4000)
+    ->Unit(benchmark::kMillisecond)
+    ->UseRealTime();
+BENCHMARK_CAPTURE(cornell_equal_time, area, AreaLightSampling::kArea)
+    ->Name("cornell/equal_time/area")
+    ->Arg(4000)
+    ->Unit(benchmark::kMillisecond)
+    ->UseRealTime();
 
 BENCHMARK(cornell_path)
     ->Name("cornell/path")

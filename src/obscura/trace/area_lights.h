@@ -1,7 +1,12 @@
 // Emissive triangles as area lights, chosen in proportion to their power (area × luminance of
-// emitted radiance) and sampled uniformly by area.
+// emitted radiance), then sampled from the shaded point: uniformly in the solid angle the
+// triangle subtends (a spherical triangle, math/spherical_triangle.h) when that is neither tiny
+// nor close to a hemisphere, uniformly by area otherwise. The choice depends only on the point
+// and the triangle, so pdf() reproduces it for multiple importance sampling.
 #pragma once
 
+#include <cstdint>
+#include <optional>
 #include <vector>
 
 #include "obscura/color/rgb.h"
@@ -10,25 +15,56 @@
 
 namespace obscura {
 
-struct AreaLightSample {
+enum class AreaLightSampling {
+  kSolidAngle,  // spherical triangles where they are well conditioned, area elsewhere
+  kArea,        // always uniform by area (the density in solid angle varies as d²/cos)
+};
+
+struct AreaLightPoint {
   Point3f position;
   Normal3f normal;  // the emitting side
   Rgb radiance;     // emitted towards the front side
   float pdf_area;   // density with respect to surface area over all lights (m⁻²)
 };
 
+struct AreaLightSample {
+  Vector3f wi;     // unit, from the shaded point towards the light
+  float distance;  // to the light point
+  Point3f position;
+  Normal3f normal;  // the emitting side
+  Rgb radiance;     // arriving along −wi
+  float pdf;        // solid-angle density over all area lights (sr⁻¹)
+};
+
 class AreaLights {
  public:
+  // Solid angles (sr) within which spherical sampling is used. Below the lower bound the
+  // triangle is small or seen edge-on: its d²/cos varies little across it, so area sampling is
+  // as good and its numbers are better conditioned; near 2π the point almost touches the light.
+  static constexpr double kMinSphericalSolidAngle = 3e-4;
+  static constexpr double kMaxSphericalSolidAngle = 6.2;
+
   AreaLights() = default;
-  AreaLights(const std::vector<Mesh>& meshes, const std::vector<Material>& materials);
+  // `meshes` in world space, indexed as the ids hits report (SurfaceHit::mesh); meshes whose
+  // material does not emit (or that are empty) are not lights.
+  AreaLights(const std::vector<Mesh>& meshes, const std::vector<Material>& materials,
+             AreaLightSampling sampling = AreaLightSampling::kSolidAngle);
 
   bool empty() const { return triangles_.empty(); }
   size_t size() const { return triangles_.size(); }
-  // `u_select` picks a triangle, `u_point` a point on it.
-  AreaLightSample sample(float u_select, Point2f u_point) const;
-  // The area density with which sample() picks points on triangle `primitive` of mesh `mesh`
-  // (0 for a triangle that is not a light): what multiple importance sampling weighs a BSDF
-  // sample that hit the light against.
+  AreaLightSampling sampling() const { return sampling_; }
+
+  // A light point for shading point `p`: `u_select` picks a triangle, `u_point` a point on it.
+  // Nothing when the chosen triangle faces away from `p` (lights emit from their front face).
+  std::optional<AreaLightSample> sample(Point3f p, float u_select, Point2f u_point) const;
+  // The solid-angle density with which sample() from `p` gives `light_point` on triangle
+  // `primitive` of mesh `mesh` (0 for a triangle that is not a light or faces away): what
+  // multiple importance sampling weighs a BSDF sample that hit the light against.
+  float pdf(Point3f p, uint32_t mesh, uint32_t primitive, Point3f light_point) const;
+
+  // A point uniform by area, independent of any shading point (the `direct` integrator).
+  AreaLightPoint sample_point(float u_select, Point2f u_point) const;
+  // The area density with which sample_point() picks points on triangle `primitive` of `mesh`.
   float pdf_area(uint32_t mesh, uint32_t primitive) const;
   // Σ area · π · luminance(radiance): the emitted power's luminance (W), for light selection.
   double power() const { return power_; }
@@ -40,11 +76,17 @@ class AreaLights {
     Rgb radiance;
     float area;
   };
+  int32_t index_of(uint32_t mesh, uint32_t primitive) const;
+  float selection_probability(size_t i) const { return cdf_[i] - (i == 0 ? 0.f : cdf_[i - 1]); }
+  // The triangle's solid angle from p when spherical sampling applies to it there, else 0.
+  double spherical_solid_angle(const Triangle& tri, Point3f p) const;
+
   std::vector<Triangle> triangles_;
   std::vector<float> cdf_;  // cumulative selection probability, cdf_.back() == 1
   // Per mesh, per triangle: its index in triangles_, or −1; empty for meshes that do not emit.
   std::vector<std::vector<int32_t>> light_of_triangle_;
   double power_ = 0;
+  AreaLightSampling sampling_ = AreaLightSampling::kSolidAngle;
 };
 
 }  // namespace obscura

@@ -43,6 +43,7 @@ Rgb DirectLightingIntegrator::radiance(const TraceScene& scene, const Ray& ray, 
     shadow.origin =
         offset_ray_origin(hit->position, hit->geometric_normal, in->wi, scene.ray_epsilon());
     shadow.direction = in->wi;
+    shadow.time = hit->time;
     if (std::isfinite(in->distance)) shadow.t_max = in->distance * (1 - 1e-4f);
     ++counts.shadow;
     if (!scene.occluded(shadow)) result += f * in->radiance;
@@ -50,7 +51,7 @@ Rgb DirectLightingIntegrator::radiance(const TraceScene& scene, const Ray& ray, 
 
   // 2. One sample on the area lights, with its shadow ray.
   if (scene.lights().empty()) return result;
-  AreaLightSample light = scene.lights().sample(u_light, u_point);
+  AreaLightPoint light = scene.lights().sample_point(u_light, u_point);
   Vector3f to_light = light.position - hit->position;
   float distance2 = length_squared(to_light);
   if (distance2 <= 0) return result;
@@ -62,7 +63,7 @@ Rgb DirectLightingIntegrator::radiance(const TraceScene& scene, const Ray& ray, 
 
   ++counts.shadow;
   Point3f origin = offset_ray_origin(hit->position, hit->geometric_normal, wi, scene.ray_epsilon());
-  if (scene.occluded(origin, light.position)) return result;
+  if (scene.occluded(origin, light.position, hit->time)) return result;
 
   // L = f · Le · cosθ · cosθ' / d² / p_A.
   float geometry = cos_surface * cos_light / distance2;

@@ -1,5 +1,7 @@
 #include "obscura/trace/embree_scene.h"
 
+#include <algorithm>
+#include <cmath>
 #include <cstring>
 #include <limits>
 #include <mutex>
@@ -31,13 +33,13 @@ ErrorSlot& error_slot() {
   return slot;
 }
 
-RTCRay to_rtc_ray(const Ray& ray) {
+RTCRay to_rtc_ray(const Ray& ray, float embree_time) {
   RTCRay r;
   r.org_x = ray.origin.x, r.org_y = ray.origin.y, r.org_z = ray.origin.z;
   r.dir_x = ray.direction.x, r.dir_y = ray.direction.y, r.dir_z = ray.direction.z;
   r.tnear = ray.t_min;
   r.tfar = ray.t_max;
-  r.time = ray.time;
+  r.time = embree_time;
   r.mask = std::numeric_limits<unsigned>::max();
   r.id = 0;
   r.flags = 0;
@@ -67,21 +69,11 @@ void EmbreeDevice::throw_if_error(const char* during) const {
   throw Error(std::string(during) + ": " + message);
 }
 
-EmbreeScene::EmbreeScene(std::shared_ptr<const EmbreeDevice> device) : device_(std::move(device)) {
-  scene_ = rtcNewScene(device_->handle());
-  // Robust traversal: watertight against rays through shared edges and vertices.
-  rtcSetSceneFlags(scene_, RTC_SCENE_FLAG_ROBUST);
-  rtcSetSceneBuildQuality(scene_, RTC_BUILD_QUALITY_HIGH);
-  device_->throw_if_error("creating the Embree scene");
-}
+namespace {
 
-EmbreeScene::~EmbreeScene() {
-  rtcReleaseScene(scene_);
-}
-
-uint32_t EmbreeScene::add_triangle_mesh(std::span<const Point3f> positions,
-                                        std::span<const uint32_t> indices) {
-  if (committed_) throw Error("EmbreeScene: geometry added after commit()");
+// A committed triangle geometry holding copies of the mesh (not yet attached to a scene).
+RTCGeometry new_triangle_geometry(const EmbreeDevice& device, std::span<const Point3f> positions,
+                                  std::span<const uint32_t> indices) {
   if (indices.size() % 3 != 0)
     throw Error("triangle mesh index count " + std::to_string(indices.size()) +
                 " is not a multiple of 3");
@@ -89,14 +81,14 @@ uint32_t EmbreeScene::add_triangle_mesh(std::span<const Point3f> positions,
     if (i >= positions.size())
       throw Error("triangle mesh index " + std::to_string(i) + " is past the vertex count " +
                   std::to_string(positions.size()));
-  RTCGeometry geometry = rtcNewGeometry(device_->handle(), RTC_GEOMETRY_TYPE_TRIANGLE);
+  RTCGeometry geometry = rtcNewGeometry(device.handle(), RTC_GEOMETRY_TYPE_TRIANGLE);
   // Embree may read 16 bytes at the last vertex, so its own buffers (padded) are used.
   auto* vertices = static_cast<float*>(rtcSetNewGeometryBuffer(
       geometry, RTC_BUFFER_TYPE_VERTEX, 0, RTC_FORMAT_FLOAT3, 3 * sizeof(float), positions.size()));
   auto* triangles = static_cast<uint32_t*>(
       rtcSetNewGeometryBuffer(geometry, RTC_BUFFER_TYPE_INDEX, 0, RTC_FORMAT_UINT3,
                               3 * sizeof(uint32_t), indices.size() / 3));
-  device_->throw_if_error("allocating Embree geometry buffers");
+  device.throw_if_error("allocating Embree geometry buffers");
   for (size_t i = 0; i < positions.size(); ++i) {
     vertices[3 * i + 0] = positions[i].x;
     vertices[3 * i + 1] = positions[i].y;
@@ -104,10 +96,95 @@ uint32_t EmbreeScene::add_triangle_mesh(std::span<const Point3f> positions,
   }
   std::memcpy(triangles, indices.data(), indices.size_bytes());
   rtcCommitGeometry(geometry);
+  return geometry;
+}
+
+RTCScene new_scene(const EmbreeDevice& device) {
+  RTCScene scene = rtcNewScene(device.handle());
+  // Robust traversal: watertight against rays through shared edges and vertices.
+  rtcSetSceneFlags(scene, RTC_SCENE_FLAG_ROBUST);
+  rtcSetSceneBuildQuality(scene, RTC_BUILD_QUALITY_HIGH);
+  return scene;
+}
+
+}  // namespace
+
+EmbreeScene::EmbreeScene(std::shared_ptr<const EmbreeDevice> device) : device_(std::move(device)) {
+  scene_ = new_scene(*device_);
+  device_->throw_if_error("creating the Embree scene");
+}
+
+EmbreeScene::~EmbreeScene() {
+  for (RTCGeometry g : instances_)
+    if (g) rtcReleaseGeometry(g);
+  rtcReleaseScene(scene_);
+  for (RTCScene s : prototypes_) rtcReleaseScene(s);
+}
+
+uint32_t EmbreeScene::attach(RTCGeometry geometry, const char* during) {
   uint32_t id = rtcAttachGeometry(scene_, geometry);
-  rtcReleaseGeometry(geometry);
-  device_->throw_if_error("adding a triangle mesh");
+  device_->throw_if_error(during);
+  if (instances_.size() <= id) instances_.resize(id + 1, nullptr);
   return id;
+}
+
+uint32_t EmbreeScene::add_triangle_mesh(std::span<const Point3f> positions,
+                                        std::span<const uint32_t> indices) {
+  if (committed_) throw Error("EmbreeScene: geometry added after commit()");
+  RTCGeometry geometry = new_triangle_geometry(*device_, positions, indices);
+  uint32_t id = attach(geometry, "adding a triangle mesh");
+  rtcReleaseGeometry(geometry);
+  return id;
+}
+
+uint32_t EmbreeScene::add_prototype(std::span<const Point3f> positions,
+                                    std::span<const uint32_t> indices) {
+  if (committed_) throw Error("EmbreeScene: geometry added after commit()");
+  RTCGeometry geometry = new_triangle_geometry(*device_, positions, indices);
+  RTCScene prototype = new_scene(*device_);
+  prototypes_.push_back(prototype);
+  rtcAttachGeometry(prototype, geometry);
+  rtcReleaseGeometry(geometry);
+  rtcCommitScene(prototype);  // instances need their scene built before the top level is
+  device_->throw_if_error("building an instanced mesh");
+  return uint32_t(prototypes_.size() - 1);
+}
+
+uint32_t EmbreeScene::add_instance(uint32_t prototype,
+                                   std::span<const Transform> world_from_object) {
+  if (committed_) throw Error("EmbreeScene: geometry added after commit()");
+  if (prototype >= prototypes_.size())
+    throw Error("instance of prototype " + std::to_string(prototype) + " of " +
+                std::to_string(prototypes_.size()));
+  if (world_from_object.empty() || world_from_object.size() > size_t(kMaxTimeSteps))
+    throw Error("an instance needs 1 to " + std::to_string(kMaxTimeSteps) + " transforms; got " +
+                std::to_string(world_from_object.size()));
+  RTCGeometry geometry = rtcNewGeometry(device_->handle(), RTC_GEOMETRY_TYPE_INSTANCE);
+  rtcSetGeometryInstancedScene(geometry, prototypes_[prototype]);
+  rtcSetGeometryTimeStepCount(geometry, unsigned(world_from_object.size()));
+  for (size_t step = 0; step < world_from_object.size(); ++step) {
+    const auto& m = world_from_object[step].matrix().m;
+    float rows[3][4];
+    for (int r = 0; r < 3; ++r)
+      for (int c = 0; c < 4; ++c) rows[r][c] = float(m[r][c]);
+    rtcSetGeometryTransform(geometry, unsigned(step), RTC_FORMAT_FLOAT3X4_ROW_MAJOR, rows);
+  }
+  rtcCommitGeometry(geometry);
+  uint32_t id = attach(geometry, "adding an instance");
+  instances_[id] = geometry;  // kept (not released) for instance_transform()
+  return id;
+}
+
+void EmbreeScene::set_motion_interval(double open_s, double close_s) {
+  if (!(std::isfinite(open_s) && std::isfinite(close_s) && close_s >= open_s))
+    throw Error("motion interval", "needs finite open ≤ close; got [" + std::to_string(open_s) +
+                                       ", " + std::to_string(close_s) + "] s");
+  time_open_s_ = open_s;
+  time_scale_ = close_s > open_s ? 1 / (close_s - open_s) : 0;
+}
+
+float EmbreeScene::embree_time(float time_s) const {
+  return std::clamp(float((time_s - time_open_s_) * time_scale_), 0.f, 1.f);
 }
 
 void EmbreeScene::commit() {
@@ -116,27 +193,37 @@ void EmbreeScene::commit() {
   committed_ = true;
 }
 
+Affine3f EmbreeScene::instance_transform(uint32_t geometry_id, float time_s) const {
+  Affine3f a;
+  rtcGetGeometryTransform(instances_[geometry_id], embree_time(time_s),
+                          RTC_FORMAT_FLOAT3X4_ROW_MAJOR, a.m);
+  return a;
+}
+
 std::optional<RayHit> EmbreeScene::intersect(const Ray& ray) const {
   RTCIntersectContext context;
   rtcInitIntersectContext(&context);
   RTCRayHit query;
-  query.ray = to_rtc_ray(ray);
+  query.ray = to_rtc_ray(ray, embree_time(ray.time));
   query.hit.geomID = RTC_INVALID_GEOMETRY_ID;
   query.hit.instID[0] = RTC_INVALID_GEOMETRY_ID;
   rtcIntersect1(scene_, &context, &query);
   if (query.hit.geomID == RTC_INVALID_GEOMETRY_ID) return std::nullopt;
-  // Embree's Ng is e2 × e1 with e1 = p0 − p1, e2 = p2 − p0, i.e. (p1 − p0) × (p2 − p0).
+  // Embree's Ng is e2 × e1 with e1 = p0 − p1, e2 = p2 − p0, i.e. (p1 − p0) × (p2 − p0), in the
+  // space of the mesh hit (object space inside an instance). Instances are one level deep.
+  bool instanced = query.hit.instID[0] != RTC_INVALID_GEOMETRY_ID;
   return RayHit{query.ray.tfar,
-                query.hit.geomID,
+                instanced ? query.hit.instID[0] : query.hit.geomID,
                 query.hit.primID,
                 {query.hit.u, query.hit.v},
-                {query.hit.Ng_x, query.hit.Ng_y, query.hit.Ng_z}};
+                {query.hit.Ng_x, query.hit.Ng_y, query.hit.Ng_z},
+                instanced};
 }
 
 bool EmbreeScene::occluded(const Ray& ray) const {
   RTCIntersectContext context;
   rtcInitIntersectContext(&context);
-  RTCRay query = to_rtc_ray(ray);
+  RTCRay query = to_rtc_ray(ray, embree_time(ray.time));
   rtcOccluded1(scene_, &context, &query);
   return query.tfar < 0;  // Embree sets tfar to −∞ on a hit
 }

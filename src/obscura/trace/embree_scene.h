@@ -1,18 +1,25 @@
 // The ray-query layer: Obscura's only door to Embree. Later code asks `intersect` and `occluded`;
 // nothing else calls Embree directly.
+//
+// Geometry comes in two forms: triangle meshes placed directly in the world, and prototypes
+// (a mesh built once into its own Embree scene) placed any number of times by instances, each
+// with its own transform — or, for motion blur, a transform per Embree time step.
 #pragma once
 
 #include <cstdint>
 #include <memory>
 #include <optional>
 #include <span>
+#include <vector>
 
 #include "obscura/math/ray.h"
+#include "obscura/math/transform.h"
 #include "obscura/math/vector.h"
 
 // Embree's handles, declared here so that its headers stay out of ours.
 struct RTCDeviceTy;
 struct RTCSceneTy;
+struct RTCGeometryTy;
 
 namespace obscura {
 
@@ -34,11 +41,19 @@ class EmbreeDevice {
 
 struct RayHit {
   float t;                // distance along the ray, in multiples of its direction
-  uint32_t geometry_id;   // as returned by add_triangle_mesh
-  uint32_t primitive_id;  // triangle index within that mesh
+  uint32_t geometry_id;   // as returned by add_triangle_mesh or add_instance
+  uint32_t primitive_id;  // triangle index within that mesh (the prototype's, for an instance)
   Point2f barycentric;    // (b1, b2): the hit point is (1−b1−b2)·p0 + b1·p1 + b2·p2
   Vector3f normal;        // the triangle's geometric normal as Embree computed it, not unit;
-                          // along (p1 − p0) × (p2 − p0)
+                          // along (p1 − p0) × (p2 − p0), in the mesh's own space: object space
+                          // when `instanced`, world space otherwise
+  bool instanced;         // the hit is on an instance (geometry_id is the instance's id)
+};
+
+// An affine world_from_object transform at one moment, as Embree interpolates it: row-major,
+// the last column the translation.
+struct Affine3f {
+  float m[3][4];
 };
 
 class EmbreeScene {
@@ -51,8 +66,24 @@ class EmbreeScene {
   // Copies a triangle mesh into Embree; returns its geometry id (0, 1, 2… in call order).
   // `indices` holds three vertex indices per triangle. Precondition: indices < positions.size().
   uint32_t add_triangle_mesh(std::span<const Point3f> positions, std::span<const uint32_t> indices);
+  // Builds a mesh into an acceleration structure of its own, to be placed by add_instance;
+  // returns its prototype index (0, 1, 2… in call order). Same preconditions as above.
+  uint32_t add_prototype(std::span<const Point3f> positions, std::span<const uint32_t> indices);
+  // Places a prototype in the world; returns the instance's geometry id (shared numbering with
+  // add_triangle_mesh). One transform is a static instance; n ≥ 2 (at most kMaxTimeSteps) are
+  // Embree time steps spread evenly over the motion interval, linearly interpolated between.
+  uint32_t add_instance(uint32_t prototype, std::span<const Transform> world_from_object);
+  static constexpr int kMaxTimeSteps = 129;  // Embree's limit
+  // The interval (s) that time steps span: a ray's time (s) maps to Embree's [0, 1] over it,
+  // clamped. Defaults to [0, 0]: every moving instance holds its first time step.
+  // Precondition: close_s ≥ open_s, both finite.
+  void set_motion_interval(double open_s, double close_s);
   // Builds the acceleration structure; call once after adding geometry, before any query.
   void commit();
+
+  // An instance's world_from_object at `time_s` exactly as traversal used it. Thread-safe after
+  // commit(). Precondition: `geometry_id` came from add_instance.
+  Affine3f instance_transform(uint32_t geometry_id, float time_s) const;
 
   // The closest hit with t in [ray.t_min, ray.t_max], if any. Thread-safe after commit().
   std::optional<RayHit> intersect(const Ray& ray) const;
@@ -61,7 +92,13 @@ class EmbreeScene {
 
  private:
   std::shared_ptr<const EmbreeDevice> device_;
+  float embree_time(float time_s) const;
+  uint32_t attach(RTCGeometryTy* geometry, const char* during);
+
   RTCSceneTy* scene_ = nullptr;
+  std::vector<RTCSceneTy*> prototypes_;
+  std::vector<RTCGeometryTy*> instances_;    // by geometry id; null for meshes placed directly
+  double time_open_s_ = 0, time_scale_ = 0;  // Embree time = (time − open) · scale
   bool committed_ = false;
 };
 

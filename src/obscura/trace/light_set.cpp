@@ -49,32 +49,20 @@ std::optional<LightSample> LightSet::sample(Point3f p, float u_select, Point2f u
     return LightSample{
         .wi = s.wi, .radiance = s.radiance, .pdf = s.pdf * p_kind, .position = {}, .normal = {}};
   }
-  AreaLightSample s = area_.sample(std::max(0.f, u_inner), u);
-  Vector3f to_light = s.position - p;
-  float d2 = length_squared(to_light);
-  if (d2 <= 0) return std::nullopt;
-  float d = std::sqrt(d2);
-  Vector3f wi = to_light / d;
-  float cos_light = -dot(s.normal, wi);
-  if (cos_light <= 0) return std::nullopt;  // lights emit from their front face only
-  return LightSample{.wi = wi,
-                     .distance = d,
-                     .radiance = s.radiance,
-                     .pdf = s.pdf_area * d2 / cos_light * p_kind,
-                     .position = s.position,
-                     .normal = s.normal};
+  std::optional<AreaLightSample> s = area_.sample(p, std::max(0.f, u_inner), u);
+  if (!s) return std::nullopt;
+  return LightSample{.wi = s->wi,
+                     .distance = s->distance,
+                     .radiance = s->radiance,
+                     .pdf = s->pdf * p_kind,
+                     .position = s->position,
+                     .normal = s->normal};
 }
 
-float LightSet::pdf_area_light(Point3f p, uint32_t mesh, uint32_t primitive, Point3f light_point,
-                               Normal3f light_normal) const {
+float LightSet::pdf_area_light(Point3f p, uint32_t mesh, uint32_t primitive,
+                               Point3f light_point) const {
   if (empty()) return 0;
-  float pdf_area = area_.pdf_area(mesh, primitive);
-  if (pdf_area <= 0) return 0;
-  Vector3f to_light = light_point - p;
-  float d2 = length_squared(to_light);
-  float cos_light = -dot(light_normal, to_light) / std::sqrt(d2);
-  if (cos_light <= 0) return 0;
-  return pdf_area * d2 / cos_light * selection_.probability(kArea);
+  return area_.pdf(p, mesh, primitive, light_point) * selection_.probability(kArea);
 }
 
 float LightSet::pdf_environment(Vector3f wi) const {

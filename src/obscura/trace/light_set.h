@@ -36,9 +36,8 @@ class LightSet {
   std::optional<LightSample> sample(Point3f p, float u_select, Point2f u) const;
 
   // Solid-angle density with which sample() from `p` would have produced the point `light_point`
-  // (normal `light_normal`) on triangle `primitive` of mesh `mesh`.
-  float pdf_area_light(Point3f p, uint32_t mesh, uint32_t primitive, Point3f light_point,
-                       Normal3f light_normal) const;
+  // on triangle `primitive` of mesh `mesh`.
+  float pdf_area_light(Point3f p, uint32_t mesh, uint32_t primitive, Point3f light_point) const;
   // Solid-angle density with which sample() would have chosen the environment direction `wi`.
   float pdf_environment(Vector3f wi) const;
 

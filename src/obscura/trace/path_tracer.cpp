@@ -74,10 +74,9 @@ Rgb PathTracer::radiance(const TraceScene& scene, const Ray& camera_ray, Sampler
       if (specular_bounce) {
         L += beta * material.emission;
       } else if (use_bsdf_hits) {
-        float light_pdf = use_light_sampling
-                              ? lights.pdf_area_light(previous, hit->mesh, hit->primitive,
-                                                      hit->position, hit->geometric_normal)
-                              : 0.f;
+        float light_pdf = use_light_sampling ? lights.pdf_area_light(previous, hit->mesh,
+                                                                     hit->primitive, hit->position)
+                                             : 0.f;
         L += beta * material.emission * power_heuristic(bsdf_pdf, light_pdf);
       }
     }

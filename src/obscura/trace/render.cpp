@@ -39,6 +39,14 @@ RenderStats render(const TraceScene& scene, const Camera& camera, const Integrat
                               std::to_string(film.height()) + ") must match the camera's crop (" +
                               std::to_string(crop.width()) + "x" + std::to_string(crop.height()) +
                               ")");
+  if (scene.has_motion() && (camera.shutter.open_s != scene.shutter().open_s ||
+                             camera.shutter.close_s != scene.shutter().close_s))
+    throw Error("render", "the scene's object motion was compiled for the shutter [" +
+                              std::to_string(scene.shutter().open_s) + ", " +
+                              std::to_string(scene.shutter().close_s) +
+                              "] s but the camera's is [" + std::to_string(camera.shutter.open_s) +
+                              ", " + std::to_string(camera.shutter.close_s) +
+                              "] s; build the TraceScene with this camera's shutter");
   const FilterSampler filter(camera.film.filter);
   const auto exposure = float(camera.exposure_scale());
   auto start = Clock::now();

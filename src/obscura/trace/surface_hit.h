@@ -16,6 +16,7 @@ struct SurfaceHit {
   uint32_t mesh = 0;       // the Embree geometry id: which mesh (instance) was hit
   uint32_t primitive = 0;  // triangle index within it
   float t = 0;
+  float time = 0;  // of the ray that found it (s): the moment secondary rays share
 };
 
 }  // namespace obscura

@@ -4,31 +4,109 @@
 #include <cmath>
 #include <variant>
 
+#include "obscura/camera/animated_transform.h"
+#include "obscura/math/error.h"
+
 namespace obscura {
 
 namespace {
 
-// Instances flattened into world-space copies of their meshes (positions, normals and UVs).
-std::vector<Mesh> flatten_instances(const Scene& scene) {
-  std::vector<Mesh> flat;
-  flat.reserve(scene.instances.size());
-  for (const Instance& instance : scene.instances) {
-    const Mesh& mesh = scene.meshes[instance.mesh];
-    Mesh& world = flat.emplace_back();
-    world.name = instance.name;
-    world.material = scene.material_of(instance);
-    world.indices = mesh.indices;
-    world.uvs = mesh.uvs;
-    world.positions.reserve(mesh.positions.size());
-    for (Point3f p : mesh.positions) world.positions.push_back(instance.world_from_object(p));
-    for (Normal3f n : mesh.normals)
-      world.normals.push_back(normalize(instance.world_from_object(n)));
-    // A mirroring transform turns counter-clockwise faces clockwise; restore the winding.
-    if (instance.world_from_object.swaps_handedness())
-      for (size_t t = 0; t < world.indices.size(); t += 3)
-        std::swap(world.indices[t + 1], world.indices[t + 2]);
+// A world-space copy of `mesh` placed by `world_from_object` (positions, normals and UVs).
+Mesh flatten(const Mesh& mesh, const Transform& world_from_object) {
+  Mesh world;
+  world.name = mesh.name;
+  world.material = mesh.material;
+  world.indices = mesh.indices;
+  world.uvs = mesh.uvs;
+  world.positions.reserve(mesh.positions.size());
+  for (Point3f p : mesh.positions) world.positions.push_back(world_from_object(p));
+  for (Normal3f n : mesh.normals) world.normals.push_back(normalize(world_from_object(n)));
+  // A mirroring transform turns counter-clockwise faces clockwise; restore the winding.
+  if (world_from_object.swaps_handedness())
+    for (size_t t = 0; t < world.indices.size(); t += 3)
+      std::swap(world.indices[t + 1], world.indices[t + 2]);
+  return world;
+}
+
+// What the shading code keeps of a mesh: Embree holds the positions.
+Mesh shading_attributes(Mesh mesh) {
+  mesh.positions = {};
+  mesh.tangents = {};
+  mesh.colors = {};
+  return mesh;
+}
+
+// The inverse transpose of a linear map's columns c0, c1, c2, up to a positive factor: the
+// cofactor matrix (columns c1×c2, c2×c0, c0×c1) signed by the determinant, so a mirror keeps
+// normals on the side the flattened (re-wound) triangles would give them.
+void normal_matrix(const double linear[3][3], float out[3][3]) {
+  Vector3d c[3];
+  for (int j = 0; j < 3; ++j) c[j] = {linear[0][j], linear[1][j], linear[2][j]};
+  Vector3d k[3] = {cross(c[1], c[2]), cross(c[2], c[0]), cross(c[0], c[1])};
+  double sign = dot(c[0], k[0]) < 0 ? -1 : 1;
+  for (int r = 0; r < 3; ++r)
+    for (int j = 0; j < 3; ++j) out[r][j] = float(sign * k[j][r]);
+}
+
+Vector3f apply(const float m[3][3], Vector3f v) {
+  return {m[0][0] * v.x + m[0][1] * v.y + m[0][2] * v.z,
+          m[1][0] * v.x + m[1][1] * v.y + m[1][2] * v.z,
+          m[2][0] * v.x + m[2][1] * v.y + m[2][2] * v.z};
+}
+
+// The instance's motion keys as an AnimatedTransform, with errors naming the instance.
+AnimatedTransform motion_of(const Instance& instance, size_t index) {
+  std::vector<AnimatedTransform::Key> keys;
+  for (const TransformKey& k : instance.motion)
+    keys.push_back({k.time_seconds, k.world_from_object});
+  try {
+    return AnimatedTransform(std::move(keys));
+  } catch (const Error& e) {
+    throw Error("instance " + std::to_string(index) + " '" + instance.name + "' motion", e.what());
   }
-  return flat;
+}
+
+// Transforms at n + 1 evenly spaced times over the shutter, with n (a power of two, ≤ 128) the
+// fewest segments whose linear interpolation (what Embree does between time steps) keeps the
+// object's bounding-box corners within 10⁻³ of its diagonal of the true path, checked at segment
+// midpoints and quarter points and at every key inside the shutter.
+std::vector<Transform> time_steps(const AnimatedTransform& motion, const Shutter& shutter,
+                                  const Bounds3f& object_bounds) {
+  Point3f corners[8];
+  for (int i = 0; i < 8; ++i)
+    corners[i] = {i & 1 ? object_bounds.max.x : object_bounds.min.x,
+                  i & 2 ? object_bounds.max.y : object_bounds.min.y,
+                  i & 4 ? object_bounds.max.z : object_bounds.min.z};
+  auto world_corners = [&](const Transform& t, Point3d out[8]) {
+    for (int i = 0; i < 8; ++i) out[i] = t(Point3d(corners[i].x, corners[i].y, corners[i].z));
+  };
+  const double duration = shutter.duration_s();
+  std::vector<Transform> steps;
+  for (int segments = 1;; segments *= 2) {
+    steps.clear();
+    for (int i = 0; i <= segments; ++i)
+      steps.push_back(motion.at(shutter.time_at(double(i) / segments)));
+    if (segments * 2 >= EmbreeScene::kMaxTimeSteps) return steps;
+    double tolerance = 1e-3 * distance(object_bounds.min, object_bounds.max);
+    std::vector<double> checks;  // as fractions of the shutter
+    for (int i = 0; i < segments; ++i)
+      for (double f : {0.25, 0.5, 0.75}) checks.push_back((i + f) / segments);
+    for (const auto& key : motion.keys())
+      if (key.time_s > shutter.open_s && key.time_s < shutter.close_s)
+        checks.push_back((key.time_s - shutter.open_s) / duration);
+    double worst = 0;
+    for (double f : checks) {
+      auto i = std::min(segments - 1, int(f * segments));
+      double s = f * segments - i;
+      Point3d truth[8], a[8], b[8];
+      world_corners(motion.at(shutter.time_at(f)), truth);
+      world_corners(steps[i], a);
+      world_corners(steps[i + 1], b);
+      for (int c = 0; c < 8; ++c)
+        worst = std::max(worst, distance(truth[c], a[c] + (b[c] - a[c]) * s));
+    }
+    if (worst <= tolerance) return steps;
+  }
 }
 
 PunctualLight compile_light(const Light& light) {
@@ -64,11 +142,39 @@ std::optional<EnvironmentLight> compile_environment(const Scene& scene) {
 
 }  // namespace
 
-TraceScene::TraceScene(const Scene& scene, std::shared_ptr<const EmbreeDevice> device)
+TraceScene::TraceScene(const Scene& scene, std::shared_ptr<const EmbreeDevice> device,
+                       const TraceSceneOptions& options)
     : embree_(std::move(device)), textures_(scene.textures) {
   scene.validate();
-  meshes_ = flatten_instances(scene);
-  for (const Mesh& mesh : meshes_) embree_.add_triangle_mesh(mesh.positions, mesh.indices);
+  shutter_ = options.shutter.value_or(scene.camera.shutter);
+  validate(shutter_);
+  embree_.set_motion_interval(shutter_.open_s, shutter_.close_s);
+  meshes_.reserve(scene.meshes.size());
+  for (const Mesh& mesh : scene.meshes) meshes_.push_back(shading_attributes(mesh));
+  prototype_of_mesh_.assign(scene.meshes.size(), -1);
+  std::vector<int> uses(scene.meshes.size(), 0);
+  for (const Instance& instance : scene.instances) ++uses[instance.mesh];
+
+  // Emitters for light sampling: static emissive instances as world-space triangles (moving ones
+  // are left to BSDF sampling, see docs/tracer.md).
+  std::vector<Mesh> emitters(scene.instances.size());
+  for (uint32_t i = 0; i < scene.instances.size(); ++i) {
+    const Instance& instance = scene.instances[i];
+    bool moving = instance.animated() && shutter_.duration_s() > 0;
+    Transform pose = instance.animated() ? motion_of(instance, i).at(shutter_.open_s)
+                                         : instance.world_from_object;
+    if (moving)
+      add_moving(scene, i);
+    else
+      add_static(scene, i, pose,
+                 options.instancing == Instancing::kAlways ||
+                     (options.instancing == Instancing::kAuto && uses[instance.mesh] > 1));
+    uint32_t material = scene.material_of(instance);
+    if (!moving && !scene.materials[material].emission.is_black()) {
+      emitters[i] = flatten(scene.meshes[instance.mesh], pose);
+      emitters[i].material = material;
+    }
+  }
   embree_.commit();
   for (const Material& m : scene.materials) materials_.emplace_back(m, &textures_);
   Bounds3f b = scene.bounds();
@@ -80,8 +186,57 @@ TraceScene::TraceScene(const Scene& scene, std::shared_ptr<const EmbreeDevice> d
   }
   std::vector<PunctualLight> punctual;
   for (const Light& light : scene.lights) punctual.push_back(compile_light(light));
-  lights_ = LightSet(AreaLights(meshes_, scene.materials), compile_environment(scene),
-                     std::move(punctual), radius_);
+  lights_ = LightSet(AreaLights(emitters, scene.materials, options.area_light_sampling),
+                     compile_environment(scene), std::move(punctual), radius_);
+}
+
+uint32_t TraceScene::prototype_of(const Scene& scene, uint32_t mesh) {
+  if (prototype_of_mesh_[mesh] < 0) {
+    const Mesh& m = scene.meshes[mesh];
+    prototype_of_mesh_[mesh] = int32_t(embree_.add_prototype(m.positions, m.indices));
+    ++prototypes_;
+  }
+  return uint32_t(prototype_of_mesh_[mesh]);
+}
+
+void TraceScene::add_static(const Scene& scene, uint32_t instance,
+                            const Transform& world_from_object, bool instanced) {
+  const Instance& in = scene.instances[instance];
+  Placement p{.instance = instance, .material = scene.material_of(in)};
+  uint32_t id;
+  if (instanced) {
+    Transform steps[1] = {world_from_object};
+    id = embree_.add_instance(prototype_of(scene, in.mesh), steps);
+    ++embree_instances_;
+    p.attributes = &meshes_[in.mesh];
+    p.object_space = true;
+    double linear[3][3];
+    for (int r = 0; r < 3; ++r)
+      for (int c = 0; c < 3; ++c) linear[r][c] = world_from_object.matrix().m[r][c];
+    normal_matrix(linear, p.normal_from_object);
+  } else {
+    Mesh world = flatten(scene.meshes[in.mesh], world_from_object);
+    id = embree_.add_triangle_mesh(world.positions, world.indices);
+    flattened_.push_back(std::make_unique<Mesh>(shading_attributes(std::move(world))));
+    p.attributes = flattened_.back().get();
+  }
+  if (placements_.size() <= id) placements_.resize(id + 1);
+  placements_[id] = p;
+}
+
+void TraceScene::add_moving(const Scene& scene, uint32_t instance) {
+  const Instance& in = scene.instances[instance];
+  std::vector<Transform> steps =
+      time_steps(motion_of(in, instance), shutter_, scene.meshes[in.mesh].bounds());
+  uint32_t id = embree_.add_instance(prototype_of(scene, in.mesh), steps);
+  ++embree_instances_;
+  has_motion_ = true;
+  if (placements_.size() <= id) placements_.resize(id + 1);
+  placements_[id] = {.instance = instance,
+                     .material = scene.material_of(in),
+                     .attributes = &meshes_[in.mesh],
+                     .object_space = true,
+                     .moving = true};
 }
 
 void TraceScene::set_material(uint32_t index, TraceMaterial material) {
@@ -101,17 +256,31 @@ void TraceScene::set_punctual_lights(std::vector<PunctualLight> lights) {
 std::optional<SurfaceHit> TraceScene::intersect(const Ray& ray) const {
   std::optional<RayHit> hit = embree_.intersect(ray);
   if (!hit) return std::nullopt;
-  // Everything here comes with Embree's answer: no mesh data is touched (it would be a cache
-  // miss per incoherent ray on large scenes).
+  // Everything here comes with Embree's answer; mesh data is read only for meshes that carry
+  // shading normals or UVs (a cache miss per incoherent ray on large scenes).
+  const Placement& place = placements_[hit->geometry_id];
+  // Object-space normals go to the world by the inverse transpose, at the ray's time if moving.
+  float moving_normal_matrix[3][3];
+  const float(*to_world)[3] = place.normal_from_object;
+  if (place.moving) {
+    Affine3f a = embree_.instance_transform(hit->geometry_id, ray.time);
+    double linear[3][3];
+    for (int r = 0; r < 3; ++r)
+      for (int c = 0; c < 3; ++c) linear[r][c] = a.m[r][c];
+    normal_matrix(linear, moving_normal_matrix);
+    to_world = moving_normal_matrix;
+  }
   SurfaceHit s;
   s.t = hit->t;
+  s.time = ray.time;
   s.position = ray.at(hit->t);
-  s.geometric_normal = Normal3f(normalize(hit->normal));
+  Vector3f ng = place.object_space ? apply(to_world, hit->normal) : hit->normal;
+  s.geometric_normal = Normal3f(normalize(ng));
   s.shading_normal = s.geometric_normal;
-  s.mesh = hit->geometry_id;
+  s.mesh = place.instance;
   s.primitive = hit->primitive_id;
-  const Mesh& mesh = meshes_[hit->geometry_id];
-  s.material = mesh.material;
+  s.material = place.material;
+  const Mesh& mesh = *place.attributes;
   if (!mesh.normals.empty() || !mesh.uvs.empty()) {
     // Interpolated attributes: only meshes that carry them pay for the vertex reads.
     const uint32_t* tri = &mesh.indices[3 * size_t(hit->primitive_id)];
@@ -119,6 +288,7 @@ std::optional<SurfaceHit> TraceScene::intersect(const Ray& ray) const {
     if (!mesh.normals.empty()) {
       Vector3f n = to_vector(mesh.normals[tri[0]]) * b0 + to_vector(mesh.normals[tri[1]]) * b1 +
                    to_vector(mesh.normals[tri[2]]) * b2;
+      if (place.object_space) n = apply(to_world, n);
       if (length_squared(n) > 0)
         s.shading_normal = face_forward(Normal3f(normalize(n)), to_vector(s.geometric_normal));
     }
@@ -130,12 +300,13 @@ std::optional<SurfaceHit> TraceScene::intersect(const Ray& ray) const {
   return s;
 }
 
-bool TraceScene::occluded(Point3f from, Point3f to) const {
+bool TraceScene::occluded(Point3f from, Point3f to, float time_s) const {
   Ray ray;
   ray.origin = from;
   ray.direction = to - from;
   ray.t_min = 0;
   ray.t_max = 1 - 1e-4f;  // stop just short of the target surface
+  ray.time = time_s;
   return embree_.occluded(ray);
 }
 
@@ -152,12 +323,14 @@ Ray spawn_ray(const TraceScene& scene, const SurfaceHit& hit, Vector3f w) {
   Ray ray;
   ray.origin = offset_ray_origin(hit.position, hit.geometric_normal, w, scene.ray_epsilon());
   ray.direction = w;
+  ray.time = hit.time;
   return ray;
 }
 
 Ray shadow_ray(const TraceScene& scene, const SurfaceHit& hit, const LightSample& light) {
   Ray ray;
   ray.origin = offset_ray_origin(hit.position, hit.geometric_normal, light.wi, scene.ray_epsilon());
+  ray.time = hit.time;  // the same moment as the path it belongs to
   if (std::isinf(light.distance)) {
     ray.direction = light.wi;
     return ray;

@@ -1,5 +1,10 @@
 // The tracer's flat form of a Scene: Embree geometry, per-triangle data for shading, materials
 // and the emitters. Compiled once from the authoring Scene; read-only (and thread-safe) after.
+//
+// Meshes shared by several instances are built once and placed by Embree instances; a mesh
+// placed once and not moving is copied into world space instead (one traversal level less).
+// Moving instances (motion keys) are Embree instances with a transform per time step over the
+// shutter; rays carry their time.
 #pragma once
 
 #include <memory>
@@ -14,13 +19,28 @@
 
 namespace obscura {
 
+enum class Instancing {
+  kAuto,    // instance meshes used more than once and moving instances; flatten the rest
+  kAlways,  // every instance through Embree instancing
+  kNever,   // flatten every static instance into world space (moving ones stay instances)
+};
+
+struct TraceSceneOptions {
+  Instancing instancing = Instancing::kAuto;
+  AreaLightSampling area_light_sampling = AreaLightSampling::kSolidAngle;
+  // The interval object motion is compiled for; the camera's shutter must match it at render
+  // time. Default: the scene camera's shutter.
+  std::optional<Shutter> shutter = std::nullopt;
+};
+
 class TraceScene {
  public:
-  TraceScene(const Scene& scene, std::shared_ptr<const EmbreeDevice> device);
+  TraceScene(const Scene& scene, std::shared_ptr<const EmbreeDevice> device,
+             const TraceSceneOptions& options = {});
 
   std::optional<SurfaceHit> intersect(const Ray& ray) const;
-  // Whether the open segment between two points is blocked.
-  bool occluded(Point3f from, Point3f to) const;
+  // Whether the open segment between two points is blocked at time `time_s`.
+  bool occluded(Point3f from, Point3f to, float time_s = 0) const;
   // Whether anything lies along the ray within [t_min, t_max].
   bool occluded(const Ray& ray) const { return embree_.occluded(ray); }
 
@@ -30,6 +50,12 @@ class TraceScene {
   // Distance by which ray origins leave a surface, scaled to the scene's extent.
   float ray_epsilon() const { return ray_epsilon_; }
   float radius() const { return radius_; }  // of a sphere around the scene (m)
+  // Whether some instance moves during the shutter, and the shutter motion was compiled for.
+  bool has_motion() const { return has_motion_; }
+  const Shutter& shutter() const { return shutter_; }
+  // How many instances went through Embree instancing, and how many meshes were built for them.
+  size_t embree_instance_count() const { return embree_instances_; }
+  size_t prototype_count() const { return prototypes_; }
 
   // Replace a material or the environment after compilation (tests, tools), before rendering.
   void set_material(uint32_t index, TraceMaterial material);
@@ -37,8 +63,28 @@ class TraceScene {
   void set_punctual_lights(std::vector<PunctualLight> lights);
 
  private:
+  // What shading needs of each Embree geometry (by geometry id).
+  struct Placement {
+    uint32_t instance = 0;  // index into Scene::instances: SurfaceHit::mesh, the id AOV
+    uint32_t material = 0;
+    const Mesh* attributes = nullptr;  // indices, normals, uvs (no positions)
+    bool object_space = false;         // attributes and Embree's normal are in object space
+    bool moving = false;               // the transform depends on the ray's time
+    float normal_from_object[3][3] = {{1, 0, 0}, {0, 1, 0}, {0, 0, 1}};  // static instances
+  };
+  void add_static(const Scene& scene, uint32_t instance, const Transform& world_from_object,
+                  bool instanced);
+  void add_moving(const Scene& scene, uint32_t instance);
+  uint32_t prototype_of(const Scene& scene, uint32_t mesh);
+
   EmbreeScene embree_;
-  std::vector<Mesh> meshes_;  // one per instance, flattened to world space
+  std::vector<Mesh> meshes_;  // the scene's meshes, object space, as instances share them
+  std::vector<int32_t> prototype_of_mesh_;        // Embree prototype per mesh, −1 until built
+  std::vector<std::unique_ptr<Mesh>> flattened_;  // world-space copies of meshes placed once
+  std::vector<Placement> placements_;
+  Shutter shutter_;
+  bool has_motion_ = false;
+  size_t embree_instances_ = 0, prototypes_ = 0;
   std::vector<Texture> textures_;  // what the materials sample
   std::vector<TraceMaterial> materials_;
   LightSet lights_;
