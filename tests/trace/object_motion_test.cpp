@@ -5,6 +5,8 @@
 #include <algorithm>
 #include <vector>
 
+#include <tbb/global_control.h>
+
 #include "obscura/math/error.h"
 #include "obscura/trace/path_tracer.h"
 #include "obscura/trace/render.h"
@@ -122,6 +124,34 @@ TEST(ObjectMotion, KeysInsideTheShutterAreFollowed) {
   double uncovered = 0;
   for (int x = 20; x < 48; ++x) uncovered += 1 - p[x];
   EXPECT_NEAR(20 + uncovered, 48 - 0.125 * 25 / 0.375, 0.2);
+}
+
+TEST(ObjectMotion, BitIdenticalAcrossThreadCounts) {
+  // A panel behind the camera lights a wall on which the moving, spinning square casts its
+  // shadow: paths with bounces, shadow rays and light samples, all at their sample's time.
+  Scene scene = moving_square({{0, 0}, {0.01, 0.1}});
+  scene.materials.push_back(diffuse_material("wall", Rgb(0.7f)));
+  Mesh wall;
+  wall.name = "wall";
+  wall.positions = {{-3, -3, -3}, {3, -3, -3}, {3, 3, -3}, {-3, 3, -3}};
+  wall.indices = {0, 1, 2, 0, 2, 3};
+  wall.material = 1;
+  scene.add_mesh(wall);
+  wall.name = "panel";  // facing −Z, at z = 0.5 behind the camera
+  wall.positions = {{-3, -3, 0.5f}, {-3, 3, 0.5f}, {3, 3, 0.5f}, {3, -3, 0.5f}};
+  wall.material = 0;
+  scene.add_mesh(wall);
+  scene.instances[0].motion.insert(
+      scene.instances[0].motion.begin() + 1,
+      {0.005, Transform::translate({0.05, 0, 0}) * Transform::rotate_z(0.5)});
+  auto render_with = [&](int threads) {
+    tbb::global_control limit(tbb::global_control::max_allowed_parallelism, size_t(threads));
+    TraceScene trace(scene, device());
+    Film film(kWidth, kHeight);
+    render(trace, scene.camera, PathTracer(), {.samples_per_pixel = 8, .seed = 4}, film);
+    return film.to_image().data;
+  };
+  EXPECT_EQ(render_with(1), render_with(2));
 }
 
 TEST(ObjectMotion, RenderRefusesACameraWithAnotherShutter) {
