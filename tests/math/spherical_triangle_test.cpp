@@ -45,7 +45,7 @@ Point2d barycentrics(Point3d p, Vector3d w, Point3d p0, Point3d p1, Point3d p2) 
   return {(a22 * r1 - a12 * r2) / det, (a11 * r2 - a12 * r1) / det};
 }
 
-// Chi-square test of sample_spherical_triangle against the uniform density 1/Ω. The triangle is
+// Chi-square test of SphericalTriangle::sample against the uniform density 1/Ω. The triangle is
 // cut into n² congruent sub-triangles (a barycentric grid); each one's expected share is its own
 // solid angle over the whole, integrated by the midpoint rule of cos θ/d² over a finer grid —
 // independently of the formulas under test.
@@ -79,9 +79,9 @@ void expect_uniform_in_solid_angle(Point3d p, Point3d p0, Point3d p1, Point3d p2
 
   std::vector<double> observed(expected.size(), 0.0);
   Pcg32 rng(7);
+  SphericalTriangle spherical(p, p0, p1, p2);
   for (int s = 0; s < samples; ++s) {
-    Vector3d w = sample_spherical_triangle(p, p0, p1, p2,
-                                           {double(rng.next_float()), double(rng.next_float())});
+    Vector3d w = spherical.sample({double(rng.next_float()), double(rng.next_float())});
     ASSERT_NEAR(length(w), 1.0, 1e-9);
     Point2d b = barycentrics(p, w, p0, p1, p2);
     ASSERT_GE(b.x, -1e-6);

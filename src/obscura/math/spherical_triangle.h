@@ -7,14 +7,28 @@
 
 namespace obscura {
 
-// The solid angle (sr) of triangle (p0, p1, p2) seen from `p`, by Van Oosterom and Strackee's
-// formula tan(Ω/2) = |a·(b × c)| / (1 + a·b + b·c + c·a) for the unit directions a, b, c to the
-// vertices. In [0, 2π); 0 for a triangle degenerate or containing `p` in its plane.
-double triangle_solid_angle(Point3d p, Point3d p0, Point3d p1, Point3d p2);
+class SphericalTriangle {
+ public:
+  // Triangle (p0, p1, p2) seen from `p`.
+  SphericalTriangle(Point3d p, Point3d p0, Point3d p1, Point3d p2);
 
-// A unit direction from `p`, uniform in the solid angle the triangle subtends, for a uniform
-// u ∈ [0, 1)². The map keeps strata: nearby u give nearby directions. Precondition: the
-// triangle's solid angle is not tiny (≳ 10⁻⁶ sr); below that the result loses precision.
-Vector3d sample_spherical_triangle(Point3d p, Point3d p0, Point3d p1, Point3d p2, Point2d u);
+  // The solid angle (sr), by Van Oosterom and Strackee's formula tan(Ω/2) = |a·(b × c)| /
+  // (1 + a·b + b·c + c·a) for the unit directions a, b, c to the vertices. In [0, 2π); 0 for a
+  // degenerate triangle or one whose plane contains p.
+  double solid_angle() const { return solid_angle_; }
+
+  // A unit direction uniform in the spherical triangle for a uniform u ∈ [0, 1)²; nearby u give
+  // nearby directions (strata are kept). Precondition: solid_angle() is not tiny (≳ 10⁻⁶ sr);
+  // below that the result loses precision.
+  Vector3d sample(Point2d u) const;
+
+ private:
+  Vector3d a_, b_, c_;  // unit directions to the vertices
+  double solid_angle_ = 0;
+  double triple_ = 0;  // |a·(b × c)|
+};
+
+// SphericalTriangle(p, p0, p1, p2).solid_angle().
+double triangle_solid_angle(Point3d p, Point3d p0, Point3d p1, Point3d p2);
 
 }  // namespace obscura

@@ -35,7 +35,8 @@ AreaLights::AreaLights(const std::vector<Mesh>& meshes, const std::vector<Materi
       float area = 0.5f * length(n);
       if (area <= 0) continue;
       light_of_triangle_[m][t] = int32_t(triangles_.size());
-      triangles_.push_back({p0, p1, p2, Normal3f(normalize(n)), radiance, area});
+      triangles_.push_back(
+          {p0, p1, p2, p0 + ((p1 - p0) + (p2 - p0)) / 3.f, Normal3f(normalize(n)), radiance, area});
       power.push_back(double(area) * luminance(radiance));
       total_power += power.back();
     }
@@ -54,11 +55,17 @@ int32_t AreaLights::index_of(uint32_t mesh, uint32_t primitive) const {
   return light_of_triangle_[mesh][primitive];
 }
 
-double AreaLights::spherical_solid_angle(const Triangle& tri, Point3f p) const {
-  if (sampling_ != AreaLightSampling::kSolidAngle) return 0;
-  double omega =
-      triangle_solid_angle(to_double(p), to_double(tri.p0), to_double(tri.p1), to_double(tri.p2));
-  return omega >= kMinSphericalSolidAngle && omega <= kMaxSphericalSolidAngle ? omega : 0;
+std::optional<SphericalTriangle> AreaLights::spherical(const Triangle& tri, Point3f p) const {
+  if (sampling_ != AreaLightSampling::kSolidAngle) return std::nullopt;
+  // First a cheap estimate, area · cos / d² at the centroid, which is what most light samples
+  // (small or distant lights) stop at; the exact solid angle only for the rest.
+  Vector3f to_centroid = tri.centroid - p;
+  float d2 = length_squared(to_centroid);
+  float estimate = tri.area * std::abs(dot(tri.normal, to_centroid)) / (d2 * std::sqrt(d2));
+  if (!(estimate >= kMinSphericalSolidAngle)) return std::nullopt;
+  SphericalTriangle s(to_double(p), to_double(tri.p0), to_double(tri.p1), to_double(tri.p2));
+  if (s.solid_angle() <= kMaxSphericalSolidAngle && s.solid_angle() > 0) return s;
+  return std::nullopt;
 }
 
 float AreaLights::pdf_area(uint32_t mesh, uint32_t primitive) const {
@@ -71,8 +78,8 @@ float AreaLights::pdf(Point3f p, uint32_t mesh, uint32_t primitive, Point3f ligh
   if (i < 0) return 0;
   const Triangle& tri = triangles_[i];
   if (dot(tri.normal, p - tri.p0) <= 0) return 0;  // p sees the back: never sampled from there
-  if (double omega = spherical_solid_angle(tri, p); omega > 0)
-    return float(selection_probability(i) / omega);
+  if (std::optional<SphericalTriangle> s = spherical(tri, p))
+    return float(selection_probability(i) / s->solid_angle());
   Vector3f to_light = light_point - p;
   float d2 = length_squared(to_light);
   float cos_light = -dot(tri.normal, to_light) / std::sqrt(d2);
@@ -95,11 +102,10 @@ std::optional<AreaLightSample> AreaLights::sample(Point3f p, float u_select,
   i = std::min(i, triangles_.size() - 1);
   const Triangle& tri = triangles_[i];
   if (dot(tri.normal, p - tri.p0) <= 0) return std::nullopt;  // facing away: no light here
-  if (double omega = spherical_solid_angle(tri, p); omega > 0) {
+  if (std::optional<SphericalTriangle> s = spherical(tri, p)) {
     // A direction uniform in the spherical triangle, then where it meets the triangle's plane.
     Point3d o = to_double(p);
-    Vector3d w = sample_spherical_triangle(o, to_double(tri.p0), to_double(tri.p1),
-                                           to_double(tri.p2), {u_point.x, u_point.y});
+    Vector3d w = s->sample({u_point.x, u_point.y});
     Vector3d n(tri.normal.x, tri.normal.y, tri.normal.z);
     double cos_plane = dot(n, w);
     if (cos_plane >= 0) return std::nullopt;  // numerically parallel to the plane
@@ -110,7 +116,7 @@ std::optional<AreaLightSample> AreaLights::sample(Point3f p, float u_select,
                            .position = p + wi * float(t),
                            .normal = tri.normal,
                            .radiance = tri.radiance,
-                           .pdf = float(selection_probability(i) / omega)};
+                           .pdf = float(selection_probability(i) / s->solid_angle())};
   }
   // By area: the density converts to solid angle by d²/cos at the light.
   Point2f b = sample_uniform_triangle(u_point);
