@@ -57,12 +57,20 @@ int32_t AreaLights::index_of(uint32_t mesh, uint32_t primitive) const {
 
 std::optional<SphericalTriangle> AreaLights::spherical(const Triangle& tri, Point3f p) const {
   if (sampling_ != AreaLightSampling::kSolidAngle) return std::nullopt;
-  // First a cheap estimate, area · cos / d² at the centroid, which is what most light samples
-  // (small or distant lights) stop at; the exact solid angle only for the rest.
-  Vector3f to_centroid = tri.centroid - p;
-  float d2 = length_squared(to_centroid);
-  float estimate = tri.area * std::abs(dot(tri.normal, to_centroid)) / (d2 * std::sqrt(d2));
-  if (!(estimate >= kMinSphericalSolidAngle)) return std::nullopt;
+  // Area sampling's density in solid angle is ∝ 1/J with J = cos/d² = h/d³ (h: p's distance
+  // to the triangle's plane). J is smallest at the farthest vertex and at most 1/h², so
+  // (d_max/h)³ bounds how much it varies over the triangle: where that is small, area sampling
+  // is nearly as good and cheaper. The solid angle is judged by area · J at the centroid. Both
+  // cost no inverse trigonometry, unlike the spherical triangle. (In double: d⁶ overflows float.)
+  double h = std::abs(dot(tri.normal, p - tri.p0)), h3 = h * h * h;
+  double d2_max = std::max(
+      {length_squared(tri.p0 - p), length_squared(tri.p1 - p), length_squared(tri.p2 - p)});
+  if (!(d2_max * d2_max * d2_max > kMinJacobianRatio * kMinJacobianRatio * h3 * h3))
+    return std::nullopt;
+  double d2_centroid = length_squared(tri.centroid - p);
+  if (!(tri.area * h >= kMinSphericalSolidAngle * d2_centroid * std::sqrt(d2_centroid)))
+    return std::nullopt;
+
   SphericalTriangle s(to_double(p), to_double(tri.p0), to_double(tri.p1), to_double(tri.p2));
   if (s.solid_angle() <= kMaxSphericalSolidAngle && s.solid_angle() > 0) return s;
   return std::nullopt;

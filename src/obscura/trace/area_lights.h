@@ -1,8 +1,8 @@
 // Emissive triangles as area lights, chosen in proportion to their power (area × luminance of
 // emitted radiance), then sampled from the shaded point: uniformly in the solid angle the
-// triangle subtends (a spherical triangle, math/spherical_triangle.h) when that is neither small
-// nor close to a hemisphere, uniformly by area otherwise. The choice depends only on the point
-// and the triangle, so pdf() reproduces it for multiple importance sampling.
+// triangle subtends (a spherical triangle, math/spherical_triangle.h) where area sampling's
+// d²/cos would vary much across the triangle, uniformly by area otherwise. The choice depends only
+// on the point and the triangle, so pdf() reproduces it for multiple importance sampling.
 #pragma once
 
 #include <cstdint>
@@ -39,13 +39,14 @@ struct AreaLightSample {
 
 class AreaLights {
  public:
-  // Solid angles (sr) within which spherical sampling is used. Below the lower bound (judged by
-  // area · cos / d² at the centroid, which costs no square roots of vertices or arc tangents)
-  // the triangle is small or seen edge-on: d²/cos varies by a few percent across it, so area
-  // sampling is as good per sample and cheaper (on the Cornell box, lowering the bound to
-  // 3·10⁻⁴ sr changed the RMSE by 0.02 %). Near 2π the point almost touches the light and the
-  // spherical construction loses precision.
-  static constexpr double kMinSphericalSolidAngle = 0.01;
+  // When spherical sampling is used. Area sampling's density in solid angle is ∝ d²/cos; where
+  // J = cos/d² varies (by a bound, see spherical()) by less than kMinJacobianRatio over the
+  // triangle, area sampling is nearly as good per sample and cheaper. Below
+  // kMinSphericalSolidAngle (judged by area · J at the centroid) the triangle is tiny or seen
+  // edge-on; near 2π the point almost touches the light; in both the spherical construction
+  // loses precision.
+  static constexpr float kMinJacobianRatio = 2;
+  static constexpr double kMinSphericalSolidAngle = 3e-4;
   static constexpr double kMaxSphericalSolidAngle = 6.2;
 
   AreaLights() = default;
