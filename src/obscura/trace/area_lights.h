@@ -39,13 +39,13 @@ struct AreaLightSample {
 
 class AreaLights {
  public:
-  // When spherical sampling is used. Area sampling's density in solid angle is ∝ d²/cos; where
-  // J = cos/d² varies (by a bound, see spherical()) by less than kMinJacobianRatio over the
-  // triangle, area sampling is nearly as good per sample and cheaper. Below
-  // kMinSphericalSolidAngle (judged by area · J at the centroid) the triangle is tiny or seen
-  // edge-on; near 2π the point almost touches the light; in both the spherical construction
-  // loses precision.
-  static constexpr float kMinJacobianRatio = 2;
+  // When spherical sampling is used. Area sampling's density in solid angle is ∝ 1/J with
+  // J = cos/d²; where J varies by at most a factor r over the triangle (a bound, see
+  // spherical()), area sampling's variance is at most (1 + r)²/4r times that of uniform
+  // solid-angle sampling (Kantorovich's inequality): 1.56 for r = 4, about what the spherical
+  // construction's extra cost per sample is worth. (On the reference Cornell box r = 2, 4 and
+  // 8 cost 15, 11 and 7 % more time than area sampling for 1.5, 1.1 and 0.9 % less error.)
+  static constexpr float kMinJacobianRatio = 4;
   static constexpr double kMinSphericalSolidAngle = 3e-4;
   static constexpr double kMaxSphericalSolidAngle = 6.2;
 
