@@ -14,7 +14,10 @@ void add_raster_options(CLI::App& render, RasterOptions& o) {
                         "raster: flat, gouraud, phong (per pixel; default) or blinn-phong "
                         "(per pixel, half-vector lobe for Phong materials)"),
       render.add_flag("--cull", o.cull, "raster: cull back faces"),
-      render.add_flag("--wireframe", o.wireframe, "raster: draw triangle edges over the image")};
+      render.add_flag("--wireframe", o.wireframe, "raster: draw triangle edges over the image"),
+      render.add_option("--shadow-map", o.shadow_map_size,
+                        "raster: shadow map size (texels per side) for directional and spot "
+                        "lights; 0: no shadows (default 1024)")};
 }
 
 void validate(const RasterOptions& o, const std::string& renderer) {
@@ -27,6 +30,9 @@ void validate(const RasterOptions& o, const std::string& renderer) {
   }
   if (o.msaa != 1 && o.msaa != 4 && o.msaa != 8)
     throw UsageError("--msaa must be 1, 4 or 8 samples; got " + std::to_string(o.msaa));
+  if (o.shadow_map_size < 0 || o.shadow_map_size > 16384)
+    throw UsageError("--shadow-map must be 0 (no shadows) to 16384 texels; got " +
+                     std::to_string(o.shadow_map_size));
   if (o.shading != "flat" && o.shading != "gouraud" && o.shading != "phong" &&
       o.shading != "blinn-phong")
     throw UsageError("--shading must be flat, gouraud, phong or blinn-phong; got '" + o.shading +
@@ -43,6 +49,7 @@ raster::RasterSettings raster_settings(const RasterOptions& o, bool aovs) {
   s.cull_back_faces = o.cull;
   s.wireframe.enabled = o.wireframe;
   s.aovs = aovs;
+  s.shadow_map_size = o.shadow_map_size;
   return s;
 }
 

@@ -18,6 +18,7 @@ struct RasterOptions {
   std::string shading = "phong";         // flat | gouraud | phong | blinn-phong
   bool cull = false;                     // back-face culling
   bool wireframe = false;                // triangle edges over the shaded image
+  int shadow_map_size = 1024;            // texels per side; 0: no shadows
   std::vector<CLI::Option*> registered;  // to tell whether any was given
 };
 

@@ -191,9 +191,17 @@ void expect_direct_light_agrees(const Scene& scene, RasterSettings settings,
   EXPECT_LT(max_relative, max_relative_bound);
 }
 
+// Shading alone: no sphere shadows another, and the rasterizer draws without shadow maps (their
+// filtering softens the terminator slightly; shadows are compared below).
+RasterSettings unshadowed(int msaa) {
+  RasterSettings s = with_msaa(msaa);
+  s.shadow_map_size = 0;
+  return s;
+}
+
 TEST(SceneRasterizer, DirectLightAgreesWithTheTracersDirectLighting) {
-  expect_direct_light_agrees(direct_light_scene(false), {});
-  expect_direct_light_agrees(direct_light_scene(true), {});
+  expect_direct_light_agrees(direct_light_scene(false), unshadowed(1));
+  expect_direct_light_agrees(direct_light_scene(true), unshadowed(1));
 }
 
 TEST(SceneRasterizer, DirectLightAgreesWithMultisampling) {
@@ -201,7 +209,37 @@ TEST(SceneRasterizer, DirectLightAgreesWithMultisampling) {
   // samples: where a pixel straddles facets near a light's terminator (where one facet's plane
   // already hides the light and the next does not) the average departs from the single centre
   // sample by up to ~15 % of a dim value; everywhere else nothing changes.
-  expect_direct_light_agrees(direct_light_scene(false), with_msaa(4), 0.2);
+  expect_direct_light_agrees(direct_light_scene(false), unshadowed(4), 0.2);
+}
+
+TEST(SceneRasterizer, ShadowMapsCastTheShadowsTheTracerCasts) {
+  // The spheres on a floor, lit by the directional and the spot light (the point light would
+  // need a cube map): the floor's shadows against the tracer's shadow rays.
+  Scene scene = direct_light_scene(false);
+  scene.lights.erase(scene.lights.begin());  // the point light
+  scene.materials.push_back(diffuse("floor", Rgb(0.6f)));
+  Mesh floor = make_rectangle(12, 8);
+  floor.material = 3;
+  scene.add_mesh(std::move(floor), Transform::translate({0, -0.5, 0}));
+  Camera camera = with_film(scene.camera, 200, 100);
+  camera.world_from_camera = world_from_camera_look_at({0, 3, 5}, {0, -0.5, 0});
+  TracerImages traced = trace(scene, camera);
+  RasterImages raster = rasterize(scene, camera);
+  int floor_pixels = 0, agree = 0, shadowed = 0;
+  for (int y = 0; y < 100; ++y)
+    for (int x = 0; x < 200; ++x) {
+      if (traced.id.at(x, y, 0) != 3 || raster.id.at(x, y, 0) != 3 ||
+          on_silhouette(traced.id, x, y))
+        continue;
+      ++floor_pixels;
+      double t = traced.color.at(x, y, 1), r = raster.color.at(x, y, 1);
+      agree += std::abs(r - t) <= 0.02 * std::max(t, 0.05);
+      shadowed += t < 0.5 * raster.color.at(10, 99, 1);  // darker than the open floor's half
+    }
+  ASSERT_GT(floor_pixels, 5000);
+  EXPECT_GT(shadowed, 300) << "the test must see shadows";
+  // Shadow edges: the map's texels and 3×3 filtering blur them over about a pixel.
+  EXPECT_GT(double(agree) / floor_pixels, 0.97);
 }
 
 TEST(SceneRasterizer, ConvexLambertianObjectInAUniformSurroundReflectsAlbedoTimesRadiance) {

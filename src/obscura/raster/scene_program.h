@@ -7,13 +7,22 @@
 //   SceneGouraudProgram  lighting at the vertices, interpolated; textures modulate it per pixel
 #pragma once
 
+#include <span>
+
 #include "obscura/raster/clip_transform.h"
 #include "obscura/raster/lights.h"
 #include "obscura/raster/shaders.h"
+#include "obscura/raster/shadow_map.h"
 #include "obscura/raster/surface_material.h"
 #include "obscura/raster/varyings.h"
 
 namespace obscura::raster {
+
+// One frame's shadow maps, parallel to LightSet::directional and ::spot (shorter or empty: the
+// remaining lights cast no shadows).
+struct FrameShadows {
+  std::span<const ShadowMap> directional, spot;
+};
 
 // What every draw of one instance shares.
 struct InstanceUniforms {
@@ -25,6 +34,7 @@ struct InstanceUniforms {
   Vector3f to_viewer;
   bool eye_at_infinity = false;
   const LightSet* lights = nullptr;
+  FrameShadows shadows;
   const SurfaceMaterial* material = nullptr;
   float exposure = 1;        // the camera's exposure scale, applied to everything drawn
   bool flat = false;         // flat shading: the face normal instead of the interpolated one
@@ -46,17 +56,23 @@ struct InstanceUniforms {
 
 // Light reflected towards v at p by a surface point with unit normal n (facing v); `geometric`
 // is the true surface's normal facing v: light from behind it is blocked, as in the tracer.
-OBSCURA_RASTER_INLINE Rgb shade_surface(const SurfacePoint& s, const LightSet& lights, Point3f p,
-                                        Vector3f n, Vector3f geometric, Vector3f v) {
+OBSCURA_RASTER_INLINE Rgb shade_surface(const SurfacePoint& s, const LightSet& lights,
+                                        const FrameShadows& shadows, Point3f p, Vector3f n,
+                                        Vector3f geometric, Vector3f v) {
   Rgb sum = ambient_reflectance(s, dot(n, v)) * lights.ambient;
-  auto add = [&](const IncidentLight& in) {
-    if (dot(geometric, in.to_light) > 0)
-      sum += in.strength * reflected_cosine(s, n, v, in.to_light);
+  auto add = [&](const IncidentLight& in, const ShadowMap* shadow) {
+    if (dot(geometric, in.to_light) <= 0) return;
+    Rgb r = in.strength * reflected_cosine(s, n, v, in.to_light);
+    if (shadow && !r.is_black()) r = r * shadow->visibility(p, geometric);
+    sum += r;
   };
-  for (const DirectionalLight& l : lights.directional) add(incident(l, p));
-  for (const PointLight& l : lights.point) add(incident(l, p));
-  for (const SpotLight& l : lights.spot) add(incident(l, p));
-  for (const SurfaceLight& l : lights.surface) add(incident(l, p));
+  for (size_t i = 0; i < lights.directional.size(); ++i)
+    add(incident(lights.directional[i], p),
+        i < shadows.directional.size() ? &shadows.directional[i] : nullptr);
+  for (const PointLight& l : lights.point) add(incident(l, p), nullptr);
+  for (size_t i = 0; i < lights.spot.size(); ++i)
+    add(incident(lights.spot[i], p), i < shadows.spot.size() ? &shadows.spot[i] : nullptr);
+  for (const SurfaceLight& l : lights.surface) add(incident(l, p), nullptr);
   return sum;
 }
 
@@ -101,7 +117,7 @@ struct ScenePixelProgram {
       s.model = SurfaceModel::kBlinnPhong;
       s.lobe_normalization = blinn_phong_lobe_normalization(s.shininess);
     }
-    Rgb c = shade_surface(s, *uniforms.lights, a.position, n, geometric, v);
+    Rgb c = shade_surface(s, *uniforms.lights, uniforms.shadows, a.position, n, geometric, v);
     if (info.front_facing) c += m.emission * sample_or_one(m.emission_texture, m.filter, tc);
     return c * uniforms.exposure;
   }
@@ -134,7 +150,7 @@ struct SceneGouraudProgram {
       s.model = SurfaceModel::kBlinnPhong;
       s.lobe_normalization = blinn_phong_lobe_normalization(s.shininess);
     }
-    Rgb lit = shade_surface(s, *uniforms.lights, p, n, n, v);
+    Rgb lit = shade_surface(s, *uniforms.lights, uniforms.shadows, p, n, n, v);
     return {uniforms.clip_from_object(m.position), {p, n, m.uv.x, m.uv.y, lit}};
   }
 

@@ -187,6 +187,11 @@ SceneRasterizer::SceneRasterizer(const Scene& scene, RasterSettings settings)
                             "); drawn at its time-0 pose");
       }
     }
+    for (Point3f p : scene.meshes[instance.mesh].positions) {
+      bounds_ = unite(bounds_, instance.world_from_object(p));
+      for (const TransformKey& k : instance.motion)
+        bounds_ = unite(bounds_, k.world_from_object(p));
+    }
     instances_.push_back(std::move(c));
     const Material& material = scene.materials[scene.material_of(instance)];
     if (settings.surface_lights && !material.emission.is_black())
@@ -259,6 +264,17 @@ void SceneRasterizer::draw_background(const Matrix4& world_from_clip, RenderTarg
   });
 }
 
+ShadowMap SceneRasterizer::render_shadow_map(const Matrix4& clip_from_world, float texel_world,
+                                             bool perspective, double time_s) const {
+  ShadowMap map(clip_from_world, settings_.shadow_map_size, texel_world, perspective);
+  for (const CompiledInstance& instance : instances_) {
+    DepthOnlyProgram<MeshVertex> program{
+        Matrix4f(clip_from_world * world_from_object(instance, time_s).matrix())};
+    draw(map.depth, DrawState{}, program, vertices_[instance.mesh], indices_[instance.mesh]);
+  }
+  return map;
+}
+
 void SceneRasterizer::render_frame(const Camera& camera, const RasterFrame& frame,
                                    RenderTarget& target) const {
   Bounds2i crop = camera.film.crop_pixels();
@@ -277,7 +293,27 @@ void SceneRasterizer::render_frame(const Camera& camera, const RasterFrame& fram
   const auto exposure = float(camera.exposure_scale());
   draw_background(*world_from_clip, target, exposure);
 
+  // Shadow maps at this shutter time.
+  std::vector<ShadowMap> directional_shadows, spot_shadows;
+  if (settings_.shadow_map_size > 0 && !bounds_.empty()) {
+    const int size = settings_.shadow_map_size;
+    float texel = 0;
+    for (const DirectionalLight& l : lights_.directional) {
+      Matrix4 m = directional_shadow_projection(-l.to_light, bounds_, size, &texel);
+      directional_shadows.push_back(render_shadow_map(m, texel, false, frame.time_s));
+    }
+    for (const SpotLight& l : lights_.spot) {
+      Matrix4 m = spot_shadow_projection(l.position, l.direction,
+                                         std::acos(std::clamp(l.cos_outer, -1.f, 1.f)), bounds_,
+                                         size, &texel);
+      ShadowMap& map = spot_shadows.emplace_back(render_shadow_map(m, texel, true, frame.time_s));
+      map.light_position = l.position;
+      map.light_axis = l.direction;
+    }
+  }
+
   InstanceUniforms base;
+  base.shadows = {directional_shadows, spot_shadows};
   const Matrix4& wc = *world_from_camera;
   // A projection whose w does not depend on z is orthographic: the eye is infinitely far.
   base.eye_at_infinity = projection[3][2] == 0;

@@ -5,8 +5,10 @@
 // SurfaceMaterial per material (textures as mipmapped raster textures), the lights (point, spot
 // and directional as they are; every emissive instance also as a SurfaceLight, the area light
 // seen as a point; the environment as a constant ambient equal to its mean radiance, and as the
-// background). Then any number of frames, each at one shutter time and optionally with the
-// camera's matrices replaced (jittered lens positions for accumulated depth of field).
+// background). Directional and spot lights cast shadows through shadow maps rendered per frame;
+// point and surface lights do not. Then any number of frames, each at one shutter time and
+// optionally with the camera's matrices replaced (jittered lens positions for accumulated depth of
+// field).
 #pragma once
 
 #include <optional>
@@ -21,6 +23,7 @@
 #include "obscura/raster/lights.h"
 #include "obscura/raster/render_target.h"
 #include "obscura/raster/shaders.h"
+#include "obscura/raster/shadow_map.h"
 #include "obscura/raster/surface_material.h"
 #include "obscura/raster/texture.h"
 #include "obscura/raster/tile_rasterizer.h"
@@ -42,6 +45,8 @@ struct RasterSettings {
   Wireframe wireframe;
   bool aovs = false;           // keep object ids, view depth and normals (make_target)
   bool surface_lights = true;  // emissive instances light the scene as SurfaceLights
+  // Texels per side of each directional and spot light's shadow map; 0: no shadows.
+  int shadow_map_size = 1024;
 };
 
 // One frame's camera. Unset matrices come from the camera at `time_s`.
@@ -80,6 +85,8 @@ class SceneRasterizer {
   };
   Transform world_from_object(const CompiledInstance& instance, double time_s) const;
   void draw_background(const Matrix4& world_from_clip, RenderTarget& target, float exposure) const;
+  ShadowMap render_shadow_map(const Matrix4& clip_from_world, float texel_world, bool perspective,
+                              double time_s) const;
 
   RasterSettings settings_;
   std::vector<std::vector<MeshVertex>> vertices_;  // per mesh, object space
@@ -88,6 +95,7 @@ class SceneRasterizer {
   std::vector<SurfaceMaterial> materials_;
   std::vector<CompiledInstance> instances_;
   LightSet lights_;
+  Bounds3f bounds_;  // every instance at every motion key (what shadow maps must cover)
   // Background: an equirectangular radiance map (empty: constant) times a colour.
   Image environment_map_;
   Rgb environment_scale_;
