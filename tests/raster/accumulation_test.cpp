@@ -30,7 +30,7 @@ using test::width_10_90;
 // x offset at time t (object motion).
 Image accumulate_rects(const Camera& camera, std::vector<Rect> rects, AccumulationSettings settings,
                        const std::function<double(double)>& move = {},
-                       Image* view_depth = nullptr) {
+                       RenderTarget* middle_frame = nullptr) {
   Film film(camera.film.width_px, camera.film.height_px);
   accumulate(
       camera, settings,
@@ -41,7 +41,7 @@ Image accumulate_rects(const Camera& camera, std::vector<Rect> rects, Accumulati
             r.x0 += move(frame.sample.time_s), r.x1 += move(frame.sample.time_s);
         test::draw_rects(moved, frame, target);
       },
-      film, {}, view_depth);
+      film, {}, middle_frame);
   return film.to_image();
 }
 
@@ -175,20 +175,30 @@ TEST(Accumulation, WithDepthOfFieldOffEveryFrameLooksThroughTheLensCentre) {
   camera.lens.depth_of_field = true;
   camera.lens.f_number = 1;
   camera.lens.focus_distance_m = 0.5;
-  Image depth;
-  auto sharp =
-      row_profile(accumulate_rects(camera, half_plane(1),
-                                   {.samples = 8, .seed = 1, .aovs = true, .depth_of_field = false},
-                                   {}, &depth),
-                  kStripHeight / 2);
+  auto sharp = row_profile(
+      accumulate_rects(camera, half_plane(1), {.samples = 8, .seed = 1, .depth_of_field = false}),
+      kStripHeight / 2);
   EXPECT_EQ(partial_pixels(sharp, 0, 1), 0);
-  EXPECT_FLOAT_EQ(depth.at(kStripWidth - 1, 0, 0), 1.f);  // the plane, 1 m along the axis
-  EXPECT_EQ(depth.at(0, 0, 0), std::numeric_limits<float>::infinity());  // nothing drawn
-  Film film(kStripWidth, kStripHeight);
-  EXPECT_THROW(
-      accumulate(
-          camera, {.samples = 2}, [](const FrameParameters&, RenderTarget&) {}, film, {}, &depth),
-      Error);
+}
+
+TEST(Accumulation, KeepsTheFrameNearestMidShutter) {
+  Camera camera = test::strip_camera();
+  camera.shutter = {.open_s = 0, .close_s = 0.01};
+  auto move = [](double t) { return 0.1 * t / 0.01; };
+  const AccumulationSettings settings{.samples = 8, .seed = 4, .aovs = true};
+  double kept_time = 0;
+  for (const LensTimeSample& s : accumulation_samples(camera, 8, 4))
+    if (std::abs(s.time_s - 0.005) < std::abs(kept_time - 0.005)) kept_time = s.time_s;
+  RenderTarget middle(1, 1);
+  accumulate_rects(camera, half_plane(2), settings, move, &middle);
+  ASSERT_TRUE(middle.has_aovs());
+  // The kept frame's edge is where the square was at that time: x = 48 + travel · t / T.
+  double edge_x = kStripWidth / 2 + kTravelPx * kept_time / 0.01;
+  int first_white = int(std::ceil(edge_x - 0.5));
+  EXPECT_EQ(middle.color_at(first_white - 1, 4).g, 0.f);
+  EXPECT_EQ(middle.color_at(first_white, 4).g, 1.f);
+  EXPECT_FLOAT_EQ(middle.view_depth_at(kStripWidth - 1, 4), 2.f);  // 2 m along the axis
+  EXPECT_EQ(middle.view_depth_at(0, 4), std::numeric_limits<float>::infinity());  // nothing
 }
 
 TEST(Accumulation, NeedsAccumulationForDepthOfFieldOrMotionWhileTheShutterIsOpen) {

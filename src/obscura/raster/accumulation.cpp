@@ -38,23 +38,21 @@ std::vector<LensTimeSample> accumulation_samples(const Camera& camera, int count
 
 void accumulate(const Camera& camera, const AccumulationSettings& settings,
                 const FrameRenderer& render_frame, Film& film, const ProgressCallback& progress,
-                Image* view_depth) {
+                RenderTarget* middle_frame) {
   camera.validate();
   if (!camera.has_projection_matrix())
     throw Error("accumulation.camera", "the rasterizer needs a perspective or orthographic camera");
-  if (view_depth && !settings.aovs)
-    throw Error("accumulation.aovs", "must be on to keep a view depth image");
   std::vector<LensTimeSample> samples =
       accumulation_samples(camera, settings.samples, settings.seed);
   if (!settings.depth_of_field)
     for (LensTimeSample& s : samples) s.lens_sample = {0.5, 0.5};
-  // The frame whose depth is kept: the one nearest mid-shutter (the first of equals).
+  // The frame kept: the one nearest mid-shutter (the first of equals).
   const double middle = camera.shutter.time_at(0.5);
-  int depth_frame = 0;
+  int kept_frame = 0;
   for (int i = 1; i < settings.samples; ++i)
     if (std::abs(samples[size_t(i)].time_s - middle) <
-        std::abs(samples[size_t(depth_frame)].time_s - middle))
-      depth_frame = i;
+        std::abs(samples[size_t(kept_frame)].time_s - middle))
+      kept_frame = i;
 
   RenderTarget target(film.width(), film.height(), settings.msaa_samples, settings.aovs);
   for (int i = 0; i < settings.samples; ++i) {
@@ -65,7 +63,7 @@ void accumulate(const Camera& camera, const AccumulationSettings& settings,
     target.clear();
     render_frame(frame, target);
     target.accumulate_into(film);
-    if (view_depth && i == depth_frame) *view_depth = target.view_depth_image();
+    if (middle_frame && i == kept_frame) *middle_frame = target;
     if (progress) progress(i + 1, settings.samples);
   }
 }

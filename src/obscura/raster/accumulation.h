@@ -62,13 +62,14 @@ using FrameRenderer = std::function<void(const FrameParameters&, RenderTarget&)>
 std::vector<LensTimeSample> accumulation_samples(const Camera& camera, int count, uint64_t seed);
 
 // Renders settings.samples frames through `render_frame` and adds their mean to `film` (each
-// pixel receives one sample of weight 1 per frame). With `view_depth` given, it receives the
-// view depth (RenderTarget::view_depth_image) of the frame nearest mid-shutter, for a
-// depth-of-field post-process; that needs settings.aovs. Throws obscura::Error for a camera
-// without a projection matrix or bad settings. `progress` is called after each frame.
+// pixel receives one sample of weight 1 per frame). With `middle_frame` given, it receives a
+// copy of the render target of the frame nearest mid-shutter: its view depth for a
+// depth-of-field post-process, its AOVs for the id/depth/normal outputs. Throws obscura::Error
+// for a camera without a projection matrix or bad settings. `progress` is called after each
+// frame.
 void accumulate(const Camera& camera, const AccumulationSettings& settings,
                 const FrameRenderer& render_frame, Film& film,
-                const ProgressCallback& progress = {}, Image* view_depth = nullptr);
+                const ProgressCallback& progress = {}, RenderTarget* middle_frame = nullptr);
 
 // Whether the camera or the caller's scene needs more than one frame: the lens has depth of
 // field, or the shutter is open for a while and something moves in it.
