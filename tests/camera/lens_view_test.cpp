@@ -27,7 +27,7 @@ double distance_to_ray(const CameraRay& ray, Point3d p) {
 }
 
 // Off-axis, shifted, non-square pixels, a wide-open lens focused close, moving over the shutter.
-Camera thin_lens_camera(int blades) {
+Camera thin_lens_camera(int blades, bool focus_breathing = true) {
   Camera c;
   Perspective p;
   p.focal_length_mm = 35;
@@ -42,6 +42,7 @@ Camera thin_lens_camera(int blades) {
   c.lens.f_number = 1.4;
   c.lens.focus_distance_m = 2.5;
   c.lens.aperture = {.blades = blades, .rotation_degrees = 17};
+  c.lens.focus_breathing = focus_breathing;
   c.shutter = {.open_s = 0, .close_s = 0.02};
   Transform start = world_from_camera_look_at({1, 1.2, 3}, {-0.3, 0.4, -1}, {0.1, 1, 0});
   c.world_from_camera = AnimatedTransform(
@@ -52,7 +53,7 @@ Camera thin_lens_camera(int blades) {
 
 TEST(LensView, APointOnTheFocusPlaneLandsOnOnePixelForEveryLensPoint) {
   for (int blades : {0, 6}) {
-    Camera c = thin_lens_camera(blades);
+    Camera c = thin_lens_camera(blades, /*focus_breathing=*/blades == 0);
     Pcg32 rng(11);
     for (int i = 0; i < 200; ++i) {
       double t = rng.next_float() * 0.02;
@@ -69,8 +70,14 @@ TEST(LensView, APointOnTheFocusPlaneLandsOnOnePixelForEveryLensPoint) {
 }
 
 TEST(LensView, AnyPointLandsWhereTheTracersRayThroughThatLensPointSeesIt) {
-  for (int blades : {0, 5}) {
-    Camera c = thin_lens_camera(blades);
+  // Both sensor conventions: at the image distance v (breathing) and at f (Cycles, pbrt).
+  struct Case {
+    int blades;
+    bool breathing;
+  };
+  for (Case k : {Case{0, true}, Case{5, true}, Case{0, false}}) {
+    const int blades = k.blades;
+    Camera c = thin_lens_camera(blades, k.breathing);
     Pcg32 rng(3);
     double worst_m = 0;
     for (int i = 0; i < 2000; ++i) {
@@ -86,7 +93,7 @@ TEST(LensView, AnyPointLandsWhereTheTracersRayThroughThatLensPointSeesIt) {
       // The ray through the matrices' pixel from the same lens point passes through p.
       worst_m = std::max(worst_m, distance_to_ray(*ray, p) / depth);
     }
-    EXPECT_LT(worst_m, 1e-9) << "blades " << blades;
+    EXPECT_LT(worst_m, 1e-9) << "blades " << blades << " breathing " << k.breathing;
   }
 }
 
