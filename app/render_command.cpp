@@ -13,6 +13,7 @@
 #include "camera_options.h"
 #include "display_options.h"
 #include "progress_bar.h"
+#include "raster_effects_options.h"
 #include "raster_options.h"
 #include "tracer_options.h"
 #include "usage_error.h"
@@ -34,6 +35,7 @@ struct RenderOptions {
   DisplayOptions display;
   TracerOptions tracer;
   RasterOptions raster;
+  RasterEffectsOptions raster_effects;
   // Which options were given on the command line: those override the scene file's settings.
   bool width_given = false, height_given = false, spp_given = false, seed_given = false;
 };
@@ -68,6 +70,7 @@ void run_render(RenderOptions options) {
   validate(options);
   validate(options.tracer);
   validate(options.raster, options.tracer.renderer);
+  validate(options.raster_effects, options.tracer.renderer);
   check_output_path(options.output);  // fail before rendering, not after
 
   std::optional<tbb::global_control> thread_limit;
@@ -84,7 +87,14 @@ void run_render(RenderOptions options) {
   Bounds2i crop = scene.camera.film.crop_pixels();
   Film film(crop.width(), crop.height());
   if (options.tracer.renderer == "raster") {
-    RasterRender r = render_raster(scene, options.raster, options.tracer.aovs, film, options.output);
+    const bool effects = wants_raster_effects(options.raster_effects, scene);
+    ProgressBar bar("render", options.quiet || !effects);
+    RasterRender r =
+        effects ? render_raster_effects(scene, options.raster, options.raster_effects,
+                                        options.tracer.aovs, options.seed, film, options.output,
+                                        [&](int done, int total) { bar.update(done, total); })
+                : render_raster(scene, options.raster, options.tracer.aovs, film, options.output);
+    bar.finish();
     report_write(options.output,
                  write_image(options.output, film.to_image(), image_write_options(options.display)),
                  options.quiet);
@@ -154,6 +164,7 @@ void add_render_command(CLI::App& app) {
   add_display_options(render, options->display);
   add_tracer_options(*render, options->tracer);
   add_raster_options(*render, options->raster);
+  add_raster_effects_options(*render, options->raster_effects);
   render->callback([options, render] {
     options->width_given = render->count("--width") > 0;
     options->height_given = render->count("--height") > 0;

@@ -1,0 +1,104 @@
+#include "raster_effects_options.h"
+
+#include <chrono>
+
+#include "obscura/io/image_io.h"
+#include "obscura/raster/accumulation.h"
+#include "obscura/raster/depth_of_field_post.h"
+#include "obscura/raster/scene_rasterizer.h"
+#include "usage_error.h"
+
+namespace obscura::app {
+
+namespace {
+
+bool scene_moves(const Scene& scene) {
+  for (const Instance& instance : scene.instances)
+    if (instance.animated()) return true;
+  return false;
+}
+
+}  // namespace
+
+void add_raster_effects_options(CLI::App& render, RasterEffectsOptions& o) {
+  o.registered = {
+      render.add_option("--raster-dof", o.dof,
+                        "raster: depth of field by 'accumulate' (renders through jittered lens "
+                        "points; default), 'post' (one render blurred by the z-buffer's circle "
+                        "of confusion) or 'off'"),
+      render.add_option("--raster-samples", o.samples,
+                        "raster: frames accumulated for depth of field and motion blur "
+                        "(default 32)")};
+}
+
+void validate(const RasterEffectsOptions& o, const std::string& renderer) {
+  if (renderer != "raster") {
+    for (const CLI::Option* option : o.registered)
+      if (option && option->count() > 0)
+        throw UsageError(option->get_name() +
+                         " applies to --renderer raster only (the renderer is '" + renderer + "')");
+    return;
+  }
+  if (o.dof != "off" && o.dof != "accumulate" && o.dof != "post")
+    throw UsageError("--raster-dof must be off, accumulate or post; got '" + o.dof + "'");
+  if (o.samples < 1)
+    throw UsageError("--raster-samples must be a positive number of frames; got " +
+                     std::to_string(o.samples));
+}
+
+bool wants_raster_effects(const RasterEffectsOptions& o, const Scene& scene) {
+  bool lens = scene.camera.lens.depth_of_field && o.dof != "off";
+  return lens || raster::needs_accumulation(scene.camera, scene_moves(scene));
+}
+
+RasterRender render_raster_effects(const Scene& scene, const RasterOptions& raster,
+                                   const RasterEffectsOptions& effects, bool aovs, uint64_t seed,
+                                   Film& film, const std::string& output,
+                                   const ProgressCallback& progress) {
+  auto start = std::chrono::steady_clock::now();
+  const Camera& camera = scene.camera;
+  const bool post = effects.dof == "post" && camera.lens.depth_of_field;
+  const bool lens_blur = effects.dof == "accumulate" && camera.lens.depth_of_field;
+  const bool many = lens_blur || raster::needs_accumulation(camera, scene_moves(scene));
+
+  raster::SceneRasterizer rasterizer(scene, raster_settings(raster, aovs || post));
+  raster::AccumulationSettings settings{.samples = many ? effects.samples : 1,
+                                        .seed = seed,
+                                        .msaa_samples = raster.msaa,
+                                        .aovs = aovs || post,
+                                        .depth_of_field = lens_blur};
+  raster::RenderTarget middle = rasterizer.make_target(camera);
+  raster::accumulate(
+      camera, settings,
+      [&](const raster::FrameParameters& frame, raster::RenderTarget& target) {
+        rasterizer.render_frame(
+            camera, {frame.sample.time_s, frame.lens.view, frame.lens.projection}, target);
+      },
+      film, progress, &middle);
+
+  if (post) {
+    // The post-process works on the accumulated (motion-blurred) colour with the depth of the
+    // frame nearest mid-shutter.
+    Image blurred = raster::depth_of_field_post(film.to_image(), middle.view_depth_image(), camera);
+    film = Film(film.width(), film.height());
+    for (int y = 0; y < film.height(); ++y)
+      for (int x = 0; x < film.width(); ++x) film.add_sample({x, y}, blurred.rgb(x, y));
+  }
+
+  RasterRender result;
+  result.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  result.warnings = rasterizer.warnings();
+  if (aovs) {
+    std::string stem = output.substr(0, output.find_last_of('.'));
+    auto write = [&](const char* name, const Image& image) {
+      result.aov_paths.push_back(stem + "." + name + ".exr");
+      write_image(result.aov_paths.back(), image);
+    };
+    write("normal", raster::normal_image(middle));
+    write("depth", raster::distance_image(middle, camera));
+    write("id", raster::id_image(middle));
+  }
+  return result;
+}
+
+}  // namespace obscura::app

@@ -1,0 +1,43 @@
+// The rasterizer's camera effects on `obscura render --renderer raster`: depth of field by
+// accumulation or as a z-buffer post-process, and motion blur by accumulation whenever the
+// shutter is open and something moves (see docs/raster-effects.md).
+#pragma once
+
+#include <cstdint>
+#include <string>
+#include <vector>
+
+#include <CLI/CLI.hpp>
+
+#include "obscura/film/film.h"
+#include "obscura/film/tiles.h"
+#include "obscura/scene/scene.h"
+#include "raster_options.h"
+
+namespace obscura::app {
+
+struct RasterEffectsOptions {
+  std::string dof = "accumulate";        // off | accumulate | post
+  int samples = 32;                      // frames accumulated for depth of field / motion blur
+  std::vector<CLI::Option*> registered;  // to tell whether any was given
+};
+
+void add_raster_effects_options(CLI::App& render, RasterEffectsOptions& options);
+// Throws UsageError for a bad value, or for these options given to another renderer.
+void validate(const RasterEffectsOptions& options, const std::string& renderer);
+
+// Whether the render needs more than one sharp frame at mid-shutter: the camera has depth of
+// field (and --raster-dof is not off), or the shutter is open while the camera or an instance
+// moves.
+bool wants_raster_effects(const RasterEffectsOptions& options, const Scene& scene);
+
+// Renders `scene` into `film` (the crop's size) with the effects: `samples` frames through
+// jittered lens points and shutter times (one when nothing needs them), then the post-process
+// when asked for. With `aovs`, writes the id/depth/normal outputs of the frame nearest
+// mid-shutter beside `output`, as render_raster does.
+RasterRender render_raster_effects(const Scene& scene, const RasterOptions& raster,
+                                   const RasterEffectsOptions& effects, bool aovs, uint64_t seed,
+                                   Film& film, const std::string& output,
+                                   const ProgressCallback& progress = {});
+
+}  // namespace obscura::app

@@ -1,0 +1,76 @@
+#include "obscura/raster/accumulation.h"
+
+#include <cmath>
+#include <string>
+
+#include "obscura/math/error.h"
+#include "obscura/math/rng.h"
+#include "obscura/math/sobol.h"
+
+namespace obscura::raster {
+
+namespace {
+
+// A 32-bit fraction as a double in [0, 1), keeping all 32 bits.
+double fraction_to_double(uint32_t bits) {
+  return bits * 0x1p-32;
+}
+
+}  // namespace
+
+std::vector<LensTimeSample> accumulation_samples(const Camera& camera, int count, uint64_t seed) {
+  if (count < 1)
+    throw Error("accumulation.samples", "must be at least 1; got " + std::to_string(count));
+  if (count == 1) return {{{0.5, 0.5}, camera.shutter.time_at(0.5)}};
+  // One independent Owen scramble per dimension keeps the Sobol' points' stratification while
+  // making each seed's set a different one.
+  uint32_t scramble[3];
+  for (int d = 0; d < 3; ++d) scramble[d] = uint32_t(hash_words(seed, 0xacc0u, uint64_t(d)));
+  std::vector<LensTimeSample> samples(static_cast<size_t>(count));
+  for (int i = 0; i < count; ++i) {
+    double u[3];
+    for (int d = 0; d < 3; ++d)
+      u[d] = fraction_to_double(owen_scramble(sobol_bits(uint32_t(i), d), scramble[d]));
+    samples[size_t(i)] = {{u[0], u[1]}, camera.shutter.time_at(u[2])};
+  }
+  return samples;
+}
+
+void accumulate(const Camera& camera, const AccumulationSettings& settings,
+                const FrameRenderer& render_frame, Film& film, const ProgressCallback& progress,
+                RenderTarget* middle_frame) {
+  camera.validate();
+  if (!camera.has_projection_matrix())
+    throw Error("accumulation.camera", "the rasterizer needs a perspective or orthographic camera");
+  std::vector<LensTimeSample> samples =
+      accumulation_samples(camera, settings.samples, settings.seed);
+  if (!settings.depth_of_field)
+    for (LensTimeSample& s : samples) s.lens_sample = {0.5, 0.5};
+  // The frame kept: the one nearest mid-shutter (the first of equals).
+  const double middle = camera.shutter.time_at(0.5);
+  int kept_frame = 0;
+  for (int i = 1; i < settings.samples; ++i)
+    if (std::abs(samples[size_t(i)].time_s - middle) <
+        std::abs(samples[size_t(kept_frame)].time_s - middle))
+      kept_frame = i;
+
+  RenderTarget target(film.width(), film.height(), settings.msaa_samples, settings.aovs);
+  for (int i = 0; i < settings.samples; ++i) {
+    FrameParameters frame;
+    frame.index = i;
+    frame.sample = samples[size_t(i)];
+    frame.lens = lens_view(camera, frame.sample.lens_sample, frame.sample.time_s);
+    target.clear();
+    render_frame(frame, target);
+    target.accumulate_into(film);
+    if (middle_frame && i == kept_frame) *middle_frame = target;
+    if (progress) progress(i + 1, settings.samples);
+  }
+}
+
+bool needs_accumulation(const Camera& camera, bool scene_moves) {
+  bool moves = scene_moves || camera.world_from_camera.is_animated();
+  return camera.lens.depth_of_field || (camera.shutter.duration_s() > 0 && moves);
+}
+
+}  // namespace obscura::raster
