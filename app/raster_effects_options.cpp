@@ -32,13 +32,8 @@ void add_raster_effects_options(CLI::App& render, RasterEffectsOptions& o) {
 }
 
 void validate(const RasterEffectsOptions& o, const std::string& renderer) {
-  if (renderer != "raster") {
-    for (const CLI::Option* option : o.registered)
-      if (option && option->count() > 0)
-        throw UsageError(option->get_name() +
-                         " applies to --renderer raster only (the renderer is '" + renderer + "')");
-    return;
-  }
+  reject_unless_raster(o.registered, renderer);
+  if (renderer != "raster") return;
   if (o.dof != "off" && o.dof != "accumulate" && o.dof != "post")
     throw UsageError("--raster-dof must be off, accumulate or post; got '" + o.dof + "'");
   if (o.samples < 1)

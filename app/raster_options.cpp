@@ -20,14 +20,18 @@ void add_raster_options(CLI::App& render, RasterOptions& o) {
                         "lights; 0: no shadows (default 1024)")};
 }
 
+void reject_unless_raster(const std::vector<CLI::Option*>& registered,
+                          const std::string& renderer) {
+  if (renderer == "raster") return;
+  for (const CLI::Option* option : registered)
+    if (option && option->count() > 0)
+      throw UsageError(option->get_name() +
+                       " applies to --renderer raster only (the renderer is '" + renderer + "')");
+}
+
 void validate(const RasterOptions& o, const std::string& renderer) {
-  if (renderer != "raster") {
-    for (const CLI::Option* option : o.registered)
-      if (option && option->count() > 0)
-        throw UsageError(option->get_name() +
-                         " applies to --renderer raster only (the renderer is '" + renderer + "')");
-    return;
-  }
+  reject_unless_raster(o.registered, renderer);
+  if (renderer != "raster") return;
   if (o.msaa != 1 && o.msaa != 4 && o.msaa != 8)
     throw UsageError("--msaa must be 1, 4 or 8 samples; got " + std::to_string(o.msaa));
   if (o.shadow_map_size < 0 || o.shadow_map_size > 16384)

@@ -25,6 +25,9 @@ struct RasterOptions {
 void add_raster_options(CLI::App& render, RasterOptions& options);
 // Throws UsageError for a bad value, or for raster options given to another renderer.
 void validate(const RasterOptions& options, const std::string& renderer);
+// A usage error naming the first of `registered` given on the command line, unless the renderer
+// is the rasterizer.
+void reject_unless_raster(const std::vector<CLI::Option*>& registered, const std::string& renderer);
 raster::RasterSettings raster_settings(const RasterOptions& options, bool aovs);
 
 struct RasterRender {
