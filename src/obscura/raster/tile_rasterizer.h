@@ -11,6 +11,9 @@
 #include <algorithm>
 #include <concepts>
 #include <cstdint>
+#include <cstring>
+#include <iterator>
+#include <limits>
 #include <utility>
 
 #include "obscura/color/rgb.h"
@@ -79,22 +82,26 @@ class TriangleRasterizer {
  public:
   using V = typename P::Varyings;
   static constexpr int kN = kVaryingFloats<V>;
+  static constexpr int kBlockLog2 = 3;
+  static constexpr int kBlock = 1 << kBlockLog2;  // 8×8-pixel blocks; rows go 8 lanes at a time
+  static_assert(kBlock == kRowAlignment && kTileSize % kBlock == 0);
+  static constexpr bool kHierarchicalZ = F == DepthFunc::kLess || F == DepthFunc::kLessEqual;
 
   TriangleRasterizer(const P& program, RenderTarget& target, const FragmentSettings& settings)
       : program_(program),
         target_(target),
         settings_(settings),
-        offsets_(msaa_sample_offsets(target.samples())) {}
+        offsets_(msaa_sample_offsets(target.samples())) {
+    for (auto& row : depth_bound_) std::fill(std::begin(row), std::end(row), kNoBound);
+  }
 
   OBSCURA_RASTER_INLINE void draw(const ShadedVertex<V>& a, const ShadedVertex<V>& b,
                                   const ShadedVertex<V>& c, uint32_t primitive, PixelRect tile) {
     if (!setup(a, b, c, primitive, tile)) return;
-    for (int row = rows_.first; row <= rows_.last; ++row) {
-      if (target_.samples() == 1) {
-        shade_row(row);
-      } else {
-        shade_row_multisampled(row);
-      }
+    if (target_.samples() == 1) {
+      rasterize_blocks(tile);
+    } else {
+      for (int row = rows_.first; row <= rows_.last; ++row) shade_row_multisampled(row);
     }
   }
 
@@ -192,106 +199,201 @@ class TriangleRasterizer {
     }
   }
 
-  // Single sample per pixel: aligned blocks of kBlock pixels along the row, each lane masked by
-  // coverage and the depth test. Every loop below has a fixed trip count, so the compiler
-  // vectorizes them; lanes outside the span recompute but never store (the row stride is padded
-  // to whole blocks, so a block never reaches into another tile).
-  OBSCURA_RASTER_INLINE void shade_row(int row) {
-    constexpr int kBlock = kRowAlignment;
-    constexpr int kWideRow = 16;  // wider boxes solve each row's span once (3 divisions)
+  // Single sample per pixel. The box is walked in 8×8 blocks aligned to the tile. Each edge
+  // function is affine, so its extremes over a block lie at the block's corners: a block outside
+  // one edge is skipped, and edges a block lies wholly inside are not tested per pixel. With a
+  // LESS/LEQUAL depth test, a block whose nearest depth cannot pass against the block's depth
+  // bound (hierarchical z) is skipped before any per-pixel work.
+  OBSCURA_RASTER_INLINE void rasterize_blocks(PixelRect tile) {
+    int64_t step_x[3], step_y[3];  // per pixel
+    for (int i = 0; i < 3; ++i)
+      step_x[i] = edge_[i].step_x * kSubpixelScale, step_y[i] = edge_[i].step_y * kSubpixelScale;
+    const int bx0 = (cols_.first - tile.x0) >> kBlockLog2,
+              bx1 = (cols_.last - tile.x0) >> kBlockLog2;
+    const int by0 = (rows_.first - tile.y0) >> kBlockLog2,
+              by1 = (rows_.last - tile.y0) >> kBlockLog2;
+    for (int by = by0; by <= by1; ++by) {
+      const int block_y = tile.y0 + (by << kBlockLog2);
+      const int y_lo = std::max(rows_.first, block_y),
+                y_hi = std::min(rows_.last, block_y + kBlock - 1);
+      for (int bx = bx0; bx <= bx1; ++bx) {
+        const int block_x = tile.x0 + (bx << kBlockLog2);
+        const int x_lo = std::max(cols_.first, block_x);
+        const int x_hi = std::min(cols_.last, block_x + kBlock - 1);
+        bool partial = false, outside = false;
+        for (int i = 0; i < 3; ++i) {
+          int64_t e = edge_at_origin_[i] + edge_[i].bias + step_x[i] * (x_lo - cols_.first) +
+                      step_y[i] * (y_lo - rows_.first);
+          int64_t ex = step_x[i] * (x_hi - x_lo), ey = step_y[i] * (y_hi - y_lo);
+          int64_t lo = e + std::min<int64_t>(ex, 0) + std::min<int64_t>(ey, 0);
+          int64_t hi = e + std::max<int64_t>(ex, 0) + std::max<int64_t>(ey, 0);
+          outside |= hi < 0;
+          partial |= lo < 0;
+        }
+        if (outside) continue;
+        float& bound = depth_bound_[by][bx];
+        if constexpr (kHierarchicalZ) {
+          if (bound != kNoBound) {
+            // Depth is monotone in x and y (see pixel_depth), so its minimum over the block is
+            // the smallest of the corner values.
+            float z_min = std::min({pixel_depth(x_lo, y_lo), pixel_depth(x_hi, y_lo),
+                                    pixel_depth(x_lo, y_hi), pixel_depth(x_hi, y_hi)});
+            if (F == DepthFunc::kLess ? z_min >= bound : z_min > bound) continue;
+          }
+        }
+        const bool whole = !partial && x_lo == block_x && x_hi == block_x + kBlock - 1 &&
+                           y_lo == block_y && y_hi == block_y + kBlock - 1;
+        bool all_written = whole;
+        float z_max = 0.f;
+        for (int row = y_lo; row <= y_hi; ++row)
+          shade_segment(row, block_x, x_lo, x_hi, partial, &all_written, &z_max);
+        // Every pixel of the block now holds a depth written here: the bound tightens. Otherwise
+        // it stays valid, as LESS/LEQUAL with depth writes only ever lower stored depths.
+        if (kHierarchicalZ && all_written && settings_.depth_write) bound = z_max;
+      }
+    }
+  }
+
+  // The window depth the pixel loop computes at pixel (x, y) of the box: z_row + zx·k, each step
+  // rounded, is monotone in k and in the row, so extremes over a rectangle lie at its corners.
+  OBSCURA_RASTER_INLINE float pixel_depth(int x, int y) const {
+    const float z_row = z0_ + zy_ * float(y - rows_.first);
+    return clamp_unit(z_row + zx_ * float(x - cols_.first));
+  }
+
+  // One row of one block: pixels [x_lo, x_hi] of the aligned run of kBlock pixels starting at x0,
+  // each lane masked by coverage (only when `test_edges`) and the depth test. Every loop below
+  // has a fixed trip count, so the compiler vectorizes them; lanes outside the span recompute but
+  // never store (the row stride is padded to whole blocks, so a block never reaches into
+  // another tile). `*all_written` is cleared unless every lane in the span passed; `*z_max`
+  // collects the largest depth written.
+  OBSCURA_RASTER_INLINE void shade_segment(int row, int x0, int x_lo, int x_hi, bool test_edges,
+                                           bool* all_written, float* z_max) {
     const int dy = row - rows_.first;
-    int64_t e_row[3], step[3];  // edge values (+ bias) at the box's first pixel in this row
-    for (int i = 0; i < 3; ++i) {
-      e_row[i] = edge_at_origin_[i] + edge_[i].step_y * kSubpixelScale * dy + edge_[i].bias;
-      step[i] = edge_[i].step_x * kSubpixelScale;
-    }
-    int first = cols_.first, last = cols_.last;
-    const bool exact_span = last - first >= kWideRow;
-    if (exact_span) {
-      for (int i = 0; i < 3; ++i)  // each edge narrows the span left by the previous ones
-        clip_span_to_edge(e_row[i] + step[i] * (first - cols_.first), step[i], &first, &last);
-      if (first > last) return;
-    }
+    const int64_t k0 = x0 - cols_.first;
     const float z_row = z0_ + zy_ * float(dy);
-    float f_row[3];
-    for (int i = 0; i < 3; ++i) f_row[i] = f0_[i] + fy_[i] * float(dy);
     float* depth = target_.depth() + target_.sample_index(0, row);
     Rgb* color = target_.color() + target_.sample_index(0, row);
 
-    for (int x0 = first & ~(kBlock - 1); x0 <= last; x0 += kBlock) {
-      bool lane[kBlock];
-      float z[kBlock];
-      const int64_t k0 = x0 - cols_.first;
+    // Bitwise rather than short-circuit logic throughout: no branch in the loops, so they
+    // vectorize (the depth load is always in bounds, the row being padded).
+    bool covered[kBlock];
+    if (test_edges) {
       int64_t e_block[3];
-      for (int i = 0; i < 3; ++i) e_block[i] = e_row[i] + step[i] * k0;
-      int live = 0;
+      for (int i = 0; i < 3; ++i)
+        e_block[i] = edge_at_origin_[i] + edge_[i].bias + edge_[i].step_y * kSubpixelScale * dy +
+                     edge_[i].step_x * kSubpixelScale * k0;
+      for (int i = 0; i < kBlock; ++i)
+        covered[i] = (e_block[0] + lane_step_[0][i] >= 0) & (e_block[1] + lane_step_[1][i] >= 0) &
+                     (e_block[2] + lane_step_[2][i] >= 0);
+    } else {
+      for (int i = 0; i < kBlock; ++i) covered[i] = true;
+    }
+    bool lane[kBlock];
+    float z[kBlock];
+    int live = 0;
+    for (int i = 0; i < kBlock; ++i) {
+      const int x = x0 + i;
+      z[i] = clamp_unit(z_row + zx_ * float(k0 + i));
+      lane[i] = covered[i] & (x >= x_lo) & (x <= x_hi) & depth_passes<F>(z[i], depth[x]);
+      live += lane[i];
+    }
+    if (live != x_hi - x_lo + 1) *all_written = false;
+    if (live == 0) return;  // early depth rejection of the whole run
+    if constexpr (kHierarchicalZ) {
+      float m = *z_max;
+      for (int i = 0; i < kBlock; ++i) m = std::max(m, lane[i] ? z[i] : 0.f);
+      *z_max = m;
+    }
+    if (live <= 2) {  // small triangles: shade only the live pixels
       for (int i = 0; i < kBlock; ++i) {
-        const int x = x0 + i;
-        bool inside = x >= first && x <= last;
-        if (!exact_span)
-          inside = inside && e_block[0] + lane_step_[0][i] >= 0 &&
-                   e_block[1] + lane_step_[1][i] >= 0 && e_block[2] + lane_step_[2][i] >= 0;
-        z[i] = clamp_unit(z_row + zx_ * float(k0 + i));
-        lane[i] = inside && depth_passes<F>(z[i], depth[x]);
-        live += lane[i];
+        if (!lane[i]) continue;
+        float l1, l2, w;
+        weights(float(k0 + i), float(dy), &l1, &l2, &w);
+        write(target_.sample_index(x0 + i, row), z[i],
+              shade(l1, l2, float(k0 + i), float(dy), x0 + i, row), l1, l2, w, x0 + i, row);
       }
-      if (live == 0) continue;  // early depth rejection of the whole block
-      if (live <= 2) {          // small triangles: shade only the live pixels
-        for (int i = 0; i < kBlock; ++i) {
-          if (!lane[i]) continue;
-          float l1, l2, w;
-          weights(float(k0 + i), float(dy), &l1, &l2, &w);
-          write(target_.sample_index(x0 + i, row), z[i],
-                shade(l1, l2, float(k0 + i), float(dy), x0 + i, row), l1, l2, w, x0 + i, row);
-        }
-        continue;
-      }
+      return;
+    }
 
-      float l1[kBlock], l2[kBlock], w[kBlock], r[kBlock], g[kBlock], b[kBlock];
+    const float f_row[3] = {f0_[0] + fy_[0] * float(dy), f0_[1] + fy_[1] * float(dy),
+                            f0_[2] + fy_[2] * float(dy)};
+    float l1[kBlock], l2[kBlock], w[kBlock], r[kBlock], g[kBlock], b[kBlock];
+    for (int i = 0; i < kBlock; ++i) {
+      const float dx = float(k0 + i);
+      float f0 = f_row[0] + fx_[0] * dx, f1 = f_row[1] + fx_[1] * dx, f2 = f_row[2] + fx_[2] * dx;
+      w[i] = 1.f / (f0 + f1 + f2);
+      l1[i] = f1 * w[i], l2[i] = f2 * w[i];
+    }
+    shade_block(l1, l2, float(k0), float(dy), x0, row, r, g, b);
+    if (settings_.wireframe.enabled)
       for (int i = 0; i < kBlock; ++i) {
-        const float dx = float(x0 + i - cols_.first);
-        float f0 = f_row[0] + fx_[0] * dx, f1 = f_row[1] + fx_[1] * dx, f2 = f_row[2] + fx_[2] * dx;
-        w[i] = 1.f / (f0 + f1 + f2);
-        l1[i] = f1 * w[i], l2[i] = f2 * w[i];
+        Rgb c = apply_wireframe({r[i], g[i], b[i]}, x0 + i, row);
+        r[i] = c.r, g[i] = c.g, b[i] = c.b;
       }
-      // Kept a loop (not unrolled) so that the loop vectorizer, rather than straight-line SLP,
-      // turns the whole fragment shader into vector code, one pixel per lane.
+    if (live == kBlock && settings_.blend == BlendMode::kReplace) {
+      // The common case inside large triangles: plain stores, which vectorize.
+      if (settings_.depth_write)
+        for (int i = 0; i < kBlock; ++i) depth[x0 + i] = z[i];
+      store_colors(color + x0, r, g, b);
+      if (target_.has_aovs())
+        for (int i = 0; i < kBlock; ++i)
+          write_aovs(target_.sample_index(x0 + i, row), l1[i], l2[i], w[i]);
+      return;
+    }
+    if (settings_.depth_write)
+      for (int i = 0; i < kBlock; ++i) depth[x0 + i] = lane[i] ? z[i] : depth[x0 + i];
+    if (settings_.blend == BlendMode::kAdd) {
+      for (int i = 0; i < kBlock; ++i)
+        if (lane[i]) color[x0 + i] += Rgb(r[i], g[i], b[i]);
+    } else {
+      for (int i = 0; i < kBlock; ++i)
+        if (lane[i]) color[x0 + i] = Rgb(r[i], g[i], b[i]);
+    }
+    if (target_.has_aovs())
+      for (int i = 0; i < kBlock; ++i)
+        if (lane[i]) write_aovs(target_.sample_index(x0 + i, row), l1[i], l2[i], w[i]);
+  }
+
+  // The fragment shader on a run of kBlock pixels (weights l1, l2 per lane), colours out as
+  // planes. Varyings are interpolated plane by plane (one vector per varying), then each lane's
+  // struct is gathered from the planes: with no loop left over the varyings, the loop over lanes
+  // is what the vectorizer sees, and it turns the whole shader into vector code.
+  OBSCURA_RASTER_INLINE void shade_block(const float* l1, const float* l2, float k0, float dy,
+                                         int x0, int row, float* r, float* g, float* b) const {
+    if constexpr (PlainFragmentShader<P>) {
+      float planes[kN][kBlock];
+      for (int k = 0; k < kN; ++k)
+        for (int i = 0; i < kBlock; ++i) planes[k][i] = base_[k] + d1_[k] * l1[i] + d2_[k] * l2[i];
 #if defined(__GNUC__) && !defined(__clang__)
-#pragma GCC unroll 1
 #pragma GCC ivdep
 #endif
       for (int i = 0; i < kBlock; ++i) {
-        Rgb c = shade(l1[i], l2[i], float(x0 + i - cols_.first), float(dy), x0 + i, row);
+        Rgb c = program_.fragment(gather_lane(planes, i, std::make_index_sequence<kN>()),
+                                  FragmentInfo{x0 + i, row, primitive_, front_facing_});
         r[i] = c.r, g[i] = c.g, b[i] = c.b;
       }
-      if (settings_.wireframe.enabled)
-        for (int i = 0; i < kBlock; ++i) {
-          Rgb c = apply_wireframe({r[i], g[i], b[i]}, x0 + i, row);
-          r[i] = c.r, g[i] = c.g, b[i] = c.b;
-        }
-      if (live == kBlock && settings_.blend == BlendMode::kReplace) {
-        // The common case inside large triangles: plain stores, which vectorize.
-        if (settings_.depth_write)
-          for (int i = 0; i < kBlock; ++i) depth[x0 + i] = z[i];
-        for (int i = 0; i < kBlock; ++i) color[x0 + i] = Rgb(r[i], g[i], b[i]);
-        if (target_.has_aovs())
-          for (int i = 0; i < kBlock; ++i)
-            write_aovs(target_.sample_index(x0 + i, row), l1[i], l2[i], w[i]);
-        continue;
+    } else {
+      for (int i = 0; i < kBlock; ++i) {
+        Rgb c = shade(l1[i], l2[i], k0 + float(i), dy, x0 + i, row);
+        r[i] = c.r, g[i] = c.g, b[i] = c.b;
       }
-      if (settings_.depth_write)
-        for (int i = 0; i < kBlock; ++i) depth[x0 + i] = lane[i] ? z[i] : depth[x0 + i];
-      if (settings_.blend == BlendMode::kAdd) {
-        for (int i = 0; i < kBlock; ++i)
-          if (lane[i]) color[x0 + i] += Rgb(r[i], g[i], b[i]);
-      } else {
-        for (int i = 0; i < kBlock; ++i)
-          if (lane[i]) color[x0 + i] = Rgb(r[i], g[i], b[i]);
-      }
-      if (target_.has_aovs())
-        for (int i = 0; i < kBlock; ++i)
-          if (lane[i]) write_aovs(target_.sample_index(x0 + i, row), l1[i], l2[i], w[i]);
     }
+  }
+
+  template <size_t... K>
+  OBSCURA_RASTER_INLINE static V gather_lane(const float (&planes)[kN][kBlock], int i,
+                                             std::index_sequence<K...>) {
+    return from_floats<V>(VaryingArray<V>{planes[K][i]...});
+  }
+
+  // Interleaves planes into kBlock RGB pixels.
+  OBSCURA_RASTER_INLINE static void store_colors(Rgb* dst, const float* r, const float* g,
+                                                 const float* b) {
+    float interleaved[3 * kBlock];
+    for (int i = 0; i < kBlock; ++i)
+      interleaved[3 * i] = r[i], interleaved[3 * i + 1] = g[i], interleaved[3 * i + 2] = b[i];
+    std::memcpy(static_cast<void*>(dst), interleaved, sizeof interleaved);
   }
 
   // MSAA: coverage and depth per sample, the fragment shader once per pixel at its centre.
@@ -377,6 +479,11 @@ class TriangleRasterizer {
   int64_t lane_step_[3][kRowAlignment];  // edge step × lane index, to add without multiplying
   uint32_t primitive_ = 0;
   bool front_facing_ = true;
+  // Hierarchical z, per 8×8 block of the tile: no stored depth in the block exceeds its bound.
+  // The rasterizer lives for one tile of one draw, so the bounds start unknown (+∞ admits
+  // anything) and tighten as triangles overwrite whole blocks.
+  static constexpr float kNoBound = std::numeric_limits<float>::infinity();
+  float depth_bound_[kTileSize / kBlock][kTileSize / kBlock];
 };
 
 }  // namespace obscura::raster
