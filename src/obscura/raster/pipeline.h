@@ -14,6 +14,7 @@
 #include <memory>
 #include <span>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include <tbb/parallel_for.h>
@@ -97,6 +98,25 @@ void rasterize_tiles(const TileJob<P>& job) {
   });
 }
 
+// The per-draw buffers (shaded vertices, bins), kept per thread between draws: a frame of a
+// million triangles would otherwise allocate and page in tens of MB for each draw. A draw takes
+// the thread's buffers and gives them back when done, so a draw nested on the same thread (a
+// task stolen while waiting) simply allocates its own.
+template <VaryingsType V>
+struct DrawScratch {
+  std::vector<ShadedVertex<V>> shared;
+  std::vector<Chunk<V>> chunks;
+
+  static DrawScratch take() { return std::exchange(cache(), DrawScratch()); }
+  static void give_back(DrawScratch&& scratch) { cache() = std::move(scratch); }
+
+ private:
+  static DrawScratch& cache() {
+    thread_local DrawScratch scratch;
+    return scratch;
+  }
+};
+
 }  // namespace detail
 
 // Draws triangles: with `indices` empty, vertices 3t, 3t+1, 3t+2 form triangle t; otherwise
@@ -123,8 +143,12 @@ void draw(RenderTarget& target, const DrawState& state, const P& program,
   const Viewport viewport{target.width(), target.height()};
   const GuardBand guard = GuardBand::for_viewport(viewport.width, viewport.height);
 
+  detail::DrawScratch<V> scratch = detail::DrawScratch<V>::take();
+  // Grown only (never value-initialized again once there): every element used is written below.
+  if (scratch.shared.size() < vertices.size()) scratch.shared.resize(vertices.size());
+  ShadedVertex<V>* shared = scratch.shared.data();
+
   // 1. Vertex shader.
-  auto shared = std::make_unique_for_overwrite<ShadedVertex<V>[]>(vertices.size());
   tbb::parallel_for(tbb::blocked_range<size_t>(0, vertices.size(), 4096),
                     [&](const tbb::blocked_range<size_t>& r) {
                       for (size_t i = r.begin(); i < r.end(); ++i)
@@ -142,12 +166,13 @@ void draw(RenderTarget& target, const DrawState& state, const P& program,
                         .front_face = state.front_face,
                         .sample_extent = extent};
   const TileGrid grid(viewport);
-  std::vector<Chunk<V>> chunks((triangle_count + kChunkTriangles - 1) / kChunkTriangles);
+  std::vector<Chunk<V>>& chunks = scratch.chunks;
+  chunks.resize((triangle_count + kChunkTriangles - 1) / kChunkTriangles);
   auto corner = [&](uint32_t t, int k) { return indexed ? indices[3 * t + k] : 3 * t + k; };
   tbb::parallel_for(size_t(0), chunks.size(), [&](size_t c) {
     uint32_t first = uint32_t(c) * kChunkTriangles;
     uint32_t last = std::min(triangle_count, first + kChunkTriangles);
-    chunks[c].build(first, last, corner, shared.get(), bin, grid);
+    chunks[c].build(first, last, corner, shared, bin, grid);
   });
 
   // 3. Tiles: the depth function is a template argument so the pixel loop has no switch.
@@ -157,7 +182,7 @@ void draw(RenderTarget& target, const DrawState& state, const P& program,
   settings.front_face = state.front_face;
   settings.object_id = state.object_id;
   settings.wireframe = state.wireframe;
-  const detail::TileJob<P> job{program, target, settings, chunks, shared.get(), grid};
+  const detail::TileJob<P> job{program, target, settings, chunks, shared, grid};
   switch (state.depth_func) {
 #define OBSCURA_RASTER_CASE(F)          \
   case F:                               \
@@ -173,6 +198,7 @@ void draw(RenderTarget& target, const DrawState& state, const P& program,
     OBSCURA_RASTER_CASE(DepthFunc::kAlways)
 #undef OBSCURA_RASTER_CASE
   }
+  detail::DrawScratch<V>::give_back(std::move(scratch));
 }
 
 // The same for a std::vector or any contiguous range.

@@ -93,6 +93,8 @@ class TriangleRasterizer {
         settings_(settings),
         offsets_(msaa_sample_offsets(target.samples())) {
     for (auto& row : depth_bound_) std::fill(std::begin(row), std::end(row), kNoBound);
+    for (Vector2i o : offsets_)
+      sample_extent_ = std::max({sample_extent_, std::abs(o.x), std::abs(o.y)});
   }
 
   OBSCURA_RASTER_INLINE void draw(const ShadedVertex<V>& a, const ShadedVertex<V>& b,
@@ -101,6 +103,7 @@ class TriangleRasterizer {
     if (target_.samples() == 1) {
       rasterize_blocks(tile);
     } else {
+      setup_planes();
       for (int row = rows_.first; row <= rows_.last; ++row) shade_row_multisampled(row);
     }
   }
@@ -121,8 +124,7 @@ class TriangleRasterizer {
     std::rotate(v, v + first, v + 3);
     primitive_ = primitive;
 
-    int extent = 0;
-    for (Vector2i o : offsets_) extent = std::max({extent, std::abs(o.x), std::abs(o.y)});
+    const int extent = sample_extent_;
     int32_t min_x = std::min({v[0]->x, v[1]->x, v[2]->x}),
             max_x = std::max({v[0]->x, v[1]->x, v[2]->x});
     int32_t min_y = std::min({v[0]->y, v[1]->y, v[2]->y}),
@@ -136,13 +138,30 @@ class TriangleRasterizer {
     // Everything below is relative to the centre of the first pixel of the box.
     const int64_t ox = int64_t(cols_.first) * kSubpixelScale + kHalfPixel;
     const int64_t oy = int64_t(rows_.first) * kSubpixelScale + kHalfPixel;
-    const double inv_area = 1.0 / double(area2);
-    double zc = 0, zx = 0, zy = 0;
     for (int i = 0; i < 3; ++i) {
       const ShadedVertex<V>& p = *v[(i + 1) % 3];
       const ShadedVertex<V>& q = *v[(i + 2) % 3];
       edge_[i] = EdgeFunction(p.x, p.y, q.x, q.y);  // the edge opposite vertex i
       edge_at_origin_[i] = edge_[i](ox, oy);
+    }
+    for (int i = 0; i < 3; ++i)
+      for (int lane = 0; lane < kRowAlignment; ++lane)
+        lane_step_[i][lane] = edge_[i].step_x * kSubpixelScale * lane;
+    for (int i = 0; i < 3; ++i) vertex_[i] = v[i];
+    area2_ = area2;
+    planes_ready_ = false;
+    return true;
+  }
+
+  // The depth and interpolation planes, set up only once a triangle is known to reach a pixel
+  // centre: most triangles of a dense mesh cover few pixels, many none, in most of their tiles.
+  OBSCURA_RASTER_INLINE void setup_planes() {
+    if (planes_ready_) return;
+    planes_ready_ = true;
+    const ShadedVertex<V>* const* v = vertex_;
+    const double inv_area = 1.0 / double(area2_);
+    double zc = 0, zx = 0, zy = 0;
+    for (int i = 0; i < 3; ++i) {
       double e0 = double(edge_at_origin_[i]) * inv_area;                // λ_i at the origin
       double ex = double(edge_[i].step_x * kSubpixelScale) * inv_area;  // per pixel
       double ey = double(edge_[i].step_y * kSubpixelScale) * inv_area;
@@ -151,9 +170,6 @@ class TriangleRasterizer {
       f0_[i] = float(e0 * w), fx_[i] = float(ex * w), fy_[i] = float(ey * w);
     }
     z0_ = float(zc), zx_ = float(zx), zy_ = float(zy);
-    for (int i = 0; i < 3; ++i)
-      for (int lane = 0; lane < kRowAlignment; ++lane)
-        lane_step_[i][lane] = edge_[i].step_x * kSubpixelScale * lane;
     auto v0 = to_floats(v[0]->out.varyings), v1 = to_floats(v[1]->out.varyings),
          v2 = to_floats(v[2]->out.varyings);
     for (int k = 0; k < kN; ++k) base_[k] = v0[k], d1_[k] = v1[k] - v0[k], d2_[k] = v2[k] - v0[k];
@@ -164,7 +180,6 @@ class TriangleRasterizer {
         wire_scale_[i] = float(1.0 / (g * kSubpixelScale));
       }
     }
-    return true;
   }
 
   OBSCURA_RASTER_INLINE V interpolate(float l1, float l2) const {
@@ -234,6 +249,7 @@ class TriangleRasterizer {
         float& bound = depth_bound_[by][bx];
         if constexpr (kHierarchicalZ) {
           if (bound != kNoBound) {
+            setup_planes();
             // Depth is monotone in x and y (see pixel_depth), so its minimum over the block is
             // the smallest of the corner values.
             float z_min = std::min({pixel_depth(x_lo, y_lo), pixel_depth(x_hi, y_lo),
@@ -271,7 +287,6 @@ class TriangleRasterizer {
                                            bool* all_written, float* z_max) {
     const int dy = row - rows_.first;
     const int64_t k0 = x0 - cols_.first;
-    const float z_row = z0_ + zy_ * float(dy);
     float* depth = target_.depth() + target_.sample_index(0, row);
     Rgb* color = target_.color() + target_.sample_index(0, row);
 
@@ -289,13 +304,24 @@ class TriangleRasterizer {
     } else {
       for (int i = 0; i < kBlock; ++i) covered[i] = true;
     }
+    int any = 0;
+    for (int i = 0; i < kBlock; ++i) {
+      const int x = x0 + i;
+      covered[i] = covered[i] & (x >= x_lo) & (x <= x_hi);
+      any |= covered[i];
+    }
+    if (!any) {
+      *all_written = false;
+      return;
+    }
+    setup_planes();
+    const float z_row = z0_ + zy_ * float(dy);
     bool lane[kBlock];
     float z[kBlock];
     int live = 0;
     for (int i = 0; i < kBlock; ++i) {
-      const int x = x0 + i;
       z[i] = clamp_unit(z_row + zx_ * float(k0 + i));
-      lane[i] = covered[i] & (x >= x_lo) & (x <= x_hi) & depth_passes<F>(z[i], depth[x]);
+      lane[i] = covered[i] & depth_passes<F>(z[i], depth[x0 + i]);
       live += lane[i];
     }
     if (live != x_hi - x_lo + 1) *all_written = false;
@@ -468,6 +494,11 @@ class TriangleRasterizer {
   RenderTarget& target_;
   const FragmentSettings& settings_;
   std::span<const Vector2i> offsets_;
+  int sample_extent_ = 0;  // largest |sample offset| in 1/256 pixel
+  // The triangle: vertices in setup order, twice its area, whether the planes are set up.
+  const ShadedVertex<V>* vertex_[3] = {};
+  int64_t area2_ = 0;
+  bool planes_ready_ = false;
   // Per-triangle setup.
   EdgeFunction edge_[3];
   int64_t edge_at_origin_[3];
