@@ -260,12 +260,16 @@ class TriangleRasterizer {
         const bool whole = !partial && x_lo == block_x && x_hi == block_x + kBlock - 1 &&
                            y_lo == block_y && y_hi == block_y + kBlock - 1;
         bool all_written = whole;
-        float z_max = 0.f;
         for (int row = y_lo; row <= y_hi; ++row)
-          shade_segment(row, block_x, x_lo, x_hi, partial, &all_written, &z_max);
-        // Every pixel of the block now holds a depth written here: the bound tightens. Otherwise
-        // it stays valid, as LESS/LEQUAL with depth writes only ever lower stored depths.
-        if (kHierarchicalZ && all_written && settings_.depth_write) bound = z_max;
+          shade_segment(row, block_x, x_lo, x_hi, partial, &all_written);
+        // Every pixel of the block now holds a depth written here: the bound tightens to the
+        // largest, at a corner. The margin (far above one rounding) keeps it an upper bound even
+        // if a compiler contracted the pixel loop's arithmetic differently. Otherwise the bound
+        // stays valid, as LESS/LEQUAL with depth writes only ever lower stored depths.
+        if (kHierarchicalZ && all_written && settings_.depth_write)
+          bound = std::max({pixel_depth(x_lo, y_lo), pixel_depth(x_hi, y_lo),
+                            pixel_depth(x_lo, y_hi), pixel_depth(x_hi, y_hi)}) *
+                  (1.f + 0x1p-20f);
       }
     }
   }
@@ -281,10 +285,9 @@ class TriangleRasterizer {
   // each lane masked by coverage (only when `test_edges`) and the depth test. Every loop below
   // has a fixed trip count, so the compiler vectorizes them; lanes outside the span recompute but
   // never store (the row stride is padded to whole blocks, so a block never reaches into
-  // another tile). `*all_written` is cleared unless every lane in the span passed; `*z_max`
-  // collects the largest depth written.
+  // another tile). `*all_written` is cleared unless every lane in the span passed.
   OBSCURA_RASTER_INLINE void shade_segment(int row, int x0, int x_lo, int x_hi, bool test_edges,
-                                           bool* all_written, float* z_max) {
+                                           bool* all_written) {
     const int dy = row - rows_.first;
     const int64_t k0 = x0 - cols_.first;
     float* depth = target_.depth() + target_.sample_index(0, row);
@@ -326,12 +329,7 @@ class TriangleRasterizer {
     }
     if (live != x_hi - x_lo + 1) *all_written = false;
     if (live == 0) return;  // early depth rejection of the whole run
-    if constexpr (kHierarchicalZ) {
-      float m = *z_max;
-      for (int i = 0; i < kBlock; ++i) m = std::max(m, lane[i] ? z[i] : 0.f);
-      *z_max = m;
-    }
-    if (live <= 2) {  // small triangles: shade only the live pixels
+    if (live <= 2) {        // small triangles: shade only the live pixels
       for (int i = 0; i < kBlock; ++i) {
         if (!lane[i]) continue;
         float l1, l2, w;
