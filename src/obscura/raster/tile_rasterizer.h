@@ -411,13 +411,26 @@ class TriangleRasterizer {
     return from_floats<V>(VaryingArray<V>{planes[K][i]...});
   }
 
-  // Interleaves planes into kBlock RGB pixels.
+  // Interleaves planes into kBlock RGB pixels, four at a time with explicit shuffles (written as
+  // a loop over lanes, the interleave compiles to one scalar insert per float).
   OBSCURA_RASTER_INLINE static void store_colors(Rgb* dst, const float* r, const float* g,
                                                  const float* b) {
-    float interleaved[3 * kBlock];
-    for (int i = 0; i < kBlock; ++i)
-      interleaved[3 * i] = r[i], interleaved[3 * i + 1] = g[i], interleaved[3 * i + 2] = b[i];
-    std::memcpy(static_cast<void*>(dst), interleaved, sizeof interleaved);
+    using F4 = float __attribute__((vector_size(16)));
+    using I4 = int __attribute__((vector_size(16)));
+    static_assert(kBlock % 4 == 0 && sizeof(Rgb) == 3 * sizeof(float));
+    for (int i = 0; i < kBlock; i += 4) {
+      F4 vr, vg, vb;
+      std::memcpy(&vr, r + i, sizeof vr);
+      std::memcpy(&vg, g + i, sizeof vg);
+      std::memcpy(&vb, b + i, sizeof vb);
+      const F4 rg01 = __builtin_shuffle(vr, vg, I4{0, 4, 1, 5});        // r0 g0 r1 g1
+      const F4 gb12 = __builtin_shuffle(vg, vb, I4{1, 5, 2, 6});        // g1 b1 g2 b2
+      const F4 rg33 = __builtin_shuffle(vr, vg, I4{3, 7, 3, 7});        // r3 g3 r3 g3
+      const F4 out[3] = {__builtin_shuffle(rg01, vb, I4{0, 1, 4, 2}),   // r0 g0 b0 r1
+                         __builtin_shuffle(gb12, vr, I4{0, 1, 6, 2}),   // g1 b1 r2 g2
+                         __builtin_shuffle(rg33, vb, I4{6, 0, 1, 7})};  // b2 r3 g3 b3
+      std::memcpy(static_cast<void*>(dst + i), out, sizeof out);
+    }
   }
 
   // MSAA: coverage and depth per sample, the fragment shader once per pixel at its centre.
