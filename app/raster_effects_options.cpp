@@ -43,7 +43,7 @@ void validate(const RasterEffectsOptions& o, const std::string& renderer) {
 
 bool wants_raster_effects(const RasterEffectsOptions& o, const Scene& scene) {
   bool lens = scene.camera.lens.depth_of_field && o.dof != "off";
-  return lens || raster::needs_accumulation(scene.camera, scene_moves(scene));
+  return lens || raster::has_motion_blur(scene.camera, scene_moves(scene));
 }
 
 RasterRender render_raster_effects(const Scene& scene, const RasterOptions& raster,
@@ -54,7 +54,8 @@ RasterRender render_raster_effects(const Scene& scene, const RasterOptions& rast
   const Camera& camera = scene.camera;
   const bool post = effects.dof == "post" && camera.lens.depth_of_field;
   const bool lens_blur = effects.dof == "accumulate" && camera.lens.depth_of_field;
-  const bool many = lens_blur || raster::needs_accumulation(camera, scene_moves(scene));
+  // --raster-dof post/off render one frame unless something moves (then it is motion blur).
+  const bool many = lens_blur || raster::has_motion_blur(camera, scene_moves(scene));
 
   raster::SceneRasterizer rasterizer(scene, raster_settings(raster, aovs || post));
   raster::AccumulationSettings settings{.samples = many ? effects.samples : 1,

@@ -209,6 +209,10 @@ TEST(Accumulation, NeedsAccumulationForDepthOfFieldOrMotionWhileTheShutterIsOpen
   EXPECT_FALSE(needs_accumulation(camera, true));
   camera.lens.depth_of_field = true;
   EXPECT_TRUE(needs_accumulation(camera, false));
+  EXPECT_FALSE(has_motion_blur(camera, false));  // the lens alone blurs nothing in time
+  camera.shutter = {.open_s = 0, .close_s = 0.01};
+  EXPECT_FALSE(has_motion_blur(camera, false));
+  EXPECT_TRUE(has_motion_blur(camera, true));
 }
 
 TEST(Accumulation, RejectsCamerasWithoutMatrices) {

@@ -68,9 +68,13 @@ void accumulate(const Camera& camera, const AccumulationSettings& settings,
   }
 }
 
-bool needs_accumulation(const Camera& camera, bool scene_moves) {
+bool has_motion_blur(const Camera& camera, bool scene_moves) {
   bool moves = scene_moves || camera.world_from_camera.is_animated();
-  return camera.lens.depth_of_field || (camera.shutter.duration_s() > 0 && moves);
+  return camera.shutter.duration_s() > 0 && moves;
+}
+
+bool needs_accumulation(const Camera& camera, bool scene_moves) {
+  return camera.lens.depth_of_field || has_motion_blur(camera, scene_moves);
 }
 
 }  // namespace obscura::raster

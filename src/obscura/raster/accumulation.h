@@ -71,8 +71,11 @@ void accumulate(const Camera& camera, const AccumulationSettings& settings,
                 const FrameRenderer& render_frame, Film& film,
                 const ProgressCallback& progress = {}, RenderTarget* middle_frame = nullptr);
 
+// Whether anything blurs with motion: the shutter is open for a while and the camera or something
+// in the caller's scene moves.
+bool has_motion_blur(const Camera& camera, bool scene_moves);
 // Whether the camera or the caller's scene needs more than one frame: the lens has depth of
-// field, or the shutter is open for a while and something moves in it.
+// field, or there is motion blur.
 bool needs_accumulation(const Camera& camera, bool scene_moves);
 
 }  // namespace obscura::raster
