@@ -2,7 +2,6 @@
 
 #include <chrono>
 
-#include "obscura/io/image_io.h"
 #include "obscura/raster/accumulation.h"
 #include "obscura/raster/depth_of_field_post.h"
 #include "obscura/raster/scene_rasterizer.h"
@@ -84,16 +83,7 @@ RasterRender render_raster_effects(const Scene& scene, const RasterOptions& rast
   RasterRender result;
   result.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   result.warnings = rasterizer.warnings();
-  if (aovs) {
-    std::string stem = output.substr(0, output.find_last_of('.'));
-    auto write = [&](const char* name, const Image& image) {
-      result.aov_paths.push_back(stem + "." + name + ".exr");
-      write_image(result.aov_paths.back(), image);
-    };
-    write("normal", raster::normal_image(middle));
-    write("depth", raster::distance_image(middle, camera));
-    write("id", raster::id_image(middle));
-  }
+  if (aovs) result.aov_paths = write_raster_aovs(middle, camera, output);
   return result;
 }
 

@@ -66,17 +66,22 @@ RasterRender render_raster(const Scene& scene, const RasterOptions& options, boo
   RasterRender result;
   result.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   result.warnings = rasterizer.warnings();
-  if (aovs) {
-    std::string stem = output.substr(0, output.find_last_of('.'));
-    auto write = [&](const char* name, const Image& image) {
-      result.aov_paths.push_back(stem + "." + name + ".exr");
-      write_image(result.aov_paths.back(), image);
-    };
-    write("normal", raster::normal_image(target));
-    write("depth", raster::distance_image(target, scene.camera));
-    write("id", raster::id_image(target));
-  }
+  if (aovs) result.aov_paths = write_raster_aovs(target, scene.camera, output);
   return result;
+}
+
+std::vector<std::string> write_raster_aovs(const raster::RenderTarget& target, const Camera& camera,
+                                           const std::string& output) {
+  std::string stem = output.substr(0, output.find_last_of('.'));
+  std::vector<std::string> paths;
+  auto write = [&](const char* name, const Image& image) {
+    paths.push_back(stem + "." + name + ".exr");
+    write_image(paths.back(), image);
+  };
+  write("normal", raster::normal_image(target));
+  write("depth", raster::distance_image(target, camera));
+  write("id", raster::id_image(target));
+  return paths;
 }
 
 }  // namespace obscura::app

@@ -39,5 +39,8 @@ struct RasterRender {
 // writes <output>.depth.exr, .normal.exr and .id.exr beside `output`, as the tracer does.
 RasterRender render_raster(const Scene& scene, const RasterOptions& options, bool aovs, Film& film,
                            const std::string& output);
+// Writes the target's normal, depth and id images beside `output`; returns their paths.
+std::vector<std::string> write_raster_aovs(const raster::RenderTarget& target, const Camera& camera,
+                                           const std::string& output);
 
 }  // namespace obscura::app
