@@ -1,7 +1,10 @@
 // Runs the built CLI in a shell and captures what it printed, for tests of the command line.
 #pragma once
 
+#include <filesystem>
 #include <string>
+
+#include <gtest/gtest.h>
 
 namespace obscura::test {
 
@@ -15,5 +18,16 @@ CommandResult run_cli(const std::string& arguments);
 
 // A fresh, empty directory under the system temp directory, removed at process exit.
 std::string make_temp_dir(const std::string& prefix);
+
+// A test with its own empty temp directory, removed after the test.
+class TempDirTest : public ::testing::Test {
+ protected:
+  void SetUp() override { dir_ = make_temp_dir("obscura-test"); }
+  void TearDown() override { std::filesystem::remove_all(dir_); }
+  std::string path(const std::string& name) const {
+    return (std::filesystem::path(dir_) / name).string();
+  }
+  std::string dir_;
+};
 
 }  // namespace obscura::test

@@ -112,17 +112,13 @@ INSTANTIATE_TEST_SUITE_P(
       return "case" + std::to_string(info.index);
     });
 
-class RenderCameraCli : public ::testing::Test {
+class RenderCameraCli : public test::TempDirTest {
  protected:
-  void SetUp() override { dir_ = test::make_temp_dir("obscura-camera-cli"); }
-  void TearDown() override { fs::remove_all(dir_); }
-  std::string path(const std::string& name) const { return (fs::path(dir_) / name).string(); }
   Image render(const std::string& arguments, const std::string& name) {
     auto result = test::run_cli("render -q --spp 2 --seed 3 " + arguments + " -o " + path(name));
     EXPECT_EQ(result.exit_code, 0) << result.output;
     return read_image(path(name));
   }
-  std::string dir_;
 };
 
 TEST_F(RenderCameraCli, CropRendersExactlyThatRegionOfTheFullImage) {

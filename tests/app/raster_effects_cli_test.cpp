@@ -12,11 +12,8 @@ namespace {
 
 namespace fs = std::filesystem;
 
-class RasterEffectsCli : public ::testing::Test {
+class RasterEffectsCli : public test::TempDirTest {
  protected:
-  void SetUp() override { dir_ = test::make_temp_dir("obscura-raster-effects-cli"); }
-  void TearDown() override { fs::remove_all(dir_); }
-  std::string path(const std::string& name) const { return (fs::path(dir_) / name).string(); }
   // Renders at 64 × 36 unless the arguments give a size.
   Image render(const std::string& arguments, const std::string& name) {
     std::string size =
@@ -25,7 +22,6 @@ class RasterEffectsCli : public ::testing::Test {
     EXPECT_EQ(r.exit_code, 0) << arguments << ": " << r.output;
     return read_image(path(name));
   }
-  std::string dir_;
 };
 
 // Mean absolute difference per channel value.

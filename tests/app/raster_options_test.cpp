@@ -11,13 +11,7 @@ namespace {
 
 namespace fs = std::filesystem;
 
-class RasterCli : public ::testing::Test {
- protected:
-  void SetUp() override { dir_ = test::make_temp_dir("obscura-raster-cli"); }
-  void TearDown() override { fs::remove_all(dir_); }
-  std::string path(const std::string& name) const { return (fs::path(dir_) / name).string(); }
-  std::string dir_;
-};
+class RasterCli : public test::TempDirTest {};
 
 TEST_F(RasterCli, RendersTheCornellBoxWithWallsWhereTheyBelong) {
   auto r = test::run_cli("render --renderer raster --width 64 --height 64 -o " + path("box.png"));

@@ -13,13 +13,9 @@ namespace {
 
 namespace fs = std::filesystem;
 
-class RenderCli : public ::testing::Test {
+class RenderCli : public test::TempDirTest {
  protected:
-  void SetUp() override { dir_ = test::make_temp_dir("obscura-cli"); }
-  void TearDown() override { fs::remove_all(dir_); }
-  std::string path(const std::string& name) const { return (fs::path(dir_) / name).string(); }
   bool directory_is_empty() const { return fs::is_empty(dir_); }
-  std::string dir_;
 };
 
 TEST_F(RenderCli, RendersTheCornellBoxWithWallsWhereTheyBelong) {
@@ -55,8 +51,8 @@ TEST_F(RenderCli, SameSeedGivesBitIdenticalImagesForAnyThreadCount) {
   ASSERT_EQ(two.exit_code, 0) << two.output;
   Image a = read_image(path("one.exr")), b = read_image(path("two.exr"));
   EXPECT_EQ(a.data, b.data);
-  auto other_seed = test::run_cli("render -q --width 48 --height 40 --spp 3 --seed 10 -o " +
-                                  path("three.exr"));
+  auto other_seed =
+      test::run_cli("render -q --width 48 --height 40 --spp 3 --seed 10 -o " + path("three.exr"));
   ASSERT_EQ(other_seed.exit_code, 0) << other_seed.output;
   EXPECT_NE(read_image(path("three.exr")).data, a.data);
 }
@@ -93,18 +89,19 @@ TEST_P(RenderCliErrors, ClearMessageNonZeroExitAndNoOutput) {
 
 INSTANTIATE_TEST_SUITE_P(
     Render, RenderCliErrors,
-    ::testing::Values(
-        BadCall{"render --bogus -o DIR/x.png", 2, "--bogus"},
-        BadCall{"render --width 0 -o DIR/x.png", 2, "--width must be a positive"},
-        BadCall{"render --height -3 -o DIR/x.png", 2, "--height must be a positive"},
-        BadCall{"render --spp -1 -o DIR/x.png", 2, "--spp must be a positive"},
-        BadCall{"render --spp many -o DIR/x.png", 2, "--spp"},
-        BadCall{"render -o DIR/no/such/dir/x.png", 1, "does not exist"},
-        BadCall{"render -o DIR", 1, "is a directory"},
-        BadCall{"render -o DIR/x.bmp", 1, "unsupported image extension '.bmp'"},
-        BadCall{"render no-such-scene -o DIR/x.png", 1, "no-such-scene"},
-        BadCall{"", 2, "subcommand"}),
-    [](const ::testing::TestParamInfo<BadCall>& info) { return "case" + std::to_string(info.index); });
+    ::testing::Values(BadCall{"render --bogus -o DIR/x.png", 2, "--bogus"},
+                      BadCall{"render --width 0 -o DIR/x.png", 2, "--width must be a positive"},
+                      BadCall{"render --height -3 -o DIR/x.png", 2, "--height must be a positive"},
+                      BadCall{"render --spp -1 -o DIR/x.png", 2, "--spp must be a positive"},
+                      BadCall{"render --spp many -o DIR/x.png", 2, "--spp"},
+                      BadCall{"render -o DIR/no/such/dir/x.png", 1, "does not exist"},
+                      BadCall{"render -o DIR", 1, "is a directory"},
+                      BadCall{"render -o DIR/x.bmp", 1, "unsupported image extension '.bmp'"},
+                      BadCall{"render no-such-scene -o DIR/x.png", 1, "no-such-scene"},
+                      BadCall{"", 2, "subcommand"}),
+    [](const ::testing::TestParamInfo<BadCall>& info) {
+      return "case" + std::to_string(info.index);
+    });
 
 TEST_F(RenderCli, UnwritableOutputIsReportedAndLeavesNothing) {
   // /proc takes no new files, even from root (who may write to any chmod-protected directory).
@@ -120,7 +117,8 @@ TEST_F(RenderCli, VersionHelpAndSceneList) {
   EXPECT_NE(version.output.find("obscura " OBSCURA_VERSION), std::string::npos) << version.output;
   auto help = test::run_cli("render --help");
   EXPECT_EQ(help.exit_code, 0);
-  for (const char* flag : {"--output", "--width", "--height", "--spp", "--threads", "--seed", "--quiet"})
+  for (const char* flag :
+       {"--output", "--width", "--height", "--spp", "--threads", "--seed", "--quiet"})
     EXPECT_NE(help.output.find(flag), std::string::npos) << flag;
   auto list = test::run_cli("render --scene-list");
   EXPECT_EQ(list.exit_code, 0);

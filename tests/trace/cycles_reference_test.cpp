@@ -19,8 +19,7 @@ namespace obscura {
 namespace {
 
 std::shared_ptr<EmbreeDevice> device() {
-  static auto d = std::make_shared<EmbreeDevice>();
-  return d;
+  return testing::embree_device();
 }
 
 double read_number(const std::string& path) {

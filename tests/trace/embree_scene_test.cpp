@@ -5,13 +5,13 @@
 #include <vector>
 
 #include "obscura/math/error.h"
+#include "trace_test_scenes.h"
 
 namespace obscura {
 namespace {
 
 std::shared_ptr<EmbreeDevice> device() {
-  static auto d = std::make_shared<EmbreeDevice>();
-  return d;
+  return testing::embree_device();
 }
 
 Ray ray_from(Point3f o, Vector3f d) {

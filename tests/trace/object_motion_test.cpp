@@ -10,13 +10,13 @@
 #include "obscura/math/error.h"
 #include "obscura/trace/path_tracer.h"
 #include "obscura/trace/render.h"
+#include "trace_test_scenes.h"
 
 namespace obscura {
 namespace {
 
 std::shared_ptr<EmbreeDevice> device() {
-  static auto d = std::make_shared<EmbreeDevice>();
-  return d;
+  return testing::embree_device();
 }
 
 constexpr int kWidth = 96, kHeight = 8;

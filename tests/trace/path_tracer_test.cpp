@@ -12,8 +12,7 @@ namespace obscura {
 namespace {
 
 std::shared_ptr<EmbreeDevice> device() {
-  static auto d = std::make_shared<EmbreeDevice>();
-  return d;
+  return testing::embree_device();
 }
 
 // A sphere of one material inside a uniform environment of radiance 1 (the "white furnace").

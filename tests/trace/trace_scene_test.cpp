@@ -15,8 +15,7 @@ namespace obscura {
 namespace {
 
 std::shared_ptr<EmbreeDevice> device() {
-  static auto d = std::make_shared<EmbreeDevice>();
-  return d;
+  return testing::embree_device();
 }
 
 Instance placed(uint32_t mesh, const Transform& world_from_object) {

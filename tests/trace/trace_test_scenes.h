@@ -4,6 +4,7 @@
 #include <cmath>
 #include <fstream>
 #include <map>
+#include <memory>
 #include <numbers>
 #include <sstream>
 #include <string>
@@ -11,8 +12,15 @@
 #include "obscura/camera/frames.h"
 #include "obscura/math/error.h"
 #include "obscura/scene/scene.h"
+#include "obscura/trace/embree_scene.h"
 
 namespace obscura::testing {
+
+// One Embree device for every test in the process (creating one costs milliseconds).
+inline std::shared_ptr<EmbreeDevice> embree_device() {
+  static auto device = std::make_shared<EmbreeDevice>();
+  return device;
+}
 
 // A UV sphere of `radius` at `centre`, wound counter-clockwise seen from outside.
 inline Mesh make_sphere(Point3f centre, float radius, uint32_t material, int rings = 48,

@@ -11,8 +11,7 @@ namespace obscura {
 namespace {
 
 std::shared_ptr<EmbreeDevice> device() {
-  static auto d = std::make_shared<EmbreeDevice>();
-  return d;
+  return testing::embree_device();
 }
 
 // The radiance through the centre of a 1-pixel, narrow camera.
