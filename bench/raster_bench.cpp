@@ -236,7 +236,7 @@ void run(benchmark::State& state, const std::string& name) {
   for (auto _ : state) {
     target.clear(clear);
     draw(target, draw_state, program, w.vertices, w.indices);
-    benchmark::DoNotOptimize(target.color());
+    benchmark::DoNotOptimize(target.color_group(0));
     benchmark::ClobberMemory();
   }
   // Fragment counts, outside the timing: additive blending of 1 per fragment.

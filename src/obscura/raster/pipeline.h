@@ -53,13 +53,13 @@ struct TileJob {
 };
 
 // One tile: its triangles from every chunk, in submission order.
-template <Program P, DepthFunc F>
+template <Program P, DepthFunc F, class Isa>
 OBSCURA_RASTER_INLINE void rasterize_tile(const TileJob<P>& job, int tile) {
   PixelRect rect{(tile % job.grid.columns) * kTileSize, (tile / job.grid.columns) * kTileSize, 0,
                  0};
   rect.x1 = std::min(rect.x0 + kTileSize, job.target.width());
   rect.y1 = std::min(rect.y0 + kTileSize, job.target.height());
-  TriangleRasterizer<P, F> rasterizer(job.program, job.target, job.settings);
+  TriangleRasterizer<P, F, Isa> rasterizer(job.program, job.target, job.settings);
   for (const auto& chunk : job.chunks) {
     for (uint32_t k = chunk.bin_start[tile]; k < chunk.bin_start[tile + 1]; ++k) {
       const BinnedTriangle& t = chunk.triangles[chunk.bin_items[k]];
@@ -72,18 +72,19 @@ OBSCURA_RASTER_INLINE void rasterize_tile(const TileJob<P>& job, int tile) {
 // flatten: the program's own helper functions inline too, whatever the compiler's heuristics.
 template <Program P, DepthFunc F>
 [[gnu::flatten]] void rasterize_tile_baseline(const TileJob<P>& job, int tile) {
-  rasterize_tile<P, F>(job, tile);
+  rasterize_tile<P, F, simd::Baseline>(job, tile);
 }
 
 #if defined(__x86_64__) && defined(__GNUC__)
-// The same code compiled for AVX2 (8-wide float vectors), used when the CPU has it. Only this
-// function carries the target, so nothing compiled for AVX2 can run on a CPU without it.
+// The same code compiled for AVX2 and FMA (8-wide float vectors), used when the CPU has both. Only
+// this function carries the target, so nothing compiled for AVX2 can run on a CPU without it.
 template <Program P, DepthFunc F>
-[[gnu::target("avx2"), gnu::flatten]] void rasterize_tile_avx2(const TileJob<P>& job, int tile) {
-  rasterize_tile<P, F>(job, tile);
+[[gnu::target("avx2,fma"), gnu::flatten]] void rasterize_tile_avx2(const TileJob<P>& job,
+                                                                   int tile) {
+  rasterize_tile<P, F, simd::Avx2>(job, tile);
 }
 inline bool cpu_has_avx2() {
-  static const bool has = __builtin_cpu_supports("avx2");
+  static const bool has = __builtin_cpu_supports("avx2") && __builtin_cpu_supports("fma");
   return has;
 }
 #endif

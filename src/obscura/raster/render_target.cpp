@@ -21,7 +21,7 @@ RenderTarget::RenderTarget(int width, int height, int samples, bool aovs)
   if (!is_valid_sample_count(samples))
     throw Error("render target", "MSAA samples must be 1, 4 or 8; got " + std::to_string(samples));
   size_t n = size_t(stride_) * height * samples;
-  color_.resize(n);
+  color_.resize(3 * n);  // n is a multiple of kRowAlignment, the row stride being one
   depth_.resize(n, 1.f);
   if (aovs) {
     object_id_.resize(n, kNoObject);
@@ -32,7 +32,11 @@ RenderTarget::RenderTarget(int width, int height, int samples, bool aovs)
 }
 
 void RenderTarget::clear(Rgb color, float depth) {
-  std::fill(color_.begin(), color_.end(), color);
+  for (size_t g = 0; g < color_.size(); g += 3 * kRowAlignment) {
+    std::fill_n(color_.begin() + g, kRowAlignment, color.r);
+    std::fill_n(color_.begin() + g + kRowAlignment, kRowAlignment, color.g);
+    std::fill_n(color_.begin() + g + 2 * kRowAlignment, kRowAlignment, color.b);
+  }
   std::fill(depth_.begin(), depth_.end(), depth);
   if (aovs_) {
     std::fill(object_id_.begin(), object_id_.end(), kNoObject);
@@ -48,7 +52,7 @@ Image RenderTarget::resolve_color() const {
   for (int y = 0; y < height_; ++y)
     for (int x = 0; x < width_; ++x) {
       Rgb sum;
-      for (int s = 0; s < samples_; ++s) sum += color_[sample_index(x, y, s)];
+      for (int s = 0; s < samples_; ++s) sum += color(sample_index(x, y, s));
       image.set_rgb(x, y, sum * inv);
     }
   return image;

@@ -6,7 +6,9 @@
 // along the view axis for a perspective projection) and a shading normal.
 // Storage is sample-major inside each pixel: element (x, y, s) is at (y·stride + x)·samples + s,
 // where the row stride is the width rounded up to a multiple of kRowAlignment pixels, so that the
-// pixel loop can always work on whole aligned blocks of a row.
+// pixel loop can always work on whole aligned blocks of a row. Colour is planar in groups of
+// kRowAlignment elements (eight reds, eight greens, eight blues), so that the pixel loop stores
+// one vector per channel.
 #pragma once
 
 #include <cstdint>
@@ -39,7 +41,7 @@ class RenderTarget {
   size_t sample_index(int x, int y, int s = 0) const {
     return (size_t(y) * stride_ + x) * samples_ + s;
   }
-  Rgb color_at(int x, int y, int s = 0) const { return color_[sample_index(x, y, s)]; }
+  Rgb color_at(int x, int y, int s = 0) const { return color(sample_index(x, y, s)); }
   float depth_at(int x, int y, int s = 0) const { return depth_[sample_index(x, y, s)]; }
   // Need aovs.
   uint32_t object_id_at(int x, int y, int s = 0) const { return object_id_[sample_index(x, y, s)]; }
@@ -48,13 +50,27 @@ class RenderTarget {
   }
   float view_depth_at(int x, int y, int s = 0) const { return view_depth_[sample_index(x, y, s)]; }
 
-  Rgb* color() { return color_.data(); }
+  // Colour of element `i` (a sample_index).
+  Rgb color(size_t i) const {
+    const float* g = color_group(i);
+    const size_t lane = i % kRowAlignment;
+    return {g[lane], g[kRowAlignment + lane], g[2 * kRowAlignment + lane]};
+  }
+  void set_color(size_t i, Rgb c) {
+    float* g = color_group(i);
+    const size_t lane = i % kRowAlignment;
+    g[lane] = c.r, g[kRowAlignment + lane] = c.g, g[2 * kRowAlignment + lane] = c.b;
+  }
+  // The group of kRowAlignment elements holding element `i`: its reds, then greens, then blues.
+  float* color_group(size_t i) { return color_.data() + i / kRowAlignment * 3 * kRowAlignment; }
+  const float* color_group(size_t i) const {
+    return color_.data() + i / kRowAlignment * 3 * kRowAlignment;
+  }
   float* depth() { return depth_.data(); }
   uint32_t* object_ids() { return object_id_.data(); }
   uint32_t* primitive_ids() { return primitive_id_.data(); }
   float* view_depth() { return view_depth_.data(); }
   Vector3f* normals() { return normal_.data(); }
-  const Rgb* color() const { return color_.data(); }
   const float* depth() const { return depth_.data(); }
   const uint32_t* object_ids() const { return object_id_.data(); }
   const uint32_t* primitive_ids() const { return primitive_id_.data(); }
@@ -73,7 +89,7 @@ class RenderTarget {
  private:
   int width_, height_, samples_, stride_;
   bool aovs_;
-  std::vector<Rgb> color_;
+  std::vector<float> color_;  // planar groups, see above
   std::vector<float> depth_;
   std::vector<uint32_t> object_id_, primitive_id_;
   std::vector<float> view_depth_;

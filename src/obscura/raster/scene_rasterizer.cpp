@@ -259,7 +259,7 @@ void SceneRasterizer::draw_background(const Matrix4& world_from_clip, RenderTarg
       int tx = std::min(int(u * environment_map_.width), environment_map_.width - 1);
       int ty = std::min(int(theta / kPi * environment_map_.height), environment_map_.height - 1);
       Rgb c = environment_map_.rgb(tx, ty) * environment_scale_ * exposure;
-      for (int s = 0; s < target.samples(); ++s) target.color()[target.sample_index(x, y, s)] = c;
+      for (int s = 0; s < target.samples(); ++s) target.set_color(target.sample_index(x, y, s), c);
     }
   });
 }

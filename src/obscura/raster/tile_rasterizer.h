@@ -9,8 +9,10 @@
 #pragma once
 
 #include <algorithm>
+#include <bit>
 #include <concepts>
 #include <cstdint>
+#include <cstdlib>
 #include <cstring>
 #include <iterator>
 #include <limits>
@@ -23,6 +25,7 @@
 #include "obscura/raster/msaa.h"
 #include "obscura/raster/render_target.h"
 #include "obscura/raster/shaded_vertex.h"
+#include "obscura/raster/simd.h"
 #include "obscura/raster/varyings.h"
 
 namespace obscura::raster {
@@ -77,15 +80,23 @@ OBSCURA_RASTER_INLINE float clamp_unit(float x) {
   return x > 0.f ? (x < 1.f ? x : 1.f) : 0.f;
 }
 
-template <Program P, DepthFunc F>
+template <Program P, DepthFunc F, class Isa = simd::Baseline>
 class TriangleRasterizer {
  public:
   using V = typename P::Varyings;
   static constexpr int kN = kVaryingFloats<V>;
   static constexpr int kBlockLog2 = 3;
   static constexpr int kBlock = 1 << kBlockLog2;  // 8×8-pixel blocks; rows go 8 lanes at a time
-  static_assert(kBlock == kRowAlignment && kTileSize % kBlock == 0);
+  static_assert(kBlock == kRowAlignment && kTileSize % kBlock == 0);  // colour groups = rows
   static constexpr bool kHierarchicalZ = F == DepthFunc::kLess || F == DepthFunc::kLessEqual;
+
+  // The depth and interpolation planes, relative to the centre of the box's first pixel: window
+  // depth z0 + zx·dx + zy·dy; f_i = λ_i/w_i likewise; varyings base + d1·l1 + d2·l2.
+  struct Planes {
+    float z0, zx, zy;
+    float f0[3], fx[3], fy[3];
+    float base[kN], d1[kN], d2[kN];
+  };
 
   TriangleRasterizer(const P& program, RenderTarget& target, const FragmentSettings& settings)
       : program_(program),
@@ -144,9 +155,16 @@ class TriangleRasterizer {
       edge_[i] = EdgeFunction(p.x, p.y, q.x, q.y);  // the edge opposite vertex i
       edge_at_origin_[i] = edge_[i](ox, oy);
     }
-    for (int i = 0; i < 3; ++i)
-      for (int lane = 0; lane < kRowAlignment; ++lane)
-        lane_step_[i][lane] = edge_[i].step_x * kSubpixelScale * lane;
+    // Edges spanning under 2^18 subpixels (1,024 pixels) per axis vary by under 2^30 over a
+    // block, so where a block straddles one its values fit 32-bit lanes.
+    narrow_ = true;
+    for (int i = 0; i < 3; ++i) {
+      sx_[i] = edge_[i].step_x * kSubpixelScale, sy_[i] = edge_[i].step_y * kSubpixelScale;
+      e0_[i] = edge_at_origin_[i] + edge_[i].bias;
+      narrow_ &= std::abs(edge_[i].step_x) < (1 << 18) && std::abs(edge_[i].step_y) < (1 << 18);
+    }
+    if (narrow_)
+      for (int i = 0; i < 3; ++i) lane_sx_[i] = simd::splat(int32_t(sx_[i])) * simd::kLaneIndex;
     for (int i = 0; i < 3; ++i) vertex_[i] = v[i];
     area2_ = area2;
     planes_ready_ = false;
@@ -167,12 +185,13 @@ class TriangleRasterizer {
       double ey = double(edge_[i].step_y * kSubpixelScale) * inv_area;
       zc += v[i]->z * e0, zx += v[i]->z * ex, zy += v[i]->z * ey;
       double w = v[i]->inv_w;
-      f0_[i] = float(e0 * w), fx_[i] = float(ex * w), fy_[i] = float(ey * w);
+      p_.f0[i] = float(e0 * w), p_.fx[i] = float(ex * w), p_.fy[i] = float(ey * w);
     }
-    z0_ = float(zc), zx_ = float(zx), zy_ = float(zy);
+    p_.z0 = float(zc), p_.zx = float(zx), p_.zy = float(zy);
     auto v0 = to_floats(v[0]->out.varyings), v1 = to_floats(v[1]->out.varyings),
          v2 = to_floats(v[2]->out.varyings);
-    for (int k = 0; k < kN; ++k) base_[k] = v0[k], d1_[k] = v1[k] - v0[k], d2_[k] = v2[k] - v0[k];
+    for (int k = 0; k < kN; ++k)
+      p_.base[k] = v0[k], p_.d1[k] = v1[k] - v0[k], p_.d2[k] = v2[k] - v0[k];
     if (settings_.wireframe.enabled) {
       for (int i = 0; i < 3; ++i) {
         // Distance in pixels = E / |∇E|, with E in subpixel² and ∇E in subpixels.
@@ -184,14 +203,15 @@ class TriangleRasterizer {
 
   OBSCURA_RASTER_INLINE V interpolate(float l1, float l2) const {
     VaryingArray<V> r;
-    for (int k = 0; k < kN; ++k) r[k] = base_[k] + d1_[k] * l1 + d2_[k] * l2;
+    for (int k = 0; k < kN; ++k) r[k] = p_.base[k] + p_.d1[k] * l1 + p_.d2[k] * l2;
     return from_floats<V>(r);
   }
 
   // Perspective-correct weights of vertices 1 and 2 at (dx, dy) pixels from the box origin.
   void weights(float dx, float dy, float* l1, float* l2, float* w) const {
-    float f0 = f0_[0] + fx_[0] * dx + fy_[0] * dy, f1 = f0_[1] + fx_[1] * dx + fy_[1] * dy,
-          f2 = f0_[2] + fx_[2] * dx + fy_[2] * dy;
+    float f0 = p_.f0[0] + p_.fx[0] * dx + p_.fy[0] * dy,
+          f1 = p_.f0[1] + p_.fx[1] * dx + p_.fy[1] * dy,
+          f2 = p_.f0[2] + p_.fx[2] * dx + p_.fy[2] * dy;
     *w = 1.f / (f0 + f1 + f2);
     *l1 = f1 * *w, *l2 = f2 * *w;
   }
@@ -206,27 +226,39 @@ class TriangleRasterizer {
       weights(dx, dy + 1, &b1, &b2, &w);
       VaryingArray<V> d_dx, d_dy;
       for (int k = 0; k < kN; ++k) {
-        d_dx[k] = d1_[k] * (a1 - l1) + d2_[k] * (a2 - l2);
-        d_dy[k] = d1_[k] * (b1 - l1) + d2_[k] * (b2 - l2);
+        d_dx[k] = p_.d1[k] * (a1 - l1) + p_.d2[k] * (a2 - l2);
+        d_dy[k] = p_.d1[k] * (b1 - l1) + p_.d2[k] * (b2 - l2);
       }
       return program_.fragment(interpolate(l1, l2), from_floats<V>(d_dx), from_floats<V>(d_dy),
                                info);
     }
   }
 
-  // Single sample per pixel. The box is walked in 8×8 blocks aligned to the tile. Each edge
-  // function is affine, so its extremes over a block lie at the block's corners: a block outside
-  // one edge is skipped, and edges a block lies wholly inside are not tested per pixel. With a
-  // LESS/LEQUAL depth test, a block whose nearest depth cannot pass against the block's depth
-  // bound (hierarchical z) is skipped before any per-pixel work.
+  // Single sample per pixel. The box is walked in 8×8 blocks aligned to the tile, a block row
+  // being one eight-lane vector. Each edge function is affine, so its extremes over a block lie
+  // at the block's corners: a block outside one edge is skipped, and edges a block lies wholly
+  // inside are not tested per pixel. With a LESS/LEQUAL depth test, a block whose nearest depth
+  // cannot pass against the block's depth bound (hierarchical z) is skipped before any per-pixel
+  // work.
   OBSCURA_RASTER_INLINE void rasterize_blocks(PixelRect tile) {
-    int64_t step_x[3], step_y[3];  // per pixel
-    for (int i = 0; i < 3; ++i)
-      step_x[i] = edge_[i].step_x * kSubpixelScale, step_y[i] = edge_[i].step_y * kSubpixelScale;
+    // A local copy of the planes, made once they are set up: stores into the target cannot
+    // alias a local, so the compiler keeps its values in registers across the pixel loop.
+    Planes local{};
+    bool have_planes = false;
+    auto planes = [&]() -> const Planes& {
+      if (!have_planes) setup_planes(), local = p_, have_planes = true;
+      return local;
+    };
     const int bx0 = (cols_.first - tile.x0) >> kBlockLog2,
               bx1 = (cols_.last - tile.x0) >> kBlockLog2;
     const int by0 = (rows_.first - tile.y0) >> kBlockLog2,
               by1 = (rows_.last - tile.y0) >> kBlockLog2;
+    int64_t corner_lo[3], corner_hi[3];  // extremes over a block of E − E(block's first pixel)
+    for (int i = 0; i < 3; ++i) {
+      const int64_t ex = sx_[i] * (kBlock - 1), ey = sy_[i] * (kBlock - 1);
+      corner_lo[i] = std::min<int64_t>(ex, 0) + std::min<int64_t>(ey, 0);
+      corner_hi[i] = std::max<int64_t>(ex, 0) + std::max<int64_t>(ey, 0);
+    }
     for (int by = by0; by <= by1; ++by) {
       const int block_y = tile.y0 + (by << kBlockLog2);
       const int y_lo = std::max(rows_.first, block_y),
@@ -235,202 +267,175 @@ class TriangleRasterizer {
         const int block_x = tile.x0 + (bx << kBlockLog2);
         const int x_lo = std::max(cols_.first, block_x);
         const int x_hi = std::min(cols_.last, block_x + kBlock - 1);
-        bool partial = false, outside = false;
+        int64_t e[3];  // edge values (bias included) at the block's first pixel centre
+        uint32_t partial = 0;
+        bool outside = false;
         for (int i = 0; i < 3; ++i) {
-          int64_t e = edge_at_origin_[i] + edge_[i].bias + step_x[i] * (x_lo - cols_.first) +
-                      step_y[i] * (y_lo - rows_.first);
-          int64_t ex = step_x[i] * (x_hi - x_lo), ey = step_y[i] * (y_hi - y_lo);
-          int64_t lo = e + std::min<int64_t>(ex, 0) + std::min<int64_t>(ey, 0);
-          int64_t hi = e + std::max<int64_t>(ex, 0) + std::max<int64_t>(ey, 0);
-          outside |= hi < 0;
-          partial |= lo < 0;
+          e[i] = e0_[i] + sx_[i] * (block_x - cols_.first) + sy_[i] * (block_y - rows_.first);
+          outside |= e[i] + corner_hi[i] < 0;
+          partial |= uint32_t(e[i] + corner_lo[i] < 0) << i;
         }
         if (outside) continue;
         float& bound = depth_bound_[by][bx];
         if constexpr (kHierarchicalZ) {
           if (bound != kNoBound) {
-            setup_planes();
+            const Planes& p = planes();
             // Depth is monotone in x and y (see pixel_depth), so its minimum over the block is
             // the smallest of the corner values.
-            float z_min = std::min({pixel_depth(x_lo, y_lo), pixel_depth(x_hi, y_lo),
-                                    pixel_depth(x_lo, y_hi), pixel_depth(x_hi, y_hi)});
+            float z_min = std::min({pixel_depth(p, x_lo, y_lo), pixel_depth(p, x_hi, y_lo),
+                                    pixel_depth(p, x_lo, y_hi), pixel_depth(p, x_hi, y_hi)});
             if (F == DepthFunc::kLess ? z_min >= bound : z_min > bound) continue;
           }
         }
-        const bool whole = !partial && x_lo == block_x && x_hi == block_x + kBlock - 1 &&
+        bool all_written = partial == 0 && x_lo == block_x && x_hi == block_x + kBlock - 1 &&
                            y_lo == block_y && y_hi == block_y + kBlock - 1;
-        bool all_written = whole;
-        for (int row = y_lo; row <= y_hi; ++row)
-          shade_segment(row, block_x, x_lo, x_hi, partial, &all_written);
+        const simd::Mask8 span =
+            (simd::kLaneIndex >= x_lo - block_x) & (simd::kLaneIndex <= x_hi - block_x);
+        for (int row = y_lo; row <= y_hi; ++row) {
+          simd::Mask8 m = span;
+          if (partial) m &= coverage(e, partial, row - block_y);
+          if (!simd::bits<Isa>(m)) {
+            all_written = false;
+            continue;
+          }
+          shade_row(planes(), row, block_x, m, &all_written);
+        }
         // Every pixel of the block now holds a depth written here: the bound tightens to the
         // largest, at a corner. The margin (far above one rounding) keeps it an upper bound even
         // if a compiler contracted the pixel loop's arithmetic differently. Otherwise the bound
         // stays valid, as LESS/LEQUAL with depth writes only ever lower stored depths.
-        if (kHierarchicalZ && all_written && settings_.depth_write)
-          bound = std::max({pixel_depth(x_lo, y_lo), pixel_depth(x_hi, y_lo),
-                            pixel_depth(x_lo, y_hi), pixel_depth(x_hi, y_hi)}) *
+        if (kHierarchicalZ && all_written && settings_.depth_write) {
+          const Planes& p = planes();
+          bound = std::max({pixel_depth(p, x_lo, y_lo), pixel_depth(p, x_hi, y_lo),
+                            pixel_depth(p, x_lo, y_hi), pixel_depth(p, x_hi, y_hi)}) *
                   (1.f + 0x1p-20f);
+        }
       }
     }
   }
 
   // The window depth the pixel loop computes at pixel (x, y) of the box: z_row + zx·k, each step
   // rounded, is monotone in k and in the row, so extremes over a rectangle lie at its corners.
-  OBSCURA_RASTER_INLINE float pixel_depth(int x, int y) const {
-    const float z_row = z0_ + zy_ * float(y - rows_.first);
-    return clamp_unit(z_row + zx_ * float(x - cols_.first));
+  OBSCURA_RASTER_INLINE float pixel_depth(const Planes& p, int x, int y) const {
+    const float z_row = p.z0 + p.zy * float(y - rows_.first);
+    return clamp_unit(z_row + p.zx * float(x - cols_.first));
   }
 
-  // One row of one block: pixels [x_lo, x_hi] of the aligned run of kBlock pixels starting at x0,
-  // each lane masked by coverage (only when `test_edges`) and the depth test. Every loop below
-  // has a fixed trip count, so the compiler vectorizes them; lanes outside the span recompute but
-  // never store (the row stride is padded to whole blocks, so a block never reaches into
-  // another tile). `*all_written` is cleared unless every lane in the span passed.
-  OBSCURA_RASTER_INLINE void shade_segment(int row, int x0, int x_lo, int x_hi, bool test_edges,
-                                           bool* all_written) {
-    const int dy = row - rows_.first;
-    const int64_t k0 = x0 - cols_.first;
-    float* depth = target_.depth() + target_.sample_index(0, row);
-    Rgb* color = target_.color() + target_.sample_index(0, row);
+  // Coverage of row j of a block by the edges flagged in `partial`; e: the edge values at the
+  // block's first pixel. Near edges (narrow_) the values fit 32 bits; long edges take 64.
+  OBSCURA_RASTER_INLINE simd::Mask8 coverage(const int64_t e[3], uint32_t partial, int j) const {
+    simd::Mask8 m = simd::splat(int32_t(-1));
+    for (int i = 0; i < 3; ++i) {
+      if (!(partial & (1u << i))) continue;
+      const int64_t e_row = e[i] + sy_[i] * j;
+      if (narrow_) {
+        m &= simd::splat(int32_t(e_row)) + lane_sx_[i] >= 0;
+      } else {
+        simd::Mask8 c;
+        for (int lane = 0; lane < kBlock; ++lane) c[lane] = -int32_t(e_row + sx_[i] * lane >= 0);
+        m &= c;
+      }
+    }
+    return m;
+  }
 
-    // Bitwise rather than short-circuit logic throughout: no branch in the loops, so they
-    // vectorize (the depth load is always in bounds, the row being padded).
-    bool covered[kBlock];
-    if (test_edges) {
-      int64_t e_block[3];
-      for (int i = 0; i < 3; ++i)
-        e_block[i] = edge_at_origin_[i] + edge_[i].bias + edge_[i].step_y * kSubpixelScale * dy +
-                     edge_[i].step_x * kSubpixelScale * k0;
-      for (int i = 0; i < kBlock; ++i)
-        covered[i] = (e_block[0] + lane_step_[0][i] >= 0) & (e_block[1] + lane_step_[1][i] >= 0) &
-                     (e_block[2] + lane_step_[2][i] >= 0);
-    } else {
-      for (int i = 0; i < kBlock; ++i) covered[i] = true;
-    }
-    int any = 0;
-    for (int i = 0; i < kBlock; ++i) {
-      const int x = x0 + i;
-      covered[i] = covered[i] & (x >= x_lo) & (x <= x_hi);
-      any |= covered[i];
-    }
-    if (!any) {
-      *all_written = false;
-      return;
-    }
-    setup_planes();
-    const float z_row = z0_ + zy_ * float(dy);
-    bool lane[kBlock];
-    float z[kBlock];
-    int live = 0;
-    for (int i = 0; i < kBlock; ++i) {
-      z[i] = clamp_unit(z_row + zx_ * float(k0 + i));
-      lane[i] = covered[i] & depth_passes<F>(z[i], depth[x0 + i]);
-      live += lane[i];
-    }
-    if (live != x_hi - x_lo + 1) *all_written = false;
-    if (live == 0) return;  // early depth rejection of the whole run
-    if (live <= 2) {        // small triangles: shade only the live pixels
-      for (int i = 0; i < kBlock; ++i) {
-        if (!lane[i]) continue;
+  // One row of one block: the pixels of lanes set in `m` (covered, inside the box; at least one),
+  // then the depth test, shading and output. `*all_written` is cleared unless every lane passed.
+  OBSCURA_RASTER_INLINE void shade_row(const Planes& p, int row, int x0, simd::Mask8 m,
+                                       bool* all_written) {
+    using simd::Float8;
+    const int dy = row - rows_.first;
+    const int k0 = x0 - cols_.first;
+    const size_t index = target_.sample_index(x0, row);
+    float* depth = target_.depth() + index;
+    const Float8 k = simd::splat(float(k0)) + simd::kLaneOffset;  // exact: small integers
+    const Float8 z = simd::clamp_unit(simd::splat(p.z0 + p.zy * float(dy)) + p.zx * k);
+    const Float8 stored = simd::load(depth);
+    m &= depth_mask(z, stored);
+    const uint32_t live = simd::bits<Isa>(m);
+    if (live != 0xFF) *all_written = false;
+    if (live == 0) return;           // early depth rejection of the whole run
+    if (std::popcount(live) <= 2) {  // small triangles: shade only the live pixels
+      for (uint32_t rest = live; rest; rest &= rest - 1) {
+        const int i = std::countr_zero(rest);
         float l1, l2, w;
         weights(float(k0 + i), float(dy), &l1, &l2, &w);
-        write(target_.sample_index(x0 + i, row), z[i],
-              shade(l1, l2, float(k0 + i), float(dy), x0 + i, row), l1, l2, w, x0 + i, row);
+        write(index + size_t(i), z[i], shade(l1, l2, float(k0 + i), float(dy), x0 + i, row), l1, l2,
+              w, x0 + i, row);
       }
       return;
     }
-
-    const float f_row[3] = {f0_[0] + fy_[0] * float(dy), f0_[1] + fy_[1] * float(dy),
-                            f0_[2] + fy_[2] * float(dy)};
-    float l1[kBlock], l2[kBlock], w[kBlock], r[kBlock], g[kBlock], b[kBlock];
-    for (int i = 0; i < kBlock; ++i) {
-      const float dx = float(k0 + i);
-      float f0 = f_row[0] + fx_[0] * dx, f1 = f_row[1] + fx_[1] * dx, f2 = f_row[2] + fx_[2] * dx;
-      w[i] = 1.f / (f0 + f1 + f2);
-      l1[i] = f1 * w[i], l2[i] = f2 * w[i];
-    }
-    shade_block(l1, l2, float(k0), float(dy), x0, row, r, g, b);
+    const Float8 f0 = simd::splat(p.f0[0] + p.fy[0] * float(dy)) + p.fx[0] * k;
+    const Float8 f1 = simd::splat(p.f0[1] + p.fy[1] * float(dy)) + p.fx[1] * k;
+    const Float8 f2 = simd::splat(p.f0[2] + p.fy[2] * float(dy)) + p.fx[2] * k;
+    const Float8 w = 1.f / (f0 + f1 + f2);
+    const Float8 l1 = f1 * w, l2 = f2 * w;
+    Float8 r, g, b;
+    shade_block(p, l1, l2, float(k0), float(dy), x0, row, &r, &g, &b);
     if (settings_.wireframe.enabled)
       for (int i = 0; i < kBlock; ++i) {
         Rgb c = apply_wireframe({r[i], g[i], b[i]}, x0 + i, row);
         r[i] = c.r, g[i] = c.g, b[i] = c.b;
       }
-    if (live == kBlock && settings_.blend == BlendMode::kReplace) {
-      // The common case inside large triangles: plain stores, which vectorize.
-      if (settings_.depth_write)
-        for (int i = 0; i < kBlock; ++i) depth[x0 + i] = z[i];
-      store_colors(color + x0, r, g, b);
-      if (target_.has_aovs())
-        for (int i = 0; i < kBlock; ++i)
-          write_aovs(target_.sample_index(x0 + i, row), l1[i], l2[i], w[i]);
-      return;
-    }
-    if (settings_.depth_write)
-      for (int i = 0; i < kBlock; ++i) depth[x0 + i] = lane[i] ? z[i] : depth[x0 + i];
+    if (settings_.depth_write) simd::store(depth, live == 0xFF ? z : simd::select(m, z, stored));
+    float* color = target_.color_group(index);
     if (settings_.blend == BlendMode::kAdd) {
-      for (int i = 0; i < kBlock; ++i)
-        if (lane[i]) color[x0 + i] += Rgb(r[i], g[i], b[i]);
-    } else {
-      for (int i = 0; i < kBlock; ++i)
-        if (lane[i]) color[x0 + i] = Rgb(r[i], g[i], b[i]);
+      r += simd::load(color), g += simd::load(color + kBlock), b += simd::load(color + 2 * kBlock);
     }
+    if (live != 0xFF) {
+      r = simd::select(m, r, simd::load(color));
+      g = simd::select(m, g, simd::load(color + kBlock));
+      b = simd::select(m, b, simd::load(color + 2 * kBlock));
+    }
+    simd::store(color, r), simd::store(color + kBlock, g), simd::store(color + 2 * kBlock, b);
     if (target_.has_aovs())
       for (int i = 0; i < kBlock; ++i)
-        if (lane[i]) write_aovs(target_.sample_index(x0 + i, row), l1[i], l2[i], w[i]);
+        if (live & (1u << i)) write_aovs(index + size_t(i), l1[i], l2[i], w[i]);
+  }
+
+  OBSCURA_RASTER_INLINE static simd::Mask8 depth_mask(simd::Float8 z, simd::Float8 stored) {
+    if constexpr (F == DepthFunc::kNever) return simd::Mask8{};
+    if constexpr (F == DepthFunc::kLess) return z < stored;
+    if constexpr (F == DepthFunc::kEqual) return z == stored;
+    if constexpr (F == DepthFunc::kLessEqual) return z <= stored;
+    if constexpr (F == DepthFunc::kGreater) return z > stored;
+    if constexpr (F == DepthFunc::kNotEqual) return z != stored;
+    if constexpr (F == DepthFunc::kGreaterEqual) return z >= stored;
+    if constexpr (F == DepthFunc::kAlways) return simd::splat(int32_t(-1));
   }
 
   // The fragment shader on a run of kBlock pixels (weights l1, l2 per lane), colours out as
   // planes. Varyings are interpolated plane by plane (one vector per varying), then each lane's
   // struct is gathered from the planes: with no loop left over the varyings, the loop over lanes
   // is what the vectorizer sees, and it turns the whole shader into vector code.
-  OBSCURA_RASTER_INLINE void shade_block(const float* l1, const float* l2, float k0, float dy,
-                                         int x0, int row, float* r, float* g, float* b) const {
+  OBSCURA_RASTER_INLINE void shade_block(const Planes& p, simd::Float8 l1, simd::Float8 l2,
+                                         float k0, float dy, int x0, int row, simd::Float8* r,
+                                         simd::Float8* g, simd::Float8* b) const {
+    float rs[kBlock], gs[kBlock], bs[kBlock];
     if constexpr (PlainFragmentShader<P>) {
       float planes[kN][kBlock];
-      for (int k = 0; k < kN; ++k)
-        for (int i = 0; i < kBlock; ++i) planes[k][i] = base_[k] + d1_[k] * l1[i] + d2_[k] * l2[i];
+      for (int k = 0; k < kN; ++k) simd::store(planes[k], p.base[k] + p.d1[k] * l1 + p.d2[k] * l2);
 #if defined(__GNUC__) && !defined(__clang__)
 #pragma GCC ivdep
 #endif
       for (int i = 0; i < kBlock; ++i) {
         Rgb c = program_.fragment(gather_lane(planes, i, std::make_index_sequence<kN>()),
                                   FragmentInfo{x0 + i, row, primitive_, front_facing_});
-        r[i] = c.r, g[i] = c.g, b[i] = c.b;
+        rs[i] = c.r, gs[i] = c.g, bs[i] = c.b;
       }
     } else {
       for (int i = 0; i < kBlock; ++i) {
         Rgb c = shade(l1[i], l2[i], k0 + float(i), dy, x0 + i, row);
-        r[i] = c.r, g[i] = c.g, b[i] = c.b;
+        rs[i] = c.r, gs[i] = c.g, bs[i] = c.b;
       }
     }
+    *r = simd::load(rs), *g = simd::load(gs), *b = simd::load(bs);
   }
 
   template <size_t... K>
   OBSCURA_RASTER_INLINE static V gather_lane(const float (&planes)[kN][kBlock], int i,
                                              std::index_sequence<K...>) {
     return from_floats<V>(VaryingArray<V>{planes[K][i]...});
-  }
-
-  // Interleaves planes into kBlock RGB pixels, four at a time with explicit shuffles (written as
-  // a loop over lanes, the interleave compiles to one scalar insert per float).
-  OBSCURA_RASTER_INLINE static void store_colors(Rgb* dst, const float* r, const float* g,
-                                                 const float* b) {
-    using F4 = float __attribute__((vector_size(16)));
-    using I4 = int __attribute__((vector_size(16)));
-    static_assert(kBlock % 4 == 0 && sizeof(Rgb) == 3 * sizeof(float));
-    for (int i = 0; i < kBlock; i += 4) {
-      F4 vr, vg, vb;
-      std::memcpy(&vr, r + i, sizeof vr);
-      std::memcpy(&vg, g + i, sizeof vg);
-      std::memcpy(&vb, b + i, sizeof vb);
-      const F4 rg01 = __builtin_shuffle(vr, vg, I4{0, 4, 1, 5});        // r0 g0 r1 g1
-      const F4 gb12 = __builtin_shuffle(vg, vb, I4{1, 5, 2, 6});        // g1 b1 g2 b2
-      const F4 rg33 = __builtin_shuffle(vr, vg, I4{3, 7, 3, 7});        // r3 g3 r3 g3
-      const F4 out[3] = {__builtin_shuffle(rg01, vb, I4{0, 1, 4, 2}),   // r0 g0 b0 r1
-                         __builtin_shuffle(gb12, vr, I4{0, 1, 6, 2}),   // g1 b1 r2 g2
-                         __builtin_shuffle(rg33, vb, I4{6, 0, 1, 7})};  // b2 r3 g3 b3
-      std::memcpy(static_cast<void*>(dst + i), out, sizeof out);
-    }
   }
 
   // MSAA: coverage and depth per sample, the fragment shader once per pixel at its centre.
@@ -458,8 +463,8 @@ class TriangleRasterizer {
       float l1 = 0, l2 = 0, w = 0;
       for (int s = 0; s < samples; ++s) {
         if (x < first[s] || x > last[s]) continue;
-        float z = std::clamp(z0_ + zx_ * (dx + offsets_[s].x / float(kSubpixelScale)) +
-                                 zy_ * (float(dy) + offsets_[s].y / float(kSubpixelScale)),
+        float z = std::clamp(p_.z0 + p_.zx * (dx + offsets_[s].x / float(kSubpixelScale)) +
+                                 p_.zy * (float(dy) + offsets_[s].y / float(kSubpixelScale)),
                              0.f, 1.f);
         size_t index = target_.sample_index(x, row, s);
         if (!depth_passes<F>(z, target_.depth()[index])) continue;
@@ -476,8 +481,8 @@ class TriangleRasterizer {
   void write(size_t index, float z, Rgb color, float l1, float l2, float w, int x, int row) {
     if (settings_.depth_write) target_.depth()[index] = z;
     if (settings_.wireframe.enabled) color = apply_wireframe(color, x, row);
-    Rgb& dst = target_.color()[index];
-    dst = settings_.blend == BlendMode::kAdd ? dst + color : color;
+    target_.set_color(index,
+                      settings_.blend == BlendMode::kAdd ? target_.color(index) + color : color);
     if (target_.has_aovs()) write_aovs(index, l1, l2, w);
   }
 
@@ -514,11 +519,13 @@ class TriangleRasterizer {
   EdgeFunction edge_[3];
   int64_t edge_at_origin_[3];
   PixelRange cols_{}, rows_{};
-  float z0_, zx_, zy_;
-  float f0_[3], fx_[3], fy_[3];
-  float base_[kN], d1_[kN], d2_[kN];
+  Planes p_;
   float wire_scale_[3] = {};
-  int64_t lane_step_[3][kRowAlignment];  // edge step × lane index, to add without multiplying
+  // The single-sample block walk's view of the edges: values at the box origin with the bias
+  // folded in, steps per pixel, and for narrow edges (see setup) the step times each lane.
+  int64_t e0_[3], sx_[3], sy_[3];
+  bool narrow_ = false;
+  simd::Int8 lane_sx_[3];
   uint32_t primitive_ = 0;
   bool front_facing_ = true;
   // Hierarchical z, per 8×8 block of the tile: no stored depth in the block exceeds its bound.
