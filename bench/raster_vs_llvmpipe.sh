@@ -4,6 +4,11 @@
 #
 #   bench/raster_vs_llvmpipe.sh [BUILD_DIR] [REPEATS] [THREADS]
 #
+# llvmpipe's LP_NUM_THREADS=N runs N rasterizer threads besides the application thread, which does
+# its vertex work and binning, so with N = 1 it keeps up to ~1.8 cores busy. With 1 in THREADS the
+# script therefore also runs LP_NUM_THREADS=0 (everything on one thread: the single-core peer of
+# our 1 thread). The summary (summary.md) has the median over repeats of each side's median frame.
+#
 # BUILD_DIR holds bench/raster_bench (default: build). The llvmpipe harness is
 # ../shared/tools/peers/llvmpipe beside the repository (override with PEER=DIR); it needs
 # libegl1-mesa-dev and libgl1-mesa-dev, which only this comparison uses. Raw output goes to
@@ -30,12 +35,49 @@ export LIBGL_ALWAYS_SOFTWARE=1 GALLIUM_DRIVER=llvmpipe
 
 for rep in $(seq 1 "$REPEATS"); do
   for t in $THREADS; do
-    echo "## repeat $rep threads $t: llvmpipe" | tee -a "$OUT/raw.txt"
-    LP_NUM_THREADS="$t" "$OUT/lpbench" bench --frames "$FRAMES" --warmup 1 | tee -a "$OUT/raw.txt"
+    peers="$t"
+    [ "$t" = 1 ] && peers="1 0"
+    for lp in $peers; do
+      echo "## repeat $rep threads $t: llvmpipe LP_NUM_THREADS=$lp" | tee -a "$OUT/raw.txt"
+      LP_NUM_THREADS="$lp" "$OUT/lpbench" bench --frames "$FRAMES" --warmup 1 | tee -a "$OUT/raw.txt"
+    done
     echo "## repeat $rep threads $t: obscura" | tee -a "$OUT/raw.txt"
     "$BUILD/bench/raster_bench" --benchmark_filter="/$t/" --benchmark_min_time=1 \
       --benchmark_min_warmup_time=0.2 | tee -a "$OUT/raw.txt"
   done
 done
 echo "loadavg at end: $(cut -d' ' -f1-3 /proc/loadavg)" | tee -a "$OUT/env.txt"
+
+# Medians over repeats; ratio = llvmpipe time / obscura time (our throughput relative to its).
+awk '
+  function median(list,   n, v, i, j, t) {
+    n = split(list, v, " ")
+    for (i = 1; i <= n; ++i) for (j = i + 1; j <= n; ++j) if (v[j] + 0 < v[i] + 0) { t = v[i]; v[i] = v[j]; v[j] = t }
+    return n % 2 ? v[(n + 1) / 2] : (v[n / 2] + v[n / 2 + 1]) / 2
+  }
+  /^workload=/ {
+    for (i = 1; i <= NF; ++i) { split($i, kv, "="); f[kv[1]] = kv[2] }
+    key = f["workload"] " " f["shader"]
+    lp[key " " f["threads"]] = lp[key " " f["threads"]] " " f["ms_median"]
+    cpu[key " " f["threads"]] = cpu[key " " f["threads"]] " " f["proc_cpu_util"]
+    next
+  }
+  /real_time / && $1 ~ /^[a-z0-9_]+\/[a-z]+\/[0-9]+\// {
+    split($1, p, "/"); key = p[1] " " p[2] " " p[3]
+    ms = $2; if ($3 == "us") ms /= 1000; if ($3 == "s") ms *= 1000
+    ob[key] = ob[key] " " ms
+    if (!(key in seen)) { seen[key] = 1; order[++n] = key }
+  }
+  END {
+    print "| workload | shader | threads | obscura ms | llvmpipe ms (LP_NUM_THREADS = threads; its cores) | ratio | llvmpipe ms, one core (LP_NUM_THREADS=0) | ratio |"
+    print "|---|---|---|---|---|---|---|---|"
+    for (i = 1; i <= n; ++i) {
+      k = order[i]; split(k, p, " "); o = median(ob[k])
+      line = sprintf("| %s | %s | %s | %.1f | %.1f (%.2f) | %.2f× |", p[1], p[2], p[3], o, median(lp[k]), median(cpu[k]), median(lp[k]) / o)
+      k0 = p[1] " " p[2] " 0"
+      if (p[3] == 1 && (k0 in lp)) line = line sprintf(" %.1f | %.2f× |", median(lp[k0]), median(lp[k0]) / o)
+      else line = line " | |"
+      print line
+    }
+  }' "$OUT/raw.txt" | tee "$OUT/summary.md"
 echo "results in: $OUT"

@@ -60,8 +60,14 @@ OBSCURA_RASTER_INLINE void rasterize_tile(const TileJob<P>& job, int tile) {
   rect.x1 = std::min(rect.x0 + kTileSize, job.target.width());
   rect.y1 = std::min(rect.y0 + kTileSize, job.target.height());
   TriangleRasterizer<P, F, Isa> rasterizer(job.program, job.target, job.settings);
+  constexpr uint32_t kLookahead = 4;  // triangles: the vertices of dense meshes come from L3
   for (const auto& chunk : job.chunks) {
-    for (uint32_t k = chunk.bin_start[tile]; k < chunk.bin_start[tile + 1]; ++k) {
+    const uint32_t end = chunk.bin_start[tile + 1];
+    for (uint32_t k = chunk.bin_start[tile]; k < end; ++k) {
+      if (k + kLookahead < end) {
+        const BinnedTriangle& ahead = chunk.triangles[chunk.bin_items[k + kLookahead]];
+        for (uint32_t ref : ahead.vertex) __builtin_prefetch(&chunk.vertex(ref, job.shared));
+      }
       const BinnedTriangle& t = chunk.triangles[chunk.bin_items[k]];
       rasterizer.draw(chunk.vertex(t.vertex[0], job.shared), chunk.vertex(t.vertex[1], job.shared),
                       chunk.vertex(t.vertex[2], job.shared), t.primitive, rect);

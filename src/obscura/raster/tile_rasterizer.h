@@ -164,7 +164,10 @@ class TriangleRasterizer {
       narrow_ &= std::abs(edge_[i].step_x) < (1 << 18) && std::abs(edge_[i].step_y) < (1 << 18);
     }
     if (narrow_)
-      for (int i = 0; i < 3; ++i) lane_sx_[i] = simd::splat(int32_t(sx_[i])) * simd::kLaneIndex;
+      for (int i = 0; i < 3; ++i) {
+        lane_sx_[i] = simd::splat(int32_t(sx_[i])) * simd::kLaneIndex;
+        row_sy_[i] = simd::splat(int32_t(sy_[i]));
+      }
     for (int i = 0; i < 3; ++i) vertex_[i] = v[i];
     area2_ = area2;
     planes_ready_ = false;
@@ -291,14 +294,30 @@ class TriangleRasterizer {
                            y_lo == block_y && y_hi == block_y + kBlock - 1;
         const simd::Mask8 span =
             (simd::kLaneIndex >= x_lo - block_x) & (simd::kLaneIndex <= x_hi - block_x);
-        for (int row = y_lo; row <= y_hi; ++row) {
-          simd::Mask8 m = span;
-          if (partial) m &= coverage(e, partial, row - block_y);
-          if (!simd::bits<Isa>(m)) {
-            all_written = false;
-            continue;
+        if (narrow_) {
+          // All three edges as 32-bit lanes, stepped row by row, without branches. An edge the
+          // block lies inside may be far larger than 32 bits: clamped to 2^30, it stays positive
+          // over the block (it varies by under 2^30 there, see setup).
+          simd::Int8 ev[3];
+          for (int i = 0; i < 3; ++i)
+            ev[i] = simd::splat(int32_t(
+                        std::min<int64_t>(e[i] + sy_[i] * (y_lo - block_y), int64_t(1) << 30))) +
+                    lane_sx_[i];
+          for (int row = y_lo; row <= y_hi; ++row) {
+            const simd::Mask8 m = span & ((ev[0] | ev[1] | ev[2]) >= 0);
+            for (int i = 0; i < 3; ++i) ev[i] += row_sy_[i];
+            const uint32_t live = simd::bits<Isa>(m);
+            all_written &= live == 0xFF;
+            if (live) shade_row(planes(), row, block_x, m, &all_written);
           }
-          shade_row(planes(), row, block_x, m, &all_written);
+        } else {
+          for (int row = y_lo; row <= y_hi; ++row) {
+            simd::Mask8 m = span;
+            if (partial) m &= coverage(e, partial, row - block_y);
+            const uint32_t live = simd::bits<Isa>(m);
+            all_written &= live == 0xFF;
+            if (live) shade_row(planes(), row, block_x, m, &all_written);
+          }
         }
         // Every pixel of the block now holds a depth written here: the bound tightens to the
         // largest, at a corner. The margin (far above one rounding) keeps it an upper bound even
@@ -321,20 +340,16 @@ class TriangleRasterizer {
     return clamp_unit(z_row + p.zx * float(x - cols_.first));
   }
 
-  // Coverage of row j of a block by the edges flagged in `partial`; e: the edge values at the
-  // block's first pixel. Near edges (narrow_) the values fit 32 bits; long edges take 64.
+  // Coverage of row j of a block by the edges flagged in `partial` (a triangle with long edges);
+  // e: the edge values at the block's first pixel.
   OBSCURA_RASTER_INLINE simd::Mask8 coverage(const int64_t e[3], uint32_t partial, int j) const {
     simd::Mask8 m = simd::splat(int32_t(-1));
     for (int i = 0; i < 3; ++i) {
       if (!(partial & (1u << i))) continue;
       const int64_t e_row = e[i] + sy_[i] * j;
-      if (narrow_) {
-        m &= simd::splat(int32_t(e_row)) + lane_sx_[i] >= 0;
-      } else {
-        simd::Mask8 c;
-        for (int lane = 0; lane < kBlock; ++lane) c[lane] = -int32_t(e_row + sx_[i] * lane >= 0);
-        m &= c;
-      }
+      simd::Mask8 c;
+      for (int lane = 0; lane < kBlock; ++lane) c[lane] = -int32_t(e_row + sx_[i] * lane >= 0);
+      m &= c;
     }
     return m;
   }
@@ -353,9 +368,10 @@ class TriangleRasterizer {
     const Float8 stored = simd::load(depth);
     m &= depth_mask(z, stored);
     const uint32_t live = simd::bits<Isa>(m);
-    if (live != 0xFF) *all_written = false;
-    if (live == 0) return;           // early depth rejection of the whole run
-    if (std::popcount(live) <= 2) {  // small triangles: shade only the live pixels
+    *all_written &= live == 0xFF;
+    if (live == 0) return;  // early depth rejection of the whole run
+    // Shaders that need derivatives run per pixel: for small triangles only the live ones.
+    if (DerivativeFragmentShader<P> && std::popcount(live) <= 2) {
       for (uint32_t rest = live; rest; rest &= rest - 1) {
         const int i = std::countr_zero(rest);
         float l1, l2, w;
@@ -525,7 +541,7 @@ class TriangleRasterizer {
   // folded in, steps per pixel, and for narrow edges (see setup) the step times each lane.
   int64_t e0_[3], sx_[3], sy_[3];
   bool narrow_ = false;
-  simd::Int8 lane_sx_[3];
+  simd::Int8 lane_sx_[3], row_sy_[3];
   uint32_t primitive_ = 0;
   bool front_facing_ = true;
   // Hierarchical z, per 8×8 block of the tile: no stored depth in the block exceeds its bound.
