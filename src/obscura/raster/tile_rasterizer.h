@@ -122,17 +122,19 @@ class TriangleRasterizer {
  private:
   OBSCURA_RASTER_INLINE bool setup(const ShadedVertex<V>& a, const ShadedVertex<V>& b,
                                    const ShadedVertex<V>& c, uint32_t primitive, PixelRect tile) {
-    const ShadedVertex<V>* v[3] = {&a, &b, &c};
+    const ShadedVertex<V>* u[3] = {&a, &b, &c};
     int64_t area2 = twice_signed_area(a.x, a.y, b.x, b.y, c.x, c.y);
     if (area2 == 0) return false;
     front_facing_ = is_front_facing(area2, settings_.front_face);
-    if (area2 < 0) std::swap(v[1], v[2]), area2 = -area2;
+    if (area2 < 0) std::swap(u[1], u[2]), area2 = -area2;
     // Start at the topmost-leftmost vertex: the same triangle given in any vertex order then
     // gets bit-identical planes (equal depths compare equal).
-    int first = 0;
-    for (int i = 1; i < 3; ++i)
-      if (std::pair(v[i]->y, v[i]->x) < std::pair(v[first]->y, v[first]->x)) first = i;
-    std::rotate(v, v + first, v + 3);
+    auto above = [](const ShadedVertex<V>* p, const ShadedVertex<V>* q) {
+      return p->y < q->y || (p->y == q->y && p->x < q->x);
+    };
+    const int first = above(u[1], u[0]) ? (above(u[2], u[1]) ? 2 : 1) : (above(u[2], u[0]) ? 2 : 0);
+    const ShadedVertex<V>* v[3] = {u[first], u[first == 2 ? 0 : first + 1],
+                                   u[first == 0 ? 2 : first - 1]};
     primitive_ = primitive;
 
     const int extent = sample_extent_;
