@@ -10,6 +10,7 @@
 // argument, so shaders inline into the pixel loop: no virtual call per pixel or vertex.
 #pragma once
 
+#include <atomic>
 #include <cstdint>
 #include <memory>
 #include <span>
@@ -89,17 +90,29 @@ template <Program P, DepthFunc F>
                                                                    int tile) {
   rasterize_tile<P, F, simd::Avx2>(job, tile);
 }
-inline bool cpu_has_avx2() {
-  static const bool has = __builtin_cpu_supports("avx2") && __builtin_cpu_supports("fma");
-  return has;
-}
 #endif
+
+}  // namespace detail
+
+// Whether draws run the tile loop's AVX2 + FMA copy: on where the CPU has both. Tests switch it
+// off to run the baseline copy on any machine.
+inline std::atomic<bool>& use_avx2() {
+#if defined(__x86_64__) && defined(__GNUC__)
+  static std::atomic<bool> on = __builtin_cpu_supports("avx2") && __builtin_cpu_supports("fma");
+#else
+  static std::atomic<bool> on = false;
+#endif
+  return on;
+}
+
+namespace detail {
 
 template <Program P, DepthFunc F>
 void rasterize_tiles(const TileJob<P>& job) {
+  [[maybe_unused]] const bool avx2 = use_avx2().load(std::memory_order_relaxed);
   tbb::parallel_for(0, job.grid.count(), [&](int tile) {
 #if defined(__x86_64__) && defined(__GNUC__)
-    if (cpu_has_avx2()) return rasterize_tile_avx2<P, F>(job, tile);
+    if (avx2) return rasterize_tile_avx2<P, F>(job, tile);
 #endif
     rasterize_tile_baseline<P, F>(job, tile);
   });
