@@ -132,7 +132,8 @@ std::vector<MeshVertex> sphere_grid(int rings, int segments, std::vector<uint32_
   return v;
 }
 
-TEST(Pipeline, IdenticalOutputForAnyThreadCount) {
+// The grid of spheres under one light, Blinn-Phong per pixel, drawn into `target`.
+void draw_sphere_grid(RenderTarget& target) {
   std::vector<uint32_t> indices;
   std::vector<MeshVertex> vertices = sphere_grid(40, 60, &indices);
   LightSet lights;
@@ -143,11 +144,15 @@ TEST(Pipeline, IdenticalOutputForAnyThreadCount) {
       Matrix4::from_rows({{{1, 0, 0, 0}, {0, 1, 0, 0}, {0, 0, 1, -8}, {0, 0, 0, 1}}});
   program.scene = {Matrix4f(clip_from_world), Point3f(0, 0, 8), &lights};
   program.material.specular = Rgb(0.5f);
+  draw(target, DrawState{}, program, vertices, indices);
+}
+
+TEST(Pipeline, IdenticalOutputForAnyThreadCount) {
   auto render = [&](int threads) {
     tbb::global_control limit(tbb::global_control::max_allowed_parallelism, threads);
     RenderTarget target(300, 200, 1, true);
     target.clear();
-    draw(target, DrawState{}, program, vertices, indices);
+    draw_sphere_grid(target);
     return target.resolve_color().data;
   };
   std::vector<float> one = render(1), many = render(4);
@@ -164,22 +169,12 @@ TEST(Pipeline, IdenticalOutputForAnyThreadCount) {
 // machine does not pick would otherwise go untested. Coverage and depth order are exact in both,
 // so the ids agree everywhere; colours differ only by roundings (fused multiply-adds).
 TEST(Pipeline, BaselineAndAvx2CopiesAgree) {
-  std::vector<uint32_t> indices;
-  std::vector<MeshVertex> vertices = sphere_grid(40, 60, &indices);
-  LightSet lights;
-  lights.directional.push_back({normalize(Vector3f(0.4f, 0.6f, 0.7f)), Rgb(1.f)});
-  PhongProgram<SpecularModel::kBlinnPhong> program;
-  Matrix4 clip_from_world =
-      Matrix4::from_rows({{{1.2, 0, 0, 0}, {0, 1.6, 0, 0}, {0, 0, -1.02, -2.02}, {0, 0, -1, 0}}}) *
-      Matrix4::from_rows({{{1, 0, 0, 0}, {0, 1, 0, 0}, {0, 0, 1, -8}, {0, 0, 0, 1}}});
-  program.scene = {Matrix4f(clip_from_world), Point3f(0, 0, 8), &lights};
-  program.material.specular = Rgb(0.5f);
   const bool machine_default = use_avx2().load();
   auto render = [&](bool avx2) {
     use_avx2() = avx2 && machine_default;
     RenderTarget target(301, 203, 1, true);  // odd sizes: partial blocks at the right and bottom
     target.clear(Rgb(0.1f, 0.2f, 0.3f));
-    draw(target, DrawState{}, program, vertices, indices);
+    draw_sphere_grid(target);
     use_avx2() = machine_default;
     return target;
   };
