@@ -59,6 +59,8 @@ awk '
     for (i = 1; i <= NF; ++i) { split($i, kv, "="); f[kv[1]] = kv[2] }
     key = f["workload"] " " f["shader"]
     lp[key " " f["threads"]] = lp[key " " f["threads"]] " " f["ms_median"]
+    tris[f["workload"]] = f["tris"]; covered[f["workload"]] = f["frags_covered"]
+    passed[f["workload"]] = f["frags_passed"]
     cpu[key " " f["threads"]] = cpu[key " " f["threads"]] " " f["proc_cpu_util"]
     next
   }
@@ -69,14 +71,17 @@ awk '
     if (!(key in seen)) { seen[key] = 1; order[++n] = key }
   }
   END {
-    print "| workload | shader | threads | obscura ms | llvmpipe ms (LP_NUM_THREADS = threads; its cores) | ratio | llvmpipe ms, one core (LP_NUM_THREADS=0) | ratio |"
-    print "|---|---|---|---|---|---|---|---|"
+    print "| workload | shader | threads | obscura ms | llvmpipe ms (LP_NUM_THREADS = threads; its cores) | ratio | llvmpipe ms, one core (LP_NUM_THREADS=0) | ratio | obscura Mtris/s | obscura Mpx/s covered / passed |"
+    print "|---|---|---|---|---|---|---|---|---|---|"
     for (i = 1; i <= n; ++i) {
       k = order[i]; split(k, p, " "); o = median(ob[k])
       line = sprintf("| %s | %s | %s | %.1f | %.1f (%.2f) | %.2f× |", p[1], p[2], p[3], o, median(lp[k]), median(cpu[k]), median(lp[k]) / o)
       k0 = p[1] " " p[2] " 0"
       if (p[3] == 1 && (k0 in lp)) line = line sprintf(" %.1f | %.2f× |", median(lp[k0]), median(lp[k0]) / o)
       else line = line " | |"
+      # Rates from the frame triangle and fragment counts (from llvmpipe occlusion queries; the
+      # bench counts the same for ours, see bench/raster_bench.cpp).
+      line = line sprintf(" %.3g | %.0f / %.0f |", tris[p[1]] / o / 1000, covered[p[1]] / o / 1000, passed[p[1]] / o / 1000)
       print line
     }
   }' "$OUT/raw.txt" | tee "$OUT/summary.md"
