@@ -9,6 +9,7 @@
 
 #include <span>
 
+#include "obscura/math/shading_normal.h"
 #include "obscura/raster/clip_transform.h"
 #include "obscura/raster/lights.h"
 #include "obscura/raster/shaders.h"
@@ -108,8 +109,8 @@ struct ScenePixelProgram {
     geometric = g2 > 0 ? geometric / std::sqrt(g2) : interpolated / std::sqrt(std::max(i2, 1e-30f));
     geometric = face_towards(geometric, v);
     Vector3f n = geometric;
-    if (!uniforms.flat && i2 > 0)  // the tracer's convention: on the geometric side, then to v
-      n = face_towards(face_towards(interpolated / std::sqrt(i2), geometric), v);
+    if (!uniforms.flat && i2 > 0)  // the tracer's convention (math/shading_normal.h)
+      n = visible_shading_normal(interpolated / std::sqrt(i2), geometric, v);
 
     TextureCoordinates tc{a.u, a.v, dx.u, dx.v, dy.u, dy.v};
     SurfacePoint s = surface_point(m, tc, a.color);

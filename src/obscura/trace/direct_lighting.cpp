@@ -24,9 +24,9 @@ Rgb DirectLightingIntegrator::radiance(const TraceScene& scene, const Ray& ray, 
   AnyBsdf bsdf = material.bsdf_at(*hit);
   if (bsdf.is_delta()) return result;
 
-  // Surfaces are two-sided for reflection: shade with the shading normal turned to the viewer
+  // Surfaces are two-sided for reflection: shade with the shading normal on the viewer's side
   // (as Whitted and the path tracer do); light must arrive on the viewer's side of the geometry.
-  Normal3f n = face_forward(hit->shading_normal, wo);
+  Normal3f n = reflection_normal(*hit, wo);
   ShadingFrame frame = ShadingFrame::from_normal(to_vector(n));
   const Vector3f wo_local = frame.to_local(wo);
   const float side = dot(hit->geometric_normal, wo);

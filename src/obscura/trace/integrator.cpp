@@ -7,7 +7,7 @@ void record_first_hit(const TraceScene& scene, const SurfaceHit& hit, Vector3f d
   if (!first_hit) return;
   first_hit->hit = true;
   first_hit->albedo = scene.material(hit.material).bsdf_at(hit).albedo();
-  first_hit->normal = face_forward(hit.shading_normal, -direction);
+  first_hit->normal = reflection_normal(hit, normalize(-direction));
   first_hit->depth = hit.t * length(direction);
   first_hit->id = hit.mesh;
 }

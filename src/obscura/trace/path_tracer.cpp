@@ -10,10 +10,10 @@ namespace {
 using Strategy = PathTracerSettings::Strategy;
 
 // The local frame a BSDF is evaluated in at a hit seen from direction wo (world). Reflection-only
-// BSDFs reflect on both faces: their frame turns to the viewer. Transmissive ones keep +Z on
-// the front (outside) face, where their index of refraction is measured from.
+// BSDFs reflect on both faces: their frame turns to the viewer's side. Transmissive ones keep +Z
+// on the front (outside) face, where their index of refraction is measured from.
 ShadingFrame frame_for(const SurfaceHit& hit, const AnyBsdf& bsdf, Vector3f wo) {
-  Normal3f n = bsdf.is_transmissive() ? hit.shading_normal : face_forward(hit.shading_normal, wo);
+  Normal3f n = bsdf.is_transmissive() ? hit.shading_normal : reflection_normal(hit, wo);
   return ShadingFrame::from_normal(to_vector(n));
 }
 

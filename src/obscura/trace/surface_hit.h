@@ -3,6 +3,7 @@
 
 #include <cstdint>
 
+#include "obscura/math/shading_normal.h"
 #include "obscura/math/vector.h"
 
 namespace obscura {
@@ -18,5 +19,13 @@ struct SurfaceHit {
   float t = 0;
   float time = 0;  // of the ray that found it (s): the moment secondary rays share
 };
+
+// The normal a reflection-only BSDF is evaluated with, seen from wo (unit, toward the viewer):
+// on the viewer's side of the geometry, bent toward the viewer where an interpolated normal
+// has turned away from it (math/shading_normal.h says why).
+inline Normal3f reflection_normal(const SurfaceHit& hit, Vector3f wo) {
+  return Normal3f(
+      visible_shading_normal(to_vector(hit.shading_normal), to_vector(hit.geometric_normal), wo));
+}
 
 }  // namespace obscura

@@ -30,7 +30,7 @@ Rgb WhittedIntegrator::trace(const TraceScene& scene, const Ray& ray, Sampler& s
   Rgb L = dot(hit->geometric_normal, wo) > 0 ? material.emission : Rgb();
 
   AnyBsdf bsdf = material.bsdf_at(*hit);
-  Normal3f n = bsdf.is_transmissive() ? hit->shading_normal : face_forward(hit->shading_normal, wo);
+  Normal3f n = bsdf.is_transmissive() ? hit->shading_normal : reflection_normal(*hit, wo);
   ShadingFrame frame = ShadingFrame::from_normal(to_vector(n));
   Vector3f wo_local = frame.to_local(wo);
 
