@@ -10,10 +10,11 @@ declare -A allowed=(
   [color]="color math"
   [camera]="camera math"
   [scene]="scene math color camera"
+  [shading]="shading math color"
   [film]="film math color"
   [io]="io scene film color math camera"
-  [trace]="trace math color camera scene film"
-  [raster]="raster math color camera scene film"
+  [trace]="trace math color camera scene film shading"
+  [raster]="raster math color camera scene film shading"
 )
 
 status=0

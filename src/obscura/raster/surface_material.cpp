@@ -47,6 +47,11 @@ SurfaceMaterial compile_material(const Material& material,
       s.model = SurfaceModel::kConductor;
       s.eta = m.eta, s.k = m.k;
       s.alpha = std::max(ggx_alpha(m.roughness), kMinHighlightAlpha);
+      s.multiple_scattering =
+          shading::multiple_scattering_color(shading::fresnel_average([&](float mu) {
+                                               return fresnel_conductor_reflectance(mu, m.eta, m.k);
+                                             }),
+                                             s.alpha);
     }
     void operator()(const DielectricMaterial& m) const {
       s.model = SurfaceModel::kDielectric;
@@ -85,6 +90,7 @@ SurfacePoint surface_point_untextured(const SurfaceMaterial& m, Rgb vertex_color
   p.alpha = m.alpha;
   p.ior = m.ior;
   p.eta = m.eta, p.k = m.k, p.transmittance = m.transmittance;
+  p.multiple_scattering = m.multiple_scattering;
   p.occlusion = 1;
   switch (m.model) {
     case SurfaceModel::kPhong:

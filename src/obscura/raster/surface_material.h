@@ -22,6 +22,7 @@
 #include "obscura/raster/texture.h"
 #include "obscura/raster/varyings.h"
 #include "obscura/scene/material.h"
+#include "obscura/shading/ggx_energy.h"
 
 namespace obscura::raster {
 
@@ -45,9 +46,10 @@ struct SurfaceMaterial {
   Rgb specular;                // Phong k_s; glTF KHR_materials_specular colour
   float shininess = 0;         // Phong exponent
   float metallic = 0, roughness = 1, specular_strength = 1, ior = 1.5f;  // glTF
-  float alpha = 1;         // conductor, dielectric: GGX width
-  Rgb eta, k;              // conductor
-  Rgb transmittance{1.f};  // dielectric
+  float alpha = 1;          // conductor, dielectric: GGX width
+  Rgb eta, k;               // conductor
+  Rgb multiple_scattering;  // conductor: the colour of its multiple-scattering lobe
+  Rgb transmittance{1.f};   // dielectric
   Rgb emission;
   // Textures (null: none). Base multiplies `base`; metallic-roughness: G roughness, B metallic.
   const Texture* base_texture = nullptr;
@@ -77,6 +79,7 @@ struct SurfacePoint {
   float shininess, lobe_normalization;  // Phong: n and c(n)
   float metallic, specular_strength, alpha, ior;
   Rgb eta, k, transmittance;
+  Rgb multiple_scattering;  // conductor: the colour of its multiple-scattering lobe
   float occlusion;
 };
 
@@ -112,21 +115,30 @@ OBSCURA_RASTER_INLINE Rgb reflected_cosine(const SurfacePoint& s, Vector3f n, Ve
       return (s.base * kBrdfInvPi + s.specular * spec) * n_dot_l;
     }
     case SurfaceModel::kMetallicRoughness: {
+      // The tracer's MetallicRoughnessBsdf term for term (its header has the formula).
       Vector3f h = normalize(v + l);
       float v_h = dot(v, h);
       float lobe = ggx_specular(n_dot_v, n_dot_l, dot(n, h), s.alpha);
+      float multiple = shading::ggx_multiple_scattering(n_dot_v, n_dot_l, s.alpha);
       float f0 = std::max({s.specular.r, s.specular.g, s.specular.b});
-      float diffuse_weight = (1 - s.specular_strength * schlick(f0, n_dot_v)) *
-                             (1 - s.specular_strength * schlick(f0, n_dot_l));
+      float left_average =
+          1 - s.specular_strength * shading::ggx_schlick_average_albedo(f0, s.alpha);
+      float left_v = 1 - s.specular_strength * shading::ggx_schlick_albedo(f0, n_dot_v, s.alpha);
+      float left_l = 1 - s.specular_strength * shading::ggx_schlick_albedo(f0, n_dot_l, s.alpha);
+      float diffuse_weight = left_average > 1e-6f ? left_v * left_l / left_average : 0.f;
       Rgb dielectric = s.base * (diffuse_weight * kBrdfInvPi) +
                        schlick(s.specular, v_h) * (s.specular_strength * lobe);
-      Rgb metal = schlick(s.base, v_h) * lobe;
+      Rgb metal =
+          schlick(s.base, v_h) * lobe +
+          shading::multiple_scattering_color(shading::schlick_average(s.base), s.alpha) * multiple;
       return (dielectric * (1 - s.metallic) + metal * s.metallic) * n_dot_l;
     }
     case SurfaceModel::kConductor: {
       Vector3f h = normalize(v + l);
       float lobe = ggx_specular(n_dot_v, n_dot_l, dot(n, h), s.alpha);
-      return fresnel_conductor_reflectance(dot(v, h), s.eta, s.k) * (lobe * n_dot_l);
+      return fresnel_conductor_reflectance(dot(v, h), s.eta, s.k) * (lobe * n_dot_l) +
+             s.multiple_scattering *
+                 (shading::ggx_multiple_scattering(n_dot_v, n_dot_l, s.alpha) * n_dot_l);
     }
     case SurfaceModel::kDielectric: {
       Vector3f h = normalize(v + l);

@@ -1,6 +1,7 @@
 // A metal: GGX microfacet reflection with the exact Fresnel term of a complex index η + ik
-// (Walter et al. 2007; Heitz 2018 for sampling visible normals). Below a tiny roughness it is a
-// perfect mirror (a delta lobe).
+// (Walter et al. 2007; Heitz 2018 for sampling visible normals), plus Kulla–Conty's
+// multiple-scattering lobe so that rough metals lose no energy between microfacets
+// (shading/ggx_energy.h). Below a tiny roughness it is a perfect mirror (a delta lobe).
 #pragma once
 
 #include "obscura/trace/bsdf.h"
@@ -18,6 +19,8 @@ struct ConductorBsdf {
 
   Rgb eta, k;
   Ggx distribution;
+  Rgb multiple_scattering;         // F_ms: the colour of the multiple-scattering lobe
+  float multiple_probability = 0;  // of drawing a cosine-distributed direction for it
 };
 
 }  // namespace obscura

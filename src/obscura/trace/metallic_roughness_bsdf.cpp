@@ -3,6 +3,7 @@
 #include <algorithm>
 
 #include "obscura/math/sampling.h"
+#include "obscura/shading/ggx_energy.h"
 #include "obscura/trace/fresnel.h"
 
 namespace obscura {
@@ -22,34 +23,46 @@ MetallicRoughnessBsdf::MetallicRoughnessBsdf(const MetallicRoughnessParameters& 
     : params(p),
       dielectric_f0(min(p.specular_color * fresnel_f0(p.ior), 1.f)),
       distribution(std::max(Ggx::alpha_from_roughness(p.roughness), 2 * Ggx::kSmoothAlpha)) {
-  // Sample each lobe in proportion to an estimate of its reflectance seen from the normal.
+  const float alpha = distribution.alpha();
+  metal_multiple_scattering =
+      shading::multiple_scattering_color(shading::schlick_average(params.base_color), alpha);
+  const float f0 = dielectric_f0.max_component();
+  diffuse_average_left = 1 - params.specular * shading::ggx_schlick_average_albedo(f0, alpha);
+  // Sample each lobe in proportion to an estimate of its reflectance seen from the normal; the
+  // metal's multiple scattering is diffuse-like and drawn with the diffuse lobe.
   Rgb spec_weight = lerp(params.metallic, dielectric_f0 * params.specular, params.base_color);
-  float diffuse_weight = (1 - params.metallic) * luminance(params.base_color) *
-                         (1 - params.specular * dielectric_f0.max_component());
+  float diffuse_weight =
+      (1 - params.metallic) * luminance(params.base_color) *
+          (1 - params.specular * dielectric_f0.max_component()) +
+      params.metallic * luminance(metal_multiple_scattering) * (1 - shading::ggx_albedo(1, alpha));
   float ws = luminance(spec_weight);
   specular_probability = ws + diffuse_weight > 0 ? ws / (ws + diffuse_weight) : 1.f;
   // Grazing Fresnel raises the specular share well above its normal-incidence estimate.
   if (params.specular > 0 || params.metallic > 0)
-    specular_probability = std::clamp(specular_probability, 0.1f, 1.f);
+    specular_probability = std::clamp(specular_probability, 0.1f, 0.98f);
 }
 
 Rgb MetallicRoughnessBsdf::f(Vector3f wo, Vector3f wi) const {
   if (wo.z <= 0 || wi.z <= 0) return {};
   Vector3f h = normalize(wo + wi);
   float v_h = dot(wo, h);
+  const float alpha = distribution.alpha();
   float specular_lobe = distribution.D(h) * distribution.G(wo, wi) / (4 * wo.z * wi.z);
-  Rgb f_metal = fresnel_schlick(params.base_color, v_h);
-  Rgb f_dielectric = fresnel_schlick(dielectric_f0, v_h);
+  // What single scattering between microfacets loses, put back (shading/ggx_energy.h).
+  float multiple_lobe = shading::ggx_multiple_scattering(wo.z, wi.z, alpha);
+  Rgb metal = fresnel_schlick(params.base_color, v_h) * specular_lobe +
+              metal_multiple_scattering * multiple_lobe;
   // The specification weights the diffuse lobe by 1 − F(v·h), which reflects up to a third more
-  // light than arrives at grazing angles. Weighting it by what the specular layer leaves on the
-  // way in and on the way out, (1 − F(n·wo))(1 − F(n·wi)), keeps the total ≤ 1 and reciprocal
-  // and equals the specification at normal incidence up to F0² (0.0016 for glTF's default).
+  // light than arrives at grazing angles. Here it gets exactly what the specular layer leaves,
+  // on the way in and on the way out: (1 − E_s(μo)) (1 − E_s(μi)) / (1 − E_s,avg) with E_s the
+  // Fresnel-weighted GGX albedo. This is reciprocal, and a white base reflects everything.
   float s = params.specular;
   float f0 = dielectric_f0.max_component();
-  float diffuse_weight = (1 - s * fresnel_schlick(f0, wo.z)) * (1 - s * fresnel_schlick(f0, wi.z));
-  Rgb dielectric =
-      params.base_color * (diffuse_weight * kInvPi) + f_dielectric * (s * specular_lobe);
-  Rgb metal = f_metal * specular_lobe;
+  float left_o = 1 - s * shading::ggx_schlick_albedo(f0, wo.z, alpha);
+  float left_i = 1 - s * shading::ggx_schlick_albedo(f0, wi.z, alpha);
+  float diffuse_weight = diffuse_average_left > 1e-6f ? left_o * left_i / diffuse_average_left : 0;
+  Rgb dielectric = params.base_color * (diffuse_weight * kInvPi) +
+                   fresnel_schlick(dielectric_f0, v_h) * (s * specular_lobe);
   return lerp(params.metallic, dielectric, metal);
 }
 
