@@ -1,4 +1,5 @@
-// Where tests find the project's files, the shared material beside the checkout, and the CLI.
+// Where tests find the project's files and the CLI. Tests never read ../shared: a user's clone
+// does not have it.
 #pragma once
 
 #include <string>
@@ -6,10 +7,10 @@
 namespace obscura::test {
 
 std::string source_path(const std::string& relative);  // inside the repository
-std::string shared_path(const std::string& relative);  // inside ../shared (not in a user's clone)
 // A file of the suite's own test data (tests/data/, licences in its README.md). Throws
-// std::runtime_error naming the file when it is missing, so a test fails cleanly instead of crashing.
+// std::runtime_error naming the file when it is missing, so a test fails cleanly instead of
+// crashing.
 std::string data_path(const std::string& relative);
-std::string cli_path();                                // the built `obscura` executable
+std::string cli_path();  // the built `obscura` executable
 
 }  // namespace obscura::test

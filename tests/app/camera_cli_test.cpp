@@ -55,14 +55,14 @@ TEST(CameraCli, OverridesResolveLikeAPhotographersCamera) {
 TEST(CameraCli, APhysicalSensorFitsAsBlenderWhateverTheSceneFit) {
   // The reference Cornell glb's camera is a glTF yfov (a vertical fit). Given a lens and a sensor,
   // Blender's AUTO fit applies: on a square image the 36 mm width spans it, 2·atan(18/50).
-  auto result = test::run_cli("camera " + test::shared_path("reference/cornell/cornell.glb") +
+  auto result = test::run_cli("camera " + test::source_path("data/reference/cornell/cornell.glb") +
                               " --width 128 --height 128 --focal-length 50 --sensor 36x24"
                               " --fstop 0.25 --focus-distance 3.4 --focus-breathing off");
   ASSERT_EQ(result.exit_code, 0) << result.output;
   EXPECT_TRUE(contains(result.output, "39.5978° horizontal, 39.5978° vertical")) << result.output;
   EXPECT_TRUE(contains(result.output, "image distance  50 mm")) << result.output;
   // With breathing (the default) the sensor sits at v = 50 · 3400 / 3350 = 50.7463 mm.
-  auto breathing = test::run_cli("camera " + test::shared_path("reference/cornell/cornell.glb") +
+  auto breathing = test::run_cli("camera " + test::source_path("data/reference/cornell/cornell.glb") +
                                  " --focal-length 50 --sensor 36x24 --fstop 0.25"
                                  " --focus-distance 3.4");
   ASSERT_EQ(breathing.exit_code, 0) << breathing.output;

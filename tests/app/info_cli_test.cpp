@@ -9,11 +9,11 @@ namespace obscura {
 namespace {
 
 TEST(InfoCli, PrintsCountsOfAFile) {
-  // ../shared/assets/README.md: the bunny has 69,451 triangles.
+  // scenes/assets/README.md: the bunny at level 2 has 16,301 triangles.
   test::CommandResult r =
-      test::run_cli("info " + test::shared_path("assets/meshes/stanford_bunny/bun_zipper.ply"));
+      test::run_cli("info " + test::source_path("scenes/assets/bunny/bun_zipper_res2.ply"));
   EXPECT_EQ(r.exit_code, 0) << r.output;
-  EXPECT_THAT(r.output, testing::HasSubstr("69,451 rendered"));
+  EXPECT_THAT(r.output, testing::HasSubstr("16,301 rendered"));
   for (const char* field : {"vertices", "instances", "materials", "textures", "lights", "cameras",
                             "bounds", "load time", "memory"})
     EXPECT_THAT(r.output, testing::HasSubstr(field));
@@ -35,7 +35,7 @@ TEST(InfoCli, MissingSceneExitsOne) {
 TEST(RenderSceneFileCli, RendersASceneFileAndListsBuiltIns) {
   std::string dir = test::make_temp_dir("obscura-render-file");
   test::CommandResult r =
-      test::run_cli("render " + test::shared_path("assets/gltf/Box/Box.glb") +
+      test::run_cli("render " + test::data_path("gltf/Box/Box.glb") +
                     " --width 16 --height 16 --spp 1 -q -o " + dir + "/box.png");
   EXPECT_EQ(r.exit_code, 0) << r.output;
   r = test::run_cli("render --scene-list");

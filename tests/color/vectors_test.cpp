@@ -1,4 +1,4 @@
-// Every record of ../shared/data/color/vectors-public.json (computed by an independent
+// Every record of tests/data/color/vectors-public.json (computed by an independent
 // implementation: colorjs.io and the standards' formulas in exact arithmetic), checked at the
 // record's own tolerance: |actual − expected| ≤ abs[i] + rel·|expected|, hues compared mod 360.
 #include <cmath>
@@ -23,7 +23,7 @@ using nlohmann::json;
 
 const json& vectors() {
   static const json v = [] {
-    std::ifstream in(test::shared_path("data/color/vectors-public.json"));
+    std::ifstream in(test::data_path("color/vectors-public.json"));
     EXPECT_TRUE(in.good()) << "cannot open vectors-public.json";
     return json::parse(in);
   }();

@@ -1,5 +1,6 @@
-// The Assimp loader against the meshes in ../shared/assets/ (counts from its README.md, which
-// counted faces with its own parser) and the measured Cornell box's MTL values.
+// The Assimp loader against the meshes in tests/data/ and scenes/assets/ (counts from the shared
+// asset collection's README, which counted faces with its own parser) and the measured Cornell
+// box's MTL values.
 #include "obscura/io/assimp_loader.h"
 
 #include <gmock/gmock.h>
@@ -16,13 +17,13 @@ namespace obscura {
 namespace {
 
 TEST(AssimpLoader, StanfordBunnyPly) {
-  // README: bun_zipper.ply, 35,947 vertices, 69,451 triangles, bounding box about
-  // 0.156 × 0.154 × 0.121 m.
-  Scene scene = load_with_assimp(test::shared_path("assets/meshes/stanford_bunny/bun_zipper.ply"));
-  EXPECT_EQ(scene.stats().triangles, 69451u);
+  // scenes/assets/README.md: bun_zipper_res2.ply, 8,171 vertices, 16,301 triangles; the
+  // full-resolution bunny's bounding box is about 0.156 × 0.154 × 0.121 m, and decimation keeps it.
+  Scene scene = load_with_assimp(test::source_path("scenes/assets/bunny/bun_zipper_res2.ply"));
+  EXPECT_EQ(scene.stats().triangles, 16301u);
   // Vertices no face uses are not kept, so there may be fewer than the file lists.
-  EXPECT_LE(scene.stats().vertices, 35947u);
-  EXPECT_GT(scene.stats().vertices, 34000u);
+  EXPECT_LE(scene.stats().vertices, 8171u);
+  EXPECT_GT(scene.stats().vertices, 8000u);
   Vector3f size = scene.bounds().diagonal();
   EXPECT_NEAR(size.x, 0.156, 0.001);
   EXPECT_NEAR(size.y, 0.154, 0.001);
@@ -30,18 +31,17 @@ TEST(AssimpLoader, StanfordBunnyPly) {
 }
 
 TEST(AssimpLoader, BunnyLevelsOfDetail) {
-  // README: res2 16,301, res3 3,851, res4 948 triangles.
+  // README: res3 3,851, res4 948 triangles (res2 above).
   for (auto [file, triangles] :
-       {std::pair{"bun_zipper_res2.ply", 16301u}, std::pair{"bun_zipper_res3.ply", 3851u},
-        std::pair{"bun_zipper_res4.ply", 948u}}) {
-    Scene scene = load_with_assimp(test::shared_path("assets/meshes/stanford_bunny/") + file);
+       {std::pair{"bun_zipper_res3.ply", 3851u}, std::pair{"bun_zipper_res4.ply", 948u}}) {
+    Scene scene = load_with_assimp(test::data_path(std::string("meshes/stanford_bunny/") + file));
     EXPECT_EQ(scene.stats().triangles, triangles) << file;
   }
 }
 
 TEST(AssimpLoader, UtahTeapotObjWithTexture) {
   // README: 8,028 faces (triangles and quads) making 15,704 triangles; map_Kd default.png 128².
-  Scene scene = load_with_assimp(test::shared_path("assets/meshes/teapot/teapot.obj"));
+  Scene scene = load_with_assimp(test::data_path("meshes/teapot/teapot.obj"));
   EXPECT_EQ(scene.stats().triangles, 15704u);
   ASSERT_EQ(scene.textures.size(), 1u);
   EXPECT_EQ(scene.textures[0].width, 128);
@@ -55,7 +55,7 @@ TEST(AssimpLoader, UtahTeapotObjWithTexture) {
 
 TEST(AssimpLoader, MoriKnobMaterials) {
   // README: 11,970 triangles, 5 materials, one of them emissive.
-  Scene scene = load_with_assimp(test::shared_path("assets/meshes/mori_knob/testObj.obj"));
+  Scene scene = load_with_assimp(test::data_path("meshes/mori_knob/testObj.obj"));
   EXPECT_EQ(scene.stats().triangles, 11970u);
   EXPECT_EQ(scene.stats().materials, 5u);
   int emissive = 0;
@@ -66,7 +66,7 @@ TEST(AssimpLoader, MoriKnobMaterials) {
 TEST(AssimpLoader, MtlBecomesPhong) {
   // cornell_box_measured.mtl: white Kd 0.725 0.71 0.68; light Kd 0.78, Ke 17 12 4.
   Scene scene =
-      load_with_assimp(test::shared_path("assets/cornell/measured/cornell_box_measured.obj"));
+      load_with_assimp(test::source_path("scenes/assets/cornell/cornell_box_measured.obj"));
   EXPECT_EQ(scene.stats().triangles, 32u);
   std::map<std::string, const Material*> by_name;
   for (const Material& m : scene.materials) by_name[m.name] = &m;

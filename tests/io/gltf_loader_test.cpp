@@ -1,5 +1,5 @@
-// The glTF loader against the Khronos sample models in ../shared/assets/gltf/. Expected counts
-// come from two independent sources: the numbers in ../shared/assets/README.md, and the file's
+// The glTF loader against Khronos sample models (tests/data/gltf/). Expected counts come from two
+// independent sources: the numbers in the shared asset collection's README, and the file's
 // own JSON (accessor counts, node lists) read here with nlohmann::json rather than tinygltf.
 // Transforms are checked against glm.
 #include "obscura/io/gltf_loader.h"
@@ -28,7 +28,10 @@ namespace {
 using nlohmann::json;
 
 std::string sample(const std::string& relative) {
-  return test::shared_path("assets/gltf/" + relative);
+  // The example scenes already ship this one (scenes/assets/); the others are in tests/data/.
+  if (relative.starts_with("MetalRoughSpheresNoTextures/"))
+    return test::source_path("scenes/assets/gltf/MetalRoughSpheresNoTextures.glb");
+  return test::data_path("gltf/" + relative);
 }
 
 std::vector<uint8_t> read_bytes(const std::string& path) {
@@ -140,7 +143,7 @@ struct GltfFile {
 
 struct SampleCase {
   std::string file;
-  size_t readme_triangles;  // ../shared/assets/README.md, "triangles" column
+  size_t readme_triangles;  // the asset collection's README, "triangles" column
 };
 
 void PrintTo(const SampleCase& c, std::ostream* os) {
@@ -176,7 +179,7 @@ INSTANTIATE_TEST_SUITE_P(
                     SampleCase{"BoxTextured/glTF/BoxTextured.gltf", 12},
                     SampleCase{"BoxVertexColors/BoxVertexColors.glb", 12},
                     SampleCase{"Duck/Duck.glb", 4212}, SampleCase{"Avocado/glTF/Avocado.gltf", 682},
-                    SampleCase{"DamagedHelmet/DamagedHelmet.glb", 15452},
+                    SampleCase{"WaterBottle/glTF/WaterBottle.gltf", 4510},
                     SampleCase{"Cameras/Cameras.gltf", 2},
                     SampleCase{"MetalRoughSpheresNoTextures/MetalRoughSpheresNoTextures.glb",
                                1040409},
@@ -314,19 +317,21 @@ TEST(GltfLoader, CamerasSampleGivesBothCamerasWithTheFileValues) {
 }
 
 TEST(GltfLoader, MaterialsTexturesAndVertexAttributes) {
-  Scene helmet = load_gltf(sample("DamagedHelmet/DamagedHelmet.glb"));
-  ASSERT_EQ(helmet.materials.size(), 1u);
-  const auto& mr = std::get<MetallicRoughnessMaterial>(helmet.materials[0].model);
+  // WaterBottle: base colour, metal-rough (also the occlusion map), normal and emissive textures.
+  // tests/data keeps its PNGs at 64² (see tests/data/README.md).
+  Scene bottle = load_gltf(sample("WaterBottle/glTF/WaterBottle.gltf"));
+  ASSERT_EQ(bottle.materials.size(), 1u);
+  const auto& mr = std::get<MetallicRoughnessMaterial>(bottle.materials[0].model);
   EXPECT_TRUE(mr.base_color_texture.valid());
   EXPECT_TRUE(mr.metallic_roughness_texture.valid());
   EXPECT_TRUE(mr.occlusion_texture.valid());
-  EXPECT_TRUE(helmet.materials[0].normal_texture.valid());
-  EXPECT_TRUE(helmet.materials[0].emission_texture.valid());
-  EXPECT_EQ(helmet.textures[mr.base_color_texture.texture].encoding, TextureEncoding::kSrgb);
-  EXPECT_EQ(helmet.textures[mr.metallic_roughness_texture.texture].encoding,
+  EXPECT_TRUE(bottle.materials[0].normal_texture.valid());
+  EXPECT_TRUE(bottle.materials[0].emission_texture.valid());
+  EXPECT_EQ(bottle.textures[mr.base_color_texture.texture].encoding, TextureEncoding::kSrgb);
+  EXPECT_EQ(bottle.textures[mr.metallic_roughness_texture.texture].encoding,
             TextureEncoding::kLinear);
-  EXPECT_EQ(helmet.textures[mr.base_color_texture.texture].width, 2048);
-  const Mesh& m = helmet.meshes[0];
+  EXPECT_EQ(bottle.textures[mr.base_color_texture.texture].width, 64);
+  const Mesh& m = bottle.meshes[0];
   EXPECT_EQ(m.normals.size(), m.positions.size());
   EXPECT_EQ(m.uvs.size(), m.positions.size());
 
@@ -341,9 +346,9 @@ TEST(GltfLoader, MaterialsTexturesAndVertexAttributes) {
 }
 
 TEST(GltfLoader, CyclesCornellUsesSpecularZeroAndEmissiveStrength) {
-  // ../shared/reference/README.md: every material has KHR_materials_specular colour 0 (purely
+  // data/reference/cornell/README.md: every material has KHR_materials_specular colour 0 (purely
   // diffuse), and the light has KHR_materials_emissive_strength 15 on emissive factor 1.
-  Scene scene = load_gltf(test::shared_path("reference/cornell/cornell.glb"));
+  Scene scene = load_gltf(test::source_path("data/reference/cornell/cornell.glb"));
   bool light = false;
   for (const Material& m : scene.materials) {
     const auto& mr = std::get<MetallicRoughnessMaterial>(m.model);

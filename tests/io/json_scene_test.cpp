@@ -116,7 +116,7 @@ TEST_F(JsonScene, ValuesArriveWhereTheyBelong) {
 }
 
 TEST_F(JsonScene, ModelsAreIncludedWithTheirTransformAndUpAxis) {
-  std::string bunny = test::shared_path("assets/meshes/stanford_bunny/bun_zipper_res4.ply");
+  std::string bunny = test::data_path("meshes/stanford_bunny/bun_zipper_res4.ply");
   std::string path = write("include.json", R"({
     "materials": {"clay": {"type": "diffuse"}},
     "objects": [

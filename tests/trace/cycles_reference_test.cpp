@@ -1,5 +1,5 @@
 // The path tracer against Blender Cycles (an independent renderer) on the Cornell-like scene of
-// ../shared/reference/cornell: the same glTF file, camera, film and light transport. Our RMSE
+// data/reference/cornell: the same glTF file, camera, film and light transport. Our RMSE
 // against Cycles' high-sample reference must be within 1.5× of Cycles' own at the same sample
 // count, and the image mean must agree within noise (no bias).
 #include <gtest/gtest.h>
@@ -36,7 +36,7 @@ void expect_matches_cycles(const Camera& camera, const std::string& reference_ex
   ASSERT_GT(cycles_rmse_256spp, 0);
   // The glTF scene as a user would load it: every material carries KHR_materials_specular with
   // specular 0 (purely diffuse) and the light KHR_materials_emissive_strength 15.
-  Scene scene = load_scene_file(test::shared_path("reference/cornell/cornell.glb"));
+  Scene scene = load_scene_file(test::source_path("data/reference/cornell/cornell.glb"));
   scene.camera = camera;
   TraceScene trace_scene(scene, device());
   Film film(camera.film.width_px, camera.film.height_px);
@@ -65,11 +65,11 @@ void expect_matches_cycles(const Camera& camera, const std::string& reference_ex
 }
 
 TEST(CyclesReference, PinholeCornellBox) {
-  // ../shared/reference/cornell: 16,384 spp, 128², pinhole at (0, 1, 3.9) looking at (0, 1, 0),
+  // data/reference/cornell: 16,384 spp, 128², pinhole at (0, 1, 3.9) looking at (0, 1, 0),
   // 50 mm on a 36 mm-wide sensor (horizontal FOV 39.5978°).
   Camera camera = testing::make_camera({0, 1, 3.9}, {0, 1, 0}, 128, 39.597752709049864);
-  expect_matches_cycles(camera, test::shared_path("reference/cornell/cornell_ref.exr"),
-                        read_number(test::shared_path("reference/cornell/cycles_rmse_256spp.txt")));
+  expect_matches_cycles(camera, test::source_path("data/reference/cornell/cornell_ref.exr"),
+                        read_number(test::source_path("data/reference/cornell/cycles_rmse_256spp.txt")));
 }
 
 TEST(CyclesReference, ThinLensCornellBox) {
