@@ -6,12 +6,13 @@
 
 #include <tbb/global_control.h>
 
+#include "camera_options.h"
+#include "display_options.h"
+#include "obscura/io/default_environment.h"
 #include "obscura/io/image_io.h"
 #include "obscura/io/scene_loader.h"
 #include "obscura/math/error.h"
 #include "obscura/trace/render.h"
-#include "camera_options.h"
-#include "display_options.h"
 #include "progress_bar.h"
 #include "raster_effects_options.h"
 #include "raster_options.h"
@@ -31,6 +32,8 @@ struct RenderOptions {
   uint64_t seed = 0;
   bool quiet = false;
   bool list_scenes = false;
+  std::string environment = "auto";
+  double environment_intensity = 1;
   CameraOverrides camera;
   DisplayOptions display;
   TracerOptions tracer;
@@ -49,15 +52,29 @@ void apply_scene_settings(const SceneRenderSettings& s, RenderOptions& o) {
 }
 
 void validate(const RenderOptions& o) {
-  if (o.width <= 0) throw UsageError("--width must be a positive number of pixels; got " + std::to_string(o.width));
-  if (o.height <= 0) throw UsageError("--height must be a positive number of pixels; got " + std::to_string(o.height));
-  if (o.spp <= 0) throw UsageError("--spp must be a positive number of samples per pixel; got " + std::to_string(o.spp));
-  if (o.threads < 0) throw UsageError("--threads must be 0 (all cores) or positive; got " + std::to_string(o.threads));
+  if (o.width <= 0)
+    throw UsageError("--width must be a positive number of pixels; got " + std::to_string(o.width));
+  if (o.height <= 0)
+    throw UsageError("--height must be a positive number of pixels; got " +
+                     std::to_string(o.height));
+  if (o.spp <= 0)
+    throw UsageError("--spp must be a positive number of samples per pixel; got " +
+                     std::to_string(o.spp));
+  if (o.threads < 0)
+    throw UsageError("--threads must be 0 (all cores) or positive; got " +
+                     std::to_string(o.threads));
+  if (o.environment.empty())
+    throw UsageError("--environment: expected auto, none, studio, white or a file");
+  if (!(o.environment_intensity >= 0 && o.environment_intensity <= 1e6))
+    throw UsageError("--environment-intensity must be in [0, 1e6]; got " +
+                     std::to_string(o.environment_intensity));
 }
 
 }  // namespace
 
-Scene load_scene(const std::string& name) { return obscura::load_scene(name); }
+Scene load_scene(const std::string& name) {
+  return obscura::load_scene(name);
+}
 
 namespace {
 
@@ -78,6 +95,9 @@ void run_render(RenderOptions options) {
     thread_limit.emplace(tbb::global_control::max_allowed_parallelism, size_t(options.threads));
 
   Scene scene = load_scene(options.scene);
+  EnvironmentChoice environment = parse_environment_choice(options.environment);
+  environment.intensity = float(options.environment_intensity);
+  apply_environment(scene, environment);
   apply_scene_settings(scene.render, options);
   if (!options.quiet)
     for (const std::string& w : scene.warnings) std::fprintf(stderr, "warning: %s\n", w.c_str());
@@ -118,9 +138,9 @@ void run_render(RenderOptions options) {
   std::optional<AovBuffers> aovs;
   if (options.tracer.aovs) aovs.emplace(crop.width(), crop.height());
   ProgressBar bar("render", options.quiet);
-  RenderStats stats = render(trace_scene, scene.camera, *make_integrator(options.tracer), settings,
-                             film, [&](int done, int total) { bar.update(done, total); },
-                             aovs ? &*aovs : nullptr);
+  RenderStats stats = render(
+      trace_scene, scene.camera, *make_integrator(options.tracer), settings, film,
+      [&](int done, int total) { bar.update(done, total); }, aovs ? &*aovs : nullptr);
   bar.finish();
 
   report_write(options.output,
@@ -136,7 +156,8 @@ void run_render(RenderOptions options) {
                                  : "");
   std::printf("%s\n", options.output.c_str());
   if (aovs)
-    for (const std::string& path : write_aovs(options.output, *aovs)) std::printf("%s\n", path.c_str());
+    for (const std::string& path : write_aovs(options.output, *aovs))
+      std::printf("%s\n", path.c_str());
 }
 
 }  // namespace
@@ -147,8 +168,9 @@ void add_render_command(CLI::App& app) {
   render->add_option("scene", options->scene,
                      "A scene file (.json, .gltf, .glb, .obj, .ply, …) or a built-in scene name "
                      "(see --scene-list); default: the Cornell box");
-  render->add_option("-o,--output", options->output,
-                     "Output image; the format follows the extension: .png, .exr, .pfm")
+  render
+      ->add_option("-o,--output", options->output,
+                   "Output image; the format follows the extension: .png, .exr, .pfm")
       ->capture_default_str();
   render->add_option("--width", options->width, "Image width in pixels")->capture_default_str();
   render->add_option("--height", options->height, "Image height in pixels")->capture_default_str();
@@ -160,6 +182,16 @@ void add_render_command(CLI::App& app) {
       ->capture_default_str();
   render->add_flag("-q,--quiet", options->quiet, "No progress or summary on stderr");
   render->add_flag("--scene-list", options->list_scenes, "List the built-in scenes and exit");
+  render
+      ->add_option("--environment", options->environment,
+                   "Light from far away: auto (the studio environment when the scene has no "
+                   "light of its own), none, studio, white (uniform radiance 1) or an "
+                   "equirectangular map file")
+      ->capture_default_str();
+  render
+      ->add_option("--environment-intensity", options->environment_intensity,
+                   "Scale of the environment --environment chooses")
+      ->capture_default_str();
   add_camera_options(*render, options->camera);
   add_display_options(render, options->display);
   add_tracer_options(*render, options->tracer);

@@ -1,0 +1,121 @@
+#include "obscura/io/default_environment.h"
+
+#include <cmath>
+#include <filesystem>
+#include <numbers>
+
+#include "obscura/io/scene_loader.h"
+#include "obscura/io/texture_loader.h"
+#include "obscura/math/error.h"
+
+namespace obscura {
+
+namespace {
+
+// Mean radiance over the sphere of an equirectangular map (rows weighted by the solid angle they
+// cover, ∝ sin θ), as luminance.
+double mean_luminance(const Texture& map) {
+  double sum = 0, weight = 0;
+  for (int y = 0; y < map.height; ++y) {
+    double w = std::sin(std::numbers::pi * (y + 0.5) / map.height);
+    double row = 0;
+    for (int x = 0; x < map.width; ++x) {
+      Vector4f v = sample_texture(map, {(x + 0.5f) / map.width, (y + 0.5f) / map.height});
+      row += 0.2126 * v.x + 0.7152 * v.y + 0.0722 * v.z;  // Rec. 709 luminance
+    }
+    sum += w * row;
+    weight += w * map.width;
+  }
+  return weight > 0 ? sum / weight : 0;
+}
+
+Environment map_environment(Scene& scene, const std::string& file, float intensity) {
+  std::error_code ec;
+  if (!std::filesystem::is_regular_file(file, ec))
+    throw Error(file, "environment map does not exist (or is not a regular file)");
+  Texture map = read_texture(file, TextureEncoding::kLinear);
+  map.wrap_v = TextureWrap::kClampToEdge;
+  Environment env;
+  env.texture = int32_t(scene.textures.size());
+  env.intensity = intensity;
+  scene.textures.push_back(std::move(map));
+  return env;
+}
+
+std::string studio_map_path() {
+  return (std::filesystem::path(scenes_directory()) / "assets/envmaps/studio.exr").string();
+}
+
+Environment studio_environment(Scene& scene, float intensity) {
+  Environment env = map_environment(scene, studio_map_path(), intensity);
+  // Normalised so that a white diffuse surface in it averages what it would in a uniform white
+  // environment: the map's own scale is arbitrary (its photographed exposure).
+  double mean = mean_luminance(scene.textures[env.texture]);
+  if (mean > 0) env.intensity = float(intensity / mean);
+  return env;
+}
+
+Environment white_environment(float intensity) {
+  Environment env;
+  env.color = Rgb(1.f);
+  env.intensity = intensity;
+  return env;
+}
+
+}  // namespace
+
+EnvironmentChoice parse_environment_choice(const std::string& text) {
+  if (text.empty()) throw Error("--environment", "expected auto, none, studio, white or a file");
+  if (text == "auto") return {EnvironmentSource::kAuto, {}};
+  if (text == "none") return {EnvironmentSource::kNone, {}};
+  if (text == "studio") return {EnvironmentSource::kStudio, {}};
+  if (text == "white") return {EnvironmentSource::kWhite, {}};
+  return {EnvironmentSource::kFile, text};
+}
+
+bool scene_has_own_light(const Scene& scene) {
+  if (!scene.lights.empty() || scene.environment) return true;
+  for (const Instance& instance : scene.instances) {
+    uint32_t index =
+        instance.material >= 0 ? uint32_t(instance.material) : scene.meshes[instance.mesh].material;
+    if (index >= scene.materials.size()) continue;
+    const Material& m = scene.materials[index];
+    if (!m.emission.is_black() && !m.emission_texture.valid()) return true;
+  }
+  return false;
+}
+
+void apply_environment(Scene& scene, const EnvironmentChoice& choice) {
+  switch (choice.source) {
+    case EnvironmentSource::kAuto: {
+      if (scene_has_own_light(scene)) return;
+      std::error_code ec;
+      if (std::filesystem::is_regular_file(studio_map_path(), ec)) {
+        scene.environment = studio_environment(scene, choice.intensity);
+        scene.warnings.push_back(
+            "the scene has no light of its own; it is lit by the studio environment "
+            "(--environment none|studio|white|FILE to choose)");
+      } else {
+        scene.environment = white_environment(choice.intensity);
+        scene.warnings.push_back("the scene has no light of its own and the studio map " +
+                                 studio_map_path() +
+                                 " is missing; it is lit by a uniform white environment");
+      }
+      return;
+    }
+    case EnvironmentSource::kNone:
+      scene.environment.reset();
+      return;
+    case EnvironmentSource::kStudio:
+      scene.environment = studio_environment(scene, choice.intensity);
+      return;
+    case EnvironmentSource::kWhite:
+      scene.environment = white_environment(choice.intensity);
+      return;
+    case EnvironmentSource::kFile:
+      scene.environment = map_environment(scene, choice.file, choice.intensity);
+      return;
+  }
+}
+
+}  // namespace obscura
