@@ -14,18 +14,40 @@ Point3d to_double(Point3f p) {
   return {p.x, p.y, p.z};
 }
 
+// The share of a triangle's emission factor its texture lets through, for choosing lights: the
+// mean luminance at seven points (vertices, edge midpoints, centroid), but never below 1 % so that
+// a triangle whose bright texels fall between those points can still be chosen (no bias; only
+// the variance depends on this estimate).
+double texture_weight(const Texture& texture, Point2f uv0, Point2f uv1, Point2f uv2) {
+  const Point2f b[7] = {
+      {0, 0}, {1, 0}, {0, 1}, {0.5f, 0}, {0, 0.5f}, {0.5f, 0.5f}, {1 / 3.f, 1 / 3.f}};
+  double sum = 0;
+  for (Point2f w : b) {
+    Point2f uv{uv0.x + (uv1.x - uv0.x) * w.x + (uv2.x - uv0.x) * w.y,
+               uv0.y + (uv1.y - uv0.y) * w.x + (uv2.y - uv0.y) * w.y};
+    Vector4f v = sample_texture(texture, uv);
+    sum += luminance(Rgb(v.x, v.y, v.z));
+  }
+  return std::max(sum / 7, 0.01);
+}
+
 }  // namespace
 
 AreaLights::AreaLights(const std::vector<Mesh>& meshes, const std::vector<Material>& materials,
-                       AreaLightSampling sampling)
+                       AreaLightSampling sampling, const std::vector<Texture>* textures)
     : sampling_(sampling) {
   double total_power = 0;
   std::vector<double> power;
   light_of_triangle_.resize(meshes.size());
   for (size_t m = 0; m < meshes.size(); ++m) {
     const Mesh& mesh = meshes[m];
-    Rgb radiance = materials[mesh.material].emission;
+    const Material& material = materials[mesh.material];
+    Rgb radiance = material.emission;
     if (radiance.is_black() || mesh.positions.empty()) continue;
+    const Texture* texture = nullptr;
+    if (material.emission_texture.valid() && textures && !mesh.uvs.empty() &&
+        size_t(material.emission_texture.texture) < textures->size())
+      texture = &(*textures)[material.emission_texture.texture];
     light_of_triangle_[m].assign(mesh.triangle_count(), -1);
     for (size_t t = 0; t < mesh.triangle_count(); ++t) {
       Point3f p0 = mesh.positions[mesh.indices[3 * t]];
@@ -35,9 +57,22 @@ AreaLights::AreaLights(const std::vector<Mesh>& meshes, const std::vector<Materi
       float area = 0.5f * length(n);
       if (area <= 0) continue;
       light_of_triangle_[m][t] = int32_t(triangles_.size());
-      triangles_.push_back(
-          {p0, p1, p2, p0 + ((p1 - p0) + (p2 - p0)) / 3.f, Normal3f(normalize(n)), radiance, area});
-      power.push_back(double(area) * luminance(radiance));
+      Triangle tri;
+      tri.p0 = p0, tri.p1 = p1, tri.p2 = p2;
+      tri.centroid = p0 + ((p1 - p0) + (p2 - p0)) / 3.f;
+      tri.normal = Normal3f(normalize(n));
+      tri.radiance = radiance;
+      tri.area = area;
+      double weight = 1;
+      if (texture) {
+        tri.texture = texture;
+        tri.uv0 = mesh.uvs[mesh.indices[3 * t]];
+        tri.uv1 = mesh.uvs[mesh.indices[3 * t + 1]];
+        tri.uv2 = mesh.uvs[mesh.indices[3 * t + 2]];
+        weight = texture_weight(*texture, tri.uv0, tri.uv1, tri.uv2);
+      }
+      triangles_.push_back(tri);
+      power.push_back(double(area) * luminance(radiance) * weight);
       total_power += power.back();
     }
   }
@@ -48,6 +83,23 @@ AreaLights::AreaLights(const std::vector<Mesh>& meshes, const std::vector<Materi
   }
   if (!cdf_.empty()) cdf_.back() = 1;
   power_ = total_power * kPi;
+}
+
+Rgb AreaLights::radiance_at(const Triangle& tri, Point2f b) {
+  if (!tri.texture) return tri.radiance;
+  Point2f uv{tri.uv0.x + (tri.uv1.x - tri.uv0.x) * b.x + (tri.uv2.x - tri.uv0.x) * b.y,
+             tri.uv0.y + (tri.uv1.y - tri.uv0.y) * b.x + (tri.uv2.y - tri.uv0.y) * b.y};
+  Vector4f v = sample_texture(*tri.texture, uv);
+  return tri.radiance * Rgb(v.x, v.y, v.z);
+}
+
+Point2f AreaLights::barycentric(const Triangle& tri, Point3f q) {
+  Vector3f e1 = tri.p1 - tri.p0, e2 = tri.p2 - tri.p0, v = q - tri.p0;
+  float d11 = dot(e1, e1), d12 = dot(e1, e2), d22 = dot(e2, e2);
+  float v1 = dot(v, e1), v2 = dot(v, e2);
+  float det = d11 * d22 - d12 * d12;
+  if (!(det > 0)) return {1 / 3.f, 1 / 3.f};
+  return {(d22 * v1 - d12 * v2) / det, (d11 * v2 - d12 * v1) / det};
 }
 
 int32_t AreaLights::index_of(uint32_t mesh, uint32_t primitive) const {
@@ -101,7 +153,7 @@ AreaLightPoint AreaLights::sample_point(float u_select, Point2f u_point) const {
   const Triangle& tri = triangles_[i];
   Point2f b = sample_uniform_triangle(u_point);
   Point3f p = tri.p0 + (tri.p1 - tri.p0) * b.x + (tri.p2 - tri.p0) * b.y;
-  return {p, tri.normal, tri.radiance, selection_probability(i) / tri.area};
+  return {p, tri.normal, radiance_at(tri, b), selection_probability(i) / tri.area};
 }
 
 std::optional<AreaLightSample> AreaLights::sample(Point3f p, float u_select,
@@ -119,12 +171,14 @@ std::optional<AreaLightSample> AreaLights::sample(Point3f p, float u_select,
     if (cos_plane >= 0) return std::nullopt;  // numerically parallel to the plane
     double t = dot(n, to_double(tri.p0) - o) / cos_plane;
     Vector3f wi(float(w.x), float(w.y), float(w.z));
-    return AreaLightSample{.wi = wi,
-                           .distance = float(t),
-                           .position = p + wi * float(t),
-                           .normal = tri.normal,
-                           .radiance = tri.radiance,
-                           .pdf = float(selection_probability(i) / s->solid_angle())};
+    Point3f q = p + wi * float(t);
+    return AreaLightSample{
+        .wi = wi,
+        .distance = float(t),
+        .position = q,
+        .normal = tri.normal,
+        .radiance = tri.texture ? radiance_at(tri, barycentric(tri, q)) : tri.radiance,
+        .pdf = float(selection_probability(i) / s->solid_angle())};
   }
   // By area: the density converts to solid angle by d²/cos at the light.
   Point2f b = sample_uniform_triangle(u_point);
@@ -140,7 +194,7 @@ std::optional<AreaLightSample> AreaLights::sample(Point3f p, float u_select,
                          .distance = d,
                          .position = q,
                          .normal = tri.normal,
-                         .radiance = tri.radiance,
+                         .radiance = radiance_at(tri, b),
                          .pdf = selection_probability(i) / tri.area * d2 / cos_light};
 }
 

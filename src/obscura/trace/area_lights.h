@@ -1,8 +1,9 @@
 // Emissive triangles as area lights, chosen in proportion to their power (area × luminance of
-// emitted radiance), then sampled from the shaded point: uniformly in the solid angle the
-// triangle subtends (a spherical triangle, math/spherical_triangle.h) where area sampling's
-// d²/cos would vary much across the triangle, uniformly by area otherwise. The choice depends only
-// on the point and the triangle, so pdf() reproduces it for multiple importance sampling.
+// emitted radiance; for a textured emitter, of the texture's mean over the triangle), then sampled
+// from the shaded point: uniformly in the solid angle the triangle subtends (a spherical triangle,
+// math/spherical_triangle.h) where area sampling's d²/cos would vary much across the triangle,
+// uniformly by area otherwise. The choice depends only on the point and the triangle, so pdf()
+// reproduces it for multiple importance sampling.
 #pragma once
 
 #include <cstdint>
@@ -13,6 +14,7 @@
 #include "obscura/math/spherical_triangle.h"
 #include "obscura/math/vector.h"
 #include "obscura/scene/scene.h"
+#include "obscura/scene/texture.h"
 
 namespace obscura {
 
@@ -51,9 +53,11 @@ class AreaLights {
 
   AreaLights() = default;
   // `meshes` in world space, indexed as the ids hits report (SurfaceHit::mesh); meshes whose
-  // material does not emit (or that are empty) are not lights.
+  // material does not emit (or that are empty) are not lights. A material's emission texture is
+  // looked up in `textures` (which must outlive this) at the mesh's UVs.
   AreaLights(const std::vector<Mesh>& meshes, const std::vector<Material>& materials,
-             AreaLightSampling sampling = AreaLightSampling::kSolidAngle);
+             AreaLightSampling sampling = AreaLightSampling::kSolidAngle,
+             const std::vector<Texture>* textures = nullptr);
 
   bool empty() const { return triangles_.empty(); }
   size_t size() const { return triangles_.size(); }
@@ -78,9 +82,15 @@ class AreaLights {
   struct Triangle {
     Point3f p0, p1, p2, centroid;
     Normal3f normal;
-    Rgb radiance;
-    float area;
+    Rgb radiance;  // the emission factor; times the texture where there is one
+    float area = 0;
+    const Texture* texture = nullptr;
+    Point2f uv0, uv1, uv2;
   };
+  // Emitted radiance at barycentric b (b.x towards p1, b.y towards p2).
+  static Rgb radiance_at(const Triangle& tri, Point2f b);
+  // Barycentrics of a point in the triangle's plane.
+  static Point2f barycentric(const Triangle& tri, Point3f q);
   int32_t index_of(uint32_t mesh, uint32_t primitive) const;
   float selection_probability(size_t i) const { return cdf_[i] - (i == 0 ? 0.f : cdf_[i - 1]); }
   // The triangle as seen from p when spherical sampling applies to it there.

@@ -72,12 +72,12 @@ Rgb PathTracer::radiance(const TraceScene& scene, const Ray& camera_ray, Sampler
     // 2. Hit an emitter's front face: its light, MIS-weighted against light sampling.
     if (!material.emission.is_black() && dot(hit->geometric_normal, wo) > 0) {
       if (specular_bounce) {
-        L += beta * material.emission;
+        L += beta * material.emitted(*hit);
       } else if (use_bsdf_hits) {
         float light_pdf = use_light_sampling ? lights.pdf_area_light(previous, hit->mesh,
                                                                      hit->primitive, hit->position)
                                              : 0.f;
-        L += beta * material.emission * power_heuristic(bsdf_pdf, light_pdf);
+        L += beta * material.emitted(*hit) * power_heuristic(bsdf_pdf, light_pdf);
       }
     }
     if (depth + 1 >= settings_.max_depth) break;

@@ -3,6 +3,7 @@
 
 #include <cstdint>
 
+#include "obscura/color/rgb.h"
 #include "obscura/math/shading_normal.h"
 #include "obscura/math/vector.h"
 
@@ -13,6 +14,7 @@ struct SurfaceHit {
   Normal3f geometric_normal;  // unit, on the front side of the triangle's winding
   Normal3f shading_normal;    // unit, on the same side as geometric_normal
   Point2f uv;                 // texture coordinates (0 where the mesh has none)
+  Rgb vertex_color{1.f};      // interpolated COLOR_0 (white where the mesh has none)
   uint32_t material = 0;
   uint32_t mesh = 0;       // the Embree geometry id: which mesh (instance) was hit
   uint32_t primitive = 0;  // triangle index within it

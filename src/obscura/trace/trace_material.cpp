@@ -5,7 +5,10 @@
 namespace obscura {
 
 TraceMaterial::TraceMaterial(const Material& material, const std::vector<Texture>* textures)
-    : emission(material.emission), model_(material.model), textures_(textures) {}
+    : emission(material.emission),
+      emission_texture_(material.emission_texture),
+      model_(material.model),
+      textures_(textures) {}
 
 Rgb TraceMaterial::texture_rgb(const TextureRef& ref, const SurfaceHit& hit) const {
   if (!ref.valid() || !textures_) return Rgb(1.f);
@@ -19,11 +22,12 @@ AnyBsdf TraceMaterial::bsdf_at(const SurfaceHit& hit) const {
     const TraceMaterial& self;
     const SurfaceHit& hit;
     AnyBsdf operator()(const DiffuseMaterial& m) const {
-      return LambertianBsdf{m.reflectance * self.texture_rgb(m.reflectance_texture, hit)};
+      return LambertianBsdf{m.reflectance * self.texture_rgb(m.reflectance_texture, hit) *
+                            hit.vertex_color};
     }
     AnyBsdf operator()(const PhongMaterial& m) const {
-      return PhongBsdf(m.diffuse * self.texture_rgb(m.diffuse_texture, hit), m.specular,
-                       m.shininess, m.blinn);
+      return PhongBsdf(m.diffuse * self.texture_rgb(m.diffuse_texture, hit) * hit.vertex_color,
+                       m.specular, m.shininess, m.blinn);
     }
     AnyBsdf operator()(const ConductorMaterial& m) const {
       return ConductorBsdf(m.eta, m.k, Ggx::alpha_from_roughness(m.roughness));
@@ -35,14 +39,15 @@ AnyBsdf TraceMaterial::bsdf_at(const SurfaceHit& hit) const {
       // KHR_materials_specular with a zero specular: no specular layer at all, so nothing of
       // the incoming light is held back for one (Blender exports its Diffuse BSDF this way).
       if (m.purely_diffuse())
-        return LambertianBsdf{m.base_color * self.texture_rgb(m.base_color_texture, hit)};
+        return LambertianBsdf{m.base_color * self.texture_rgb(m.base_color_texture, hit) *
+                              hit.vertex_color};
       MetallicRoughnessParameters p{.base_color = m.base_color,
                                     .metallic = m.metallic,
                                     .roughness = m.roughness,
                                     .specular = m.specular,
                                     .specular_color = m.specular_color,
                                     .ior = m.ior};
-      p.base_color = p.base_color * self.texture_rgb(m.base_color_texture, hit);
+      p.base_color = p.base_color * self.texture_rgb(m.base_color_texture, hit) * hit.vertex_color;
       if (m.metallic_roughness_texture.valid()) {
         Rgb mr = self.texture_rgb(m.metallic_roughness_texture, hit);  // G roughness, B metal
         p.roughness *= mr.g;

@@ -19,14 +19,19 @@ class TraceMaterial {
   // Compiles a scene material; `textures` must outlive it.
   TraceMaterial(const Material& material, const std::vector<Texture>* textures);
 
-  // The BSDF at `hit` (textures sampled at hit.uv).
+  // The BSDF at `hit` (textures sampled at hit.uv; the base colour times hit.vertex_color).
   AnyBsdf bsdf_at(const SurfaceHit& hit) const;
-  // Emitted radiance, from the front face only.
+  // Emitted radiance at `hit`, from the front face only: `emission` times the emission texture.
+  Rgb emitted(const SurfaceHit& hit) const {
+    return emission_texture_.valid() ? emission * texture_rgb(emission_texture_, hit) : emission;
+  }
+  // The emission factor (strength included): black for a material that never emits.
   Rgb emission;
 
  private:
   Rgb texture_rgb(const TextureRef& ref, const SurfaceHit& hit) const;
 
+  TextureRef emission_texture_;
   std::optional<AnyBsdf> fixed_;
   MaterialModel model_;
   const std::vector<Texture>* textures_ = nullptr;

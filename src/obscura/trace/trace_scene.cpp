@@ -11,13 +11,14 @@ namespace obscura {
 
 namespace {
 
-// A world-space copy of `mesh` placed by `world_from_object` (positions, normals and UVs).
+// A world-space copy of `mesh` placed by `world_from_object` (positions, normals, UVs, colours).
 Mesh flatten(const Mesh& mesh, const Transform& world_from_object) {
   Mesh world;
   world.name = mesh.name;
   world.material = mesh.material;
   world.indices = mesh.indices;
   world.uvs = mesh.uvs;
+  world.colors = mesh.colors;
   world.positions.reserve(mesh.positions.size());
   for (Point3f p : mesh.positions) world.positions.push_back(world_from_object(p));
   for (Normal3f n : mesh.normals) world.normals.push_back(normalize(world_from_object(n)));
@@ -32,7 +33,6 @@ Mesh flatten(const Mesh& mesh, const Transform& world_from_object) {
 Mesh shading_attributes(Mesh mesh) {
   mesh.positions = {};
   mesh.tangents = {};
-  mesh.colors = {};
   return mesh;
 }
 
@@ -186,7 +186,7 @@ TraceScene::TraceScene(const Scene& scene, std::shared_ptr<const EmbreeDevice> d
   }
   std::vector<PunctualLight> punctual;
   for (const Light& light : scene.lights) punctual.push_back(compile_light(light));
-  lights_ = LightSet(AreaLights(emitters, scene.materials, options.area_light_sampling),
+  lights_ = LightSet(AreaLights(emitters, scene.materials, options.area_light_sampling, &textures_),
                      compile_environment(scene), std::move(punctual), radius_);
 }
 
@@ -281,7 +281,7 @@ std::optional<SurfaceHit> TraceScene::intersect(const Ray& ray) const {
   s.primitive = hit->primitive_id;
   s.material = place.material;
   const Mesh& mesh = *place.attributes;
-  if (!mesh.normals.empty() || !mesh.uvs.empty()) {
+  if (!mesh.normals.empty() || !mesh.uvs.empty() || !mesh.colors.empty()) {
     // Interpolated attributes: only meshes that carry them pay for the vertex reads.
     const uint32_t* tri = &mesh.indices[3 * size_t(hit->primitive_id)];
     float b1 = hit->barycentric.x, b2 = hit->barycentric.y, b0 = 1 - b1 - b2;
@@ -296,6 +296,9 @@ std::optional<SurfaceHit> TraceScene::intersect(const Ray& ray) const {
       Point2f t0 = mesh.uvs[tri[0]], t1 = mesh.uvs[tri[1]], t2 = mesh.uvs[tri[2]];
       s.uv = {t0.x * b0 + t1.x * b1 + t2.x * b2, t0.y * b0 + t1.y * b1 + t2.y * b2};
     }
+    if (!mesh.colors.empty())
+      s.vertex_color =
+          mesh.colors[tri[0]] * b0 + mesh.colors[tri[1]] * b1 + mesh.colors[tri[2]] * b2;
   }
   return s;
 }

@@ -27,7 +27,7 @@ Rgb WhittedIntegrator::trace(const TraceScene& scene, const Ray& ray, Sampler& s
   if (depth == 0) record_first_hit(scene, *hit, ray.direction, first_hit);
   const TraceMaterial& material = scene.material(hit->material);
   Vector3f wo = -ray.direction;
-  Rgb L = dot(hit->geometric_normal, wo) > 0 ? material.emission : Rgb();
+  Rgb L = dot(hit->geometric_normal, wo) > 0 ? material.emitted(*hit) : Rgb();
 
   AnyBsdf bsdf = material.bsdf_at(*hit);
   Normal3f n = bsdf.is_transmissive() ? hit->shading_normal : reflection_normal(*hit, wo);
