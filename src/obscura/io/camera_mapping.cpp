@@ -165,9 +165,14 @@ Camera framing_camera(const Bounds3f& bounds) {
   if (bounds.empty()) b = Bounds3d(Point3d(-1, -1, -1), Point3d(1, 1, 1));
   Point3d center = b.center();
   double radius = std::max(1e-3, length(b.diagonal()) / 2);
-  // Far enough that the bounding sphere fits in the vertical field of view.
+  // Far enough that the bounding sphere fits in the vertical field of view, from a three-quarter
+  // view (35° to the right of the front, +Z, and 25° above), as model viewers frame a model: a
+  // flat model (a plane, a decal) is never seen exactly edge-on, and a box shows three faces.
   double distance = radius / std::sin(20 / kDegreesPerRadian);
-  Point3d eye = center + Vector3d(0, 0, distance);
+  const double azimuth = 35 / kDegreesPerRadian, elevation = 25 / kDegreesPerRadian;
+  Vector3d toward_eye(std::sin(azimuth) * std::cos(elevation), std::sin(elevation),
+                      std::cos(azimuth) * std::cos(elevation));
+  Point3d eye = center + toward_eye * distance;
   c.world_from_camera = world_from_camera_look_at(eye, center);
   c.near_m = std::max(1e-4, (distance - radius) * 0.5);
   c.far_m = distance + 2 * radius;

@@ -22,7 +22,8 @@ Camera gltf_orthographic_camera(std::string name, const Transform& world_from_ca
 // A camera object of the JSON scene file.
 Camera camera_from_json(JsonReader& json);
 
-// A camera that sees all of `bounds` from the front (+Z side), for files without a camera.
+// A camera that sees all of `bounds` from a three-quarter view (front, +Z, right, +X, and above,
+// +Y), for files without a camera.
 Camera framing_camera(const Bounds3f& bounds);
 
 // Makes the camera named `name` (the first one when empty) the scene's render camera, adding a
