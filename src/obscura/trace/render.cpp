@@ -2,6 +2,8 @@
 
 #include <algorithm>
 #include <chrono>
+#include <cstdint>
+#include <limits>
 #include <mutex>
 #include <string>
 
@@ -101,8 +103,13 @@ RenderStats render(const TraceScene& scene, const Camera& camera, const Integrat
           if (!cancelled(settings)) render_samples(tile, pass_first, end);
         },
         progress ? ProgressCallback([&](int tiles_done, int) {
-          // Progress in samples × tiles over the whole render.
-          progress(pass_first * tile_count + (end - pass_first) * tiles_done, spp * tile_count);
+          // Progress in samples × tiles over the whole render, in 64 bits (a time-limited render
+          // asks for up to 2^30 samples) and scaled down to fit the callback's int.
+          const int64_t total = int64_t(spp) * tile_count;
+          const int64_t now =
+              int64_t(pass_first) * tile_count + int64_t(end - pass_first) * tiles_done;
+          const int64_t scale = total / std::numeric_limits<int>::max() + 1;
+          progress(int(now / scale), int(total / scale));
         })
                  : ProgressCallback());
     if (cancelled(settings)) {
