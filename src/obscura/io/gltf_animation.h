@@ -18,6 +18,8 @@ class Node;
 
 namespace obscura {
 
+class GltfAccessorReader;
+
 struct Quaternion {
   double x = 0, y = 0, z = 0, w = 1;
 };
@@ -37,8 +39,11 @@ class NodeAnimations {
  public:
   NodeAnimations() = default;
   // Reads animations[0]; unsupported channels (morph weights) are reported in `warnings`.
+  // Every accessor is read through `accessors` (which bounds and checks them); throws
+  // obscura::Error for inconsistent samplers (counts, times that are not finite or do not
+  // increase) and out-of-range node or sampler references.
   NodeAnimations(const tinygltf::Model& model, const std::string& file,
-                 std::vector<std::string>& warnings);
+                 GltfAccessorReader& accessors, std::vector<std::string>& warnings);
 
   // The node's local transform at `time` (its static TRS where no channel animates it).
   Matrix4 local_at(int node, double time) const;
