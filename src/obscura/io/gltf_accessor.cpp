@@ -96,12 +96,16 @@ uint64_t GltfAccessorReader::count(int index, const std::string& where) const {
   return layout(index, where).count;
 }
 
-GltfAccessorReader::Layout GltfAccessorReader::layout(int index, const std::string& where) const {
+const tinygltf::Accessor& GltfAccessorReader::accessor(int index, const std::string& where) const {
   if (index < 0 || size_t(index) >= model_.accessors.size())
     throw Error(file_ + ": " + where, "accessor index " + std::to_string(index) +
                                           " is out of range (the file has " +
                                           std::to_string(model_.accessors.size()) + ")");
-  const tinygltf::Accessor& a = model_.accessors[size_t(index)];
+  return model_.accessors[size_t(index)];
+}
+
+GltfAccessorReader::Layout GltfAccessorReader::layout(int index, const std::string& where) const {
+  const tinygltf::Accessor& a = accessor(index, where);
   const std::string at = file_ + ": " + where + " (accessor " + std::to_string(index) + ")";
   Layout l;
   l.type = a.type;
@@ -196,7 +200,15 @@ void GltfAccessorReader::charge(uint64_t bytes, const std::string& at) {
 std::vector<float> GltfAccessorReader::floats(int index,
                                               std::initializer_list<int> allowed_components,
                                               AccessorNumbers numbers, const std::string& where) {
-  const Layout l = layout(index, where);
+  // The element and component types first: they explain more than a range error would.
+  Layout l;
+  {
+    const tinygltf::Accessor& a = accessor(index, where);
+    l.type = a.type;
+    l.component_type = a.componentType;
+    l.components = tinygltf::GetNumComponentsInType(uint32_t(a.type));
+    l.normalized = a.normalized;
+  }
   const std::string at = file_ + ": " + where + " (accessor " + std::to_string(index) + ")";
   bool vector = l.type == TINYGLTF_TYPE_SCALAR || l.type == TINYGLTF_TYPE_VEC2 ||
                 l.type == TINYGLTF_TYPE_VEC3 || l.type == TINYGLTF_TYPE_VEC4;
@@ -223,6 +235,7 @@ std::vector<float> GltfAccessorReader::floats(int index,
                 (numbers == AccessorNumbers::kFloatOrNormalized     ? ", or normalized BYTE/SHORT)"
                  : numbers == AccessorNumbers::kFloatOrSmallInteger ? ", BYTE or SHORT)"
                                                                     : ")"));
+  l = layout(index, where);
   uint64_t values = 0, bytes = 0;
   if (!multiply(l.count, uint64_t(l.components), &values) ||
       !multiply(values, sizeof(float), &bytes))
@@ -261,17 +274,18 @@ std::vector<float> GltfAccessorReader::floats(int index,
 
 std::vector<uint32_t> GltfAccessorReader::indices(int index, uint64_t vertex_count,
                                                   const std::string& where) {
-  const Layout l = layout(index, where);
+  const tinygltf::Accessor& a = accessor(index, where);
   const std::string at = file_ + ": " + where + " (accessor " + std::to_string(index) + ")";
-  if (l.type != TINYGLTF_TYPE_SCALAR)
-    throw Error(at, "indices must be SCALAR, got " + type_name(l.type));
-  if ((l.component_type != TINYGLTF_COMPONENT_TYPE_UNSIGNED_BYTE &&
-       l.component_type != TINYGLTF_COMPONENT_TYPE_UNSIGNED_SHORT &&
-       l.component_type != TINYGLTF_COMPONENT_TYPE_UNSIGNED_INT) ||
-      l.normalized)
+  if (a.type != TINYGLTF_TYPE_SCALAR)
+    throw Error(at, "indices must be SCALAR, got " + type_name(a.type));
+  if ((a.componentType != TINYGLTF_COMPONENT_TYPE_UNSIGNED_BYTE &&
+       a.componentType != TINYGLTF_COMPONENT_TYPE_UNSIGNED_SHORT &&
+       a.componentType != TINYGLTF_COMPONENT_TYPE_UNSIGNED_INT) ||
+      a.normalized)
     throw Error(at, "indices must be UNSIGNED_BYTE, UNSIGNED_SHORT or UNSIGNED_INT, got " +
-                        std::string(l.normalized ? "normalized " : "") +
-                        component_type_name(l.component_type));
+                        std::string(a.normalized ? "normalized " : "") +
+                        component_type_name(a.componentType));
+  const Layout l = layout(index, where);
   uint64_t bytes = 0;
   if (!multiply(l.count, sizeof(uint32_t), &bytes))
     throw Error(at, "count " + std::to_string(l.count) + " is too large");

@@ -13,6 +13,7 @@
 
 namespace tinygltf {
 class Model;
+struct Accessor;
 }  // namespace tinygltf
 
 namespace obscura {
@@ -54,6 +55,7 @@ class GltfAccessorReader {
 
  private:
   struct Layout;
+  const tinygltf::Accessor& accessor(int index, const std::string& where) const;
   Layout layout(int index, const std::string& at) const;
   void charge(uint64_t bytes, const std::string& at);
 
