@@ -85,13 +85,12 @@ void check_nodes(const tinygltf::Model& model, const std::string& file) {
   for (size_t n = 0; n < count; ++n) {
     const tinygltf::Node& node = model.nodes[n];
     const std::string at = file + ": " + element("nodes", n);
+    // (tinygltf drops translation/rotation/scale when a matrix is given, so "both" never
+    // reaches here.)
     check_numbers(node.matrix, {16}, at + ".matrix");
     check_numbers(node.translation, {3}, at + ".translation");
     check_numbers(node.rotation, {4}, at + ".rotation");
     check_numbers(node.scale, {3}, at + ".scale");
-    if (!node.matrix.empty() &&
-        (!node.translation.empty() || !node.rotation.empty() || !node.scale.empty()))
-      throw Error(at, "has both a matrix and translation/rotation/scale (glTF allows one)");
     for (size_t c = 0; c < node.children.size(); ++c) {
       int child = node.children[c];
       const std::string child_at = at + "." + element("children", c);
