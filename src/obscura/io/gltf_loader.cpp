@@ -559,14 +559,13 @@ Scene load_gltf_bytes(std::span<const uint8_t> bytes, const std::string& name,
   for (size_t i = 0; i < model.images.size(); ++i) {
     if (images.decoded.count(int(i))) continue;
     auto failed = images.failed.find(int(i));
-    std::string what = model.images[i].uri.empty() || model.images[i].uri.rfind("data:", 0) == 0
-                           ? element("images", i)
-                           : "image '" + model.images[i].uri + "'";
+    const std::string& uri = model.images[i].uri;
+    bool external = !uri.empty() && uri.rfind("data:", 0) != 0;
     std::string why = failed != images.failed.end() ? failed->second
-                      : model.images[i].uri.rfind("data:", 0) == 0
-                          ? "malformed data URI"
-                          : "the file does not exist or cannot be read";
-    warnings.push_back(name + ": " + element("images", i) + ": " + what + " cannot be used (" +
+                      : external                    ? "the file does not exist or cannot be read"
+                                                    : "malformed data URI";
+    warnings.push_back(name + ": " + element("images", i) + ": " +
+                       (external ? "'" + uri + "' " : std::string()) + "cannot be used (" +
                        shorten(why) + "); its materials use their factors alone");
   }
   return GltfImporter(model, name, images, std::move(warnings), std::move(unsupported)).import();
