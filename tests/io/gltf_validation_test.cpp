@@ -101,6 +101,43 @@ TEST_F(GltfHostile, AnimationSamplersMustBeConsistent) {
   }
 }
 
+TEST_F(GltfHostile, ManyInstancesUnderALongAnimationAreBounded) {
+  // 1024 keys on a root with 1030 mesh children: each child would get its own 1024 world keys
+  // (~270 bytes each); past kMaxWorldKeys (2^20) in all the file is refused instead.
+  const int keys = 1024, children = 1030;
+  std::vector<float> times(keys), values(3 * keys);
+  for (int k = 0; k < keys; ++k) times[k] = 0.01f * float(k), values[3 * k] = 0.001f * float(k);
+  std::vector<uint8_t> bytes = GltfHostile::buffer_bytes();
+  size_t at = bytes.size();
+  bytes.resize(at + 16 * keys);
+  std::memcpy(bytes.data() + at, times.data(), 4 * keys);
+  std::memcpy(bytes.data() + at + 4 * keys, values.data(), 12 * keys);
+  json doc = triangle();
+  set_buffer(doc, bytes);
+  doc["bufferViews"].push_back({{"buffer", 0}, {"byteOffset", at}, {"byteLength", 4 * keys}});
+  doc["bufferViews"].push_back(
+      {{"buffer", 0}, {"byteOffset", at + 4 * keys}, {"byteLength", 12 * keys}});
+  doc["accessors"].push_back(
+      {{"bufferView", 3}, {"componentType", 5126}, {"count", keys}, {"type", "SCALAR"}});
+  doc["accessors"].push_back(
+      {{"bufferView", 4}, {"componentType", 5126}, {"count", keys}, {"type", "VEC3"}});
+  doc["animations"] = {
+      {{"channels", {{{"sampler", 0}, {"target", {{"node", 0}, {"path", "translation"}}}}}},
+       {"samplers", {{{"input", 2}, {"output", 3}}}}}};
+  doc["nodes"] = {{{"children", json::array()}}};
+  for (int c = 1; c <= children; ++c) {
+    doc["nodes"][0]["children"].push_back(c);
+    doc["nodes"].push_back({{"mesh", 0}});
+  }
+  try {
+    load_gltf(write("many-keys.gltf", doc));
+    ADD_FAILURE() << "no error";
+  } catch (const Error& e) {
+    EXPECT_THAT(e.what(), testing::HasSubstr("many-keys.gltf: nodes["));
+    EXPECT_THAT(e.what(), testing::HasSubstr("more than 1048576 transform keys"));
+  }
+}
+
 // --- Files: buffers that are directories, missing, malformed; the glTF file itself ---
 
 TEST_F(GltfHostile, BufferUrisThatCannotBeReadAreClearErrors) {

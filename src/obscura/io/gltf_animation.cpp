@@ -77,7 +77,7 @@ Transform without_scale(const Matrix4& m) {
 
 NodeAnimations::NodeAnimations(const tinygltf::Model& model, const std::string& file,
                                GltfAccessorReader& accessors, std::vector<std::string>& warnings)
-    : model_(&model), parent_(model.nodes.size(), -1) {
+    : model_(&model), file_(file), parent_(model.nodes.size(), -1) {
   for (size_t n = 0; n < model.nodes.size(); ++n)
     for (int child : model.nodes[n].children)
       if (child >= 0 && size_t(child) < parent_.size()) parent_[child] = int(n);
@@ -136,6 +136,11 @@ NodeAnimations::NodeAnimations(const tinygltf::Model& model, const std::string& 
                     "key times must increase (time " + std::to_string(k) + " = " +
                         std::to_string(times[k]) + " after " + std::to_string(times[k - 1]) + ")");
     }
+    read_keys_ += times.size();
+    if (read_keys_ > kMaxAnimationKeys)
+      throw Error(
+          file + ": " + sampler_path + ".input",
+          "the animation has more than " + std::to_string(kMaxAnimationKeys) + " key times in all");
     channel.times.assign(times.begin(), times.end());
     std::vector<float> values =
         accessors.floats(s.output, {width},
@@ -210,7 +215,7 @@ Matrix4 NodeAnimations::local_at(int node, double time) const {
   return trs_matrix(t, q, s);
 }
 
-std::vector<TransformKey> NodeAnimations::world_keys(int node) const {
+std::vector<TransformKey> NodeAnimations::world_keys(int node) {
   std::set<double> times;
   int depth = 0;
   for (int n = node; n >= 0 && depth < 256; n = parent_[n], ++depth) {
@@ -220,6 +225,13 @@ std::vector<TransformKey> NodeAnimations::world_keys(int node) const {
          {&found->second.translation, &found->second.rotation, &found->second.scale})
       if (*c) times.insert((*c)->times.begin(), (*c)->times.end());
   }
+  // Every instance under an animated node gets its own keys: bound them all together, so that
+  // many nodes below one long animation cannot multiply it without limit.
+  emitted_keys_ += times.size();
+  if (emitted_keys_ > kMaxWorldKeys)
+    throw Error(file_ + ": " + "nodes[" + std::to_string(node) + "]",
+                "animated instances need more than " + std::to_string(kMaxWorldKeys) +
+                    " transform keys in all (" + std::to_string(times.size()) + " for this node)");
   std::vector<TransformKey> keys;
   for (double time : times) {
     Matrix4 m = Matrix4::identity();
