@@ -488,11 +488,23 @@ TEST_F(GltfBadInput, NanPositions) {
                {"nan.gltf", "POSITION", "vertex 1", "not finite"});
 }
 
-TEST_F(GltfBadInput, MissingTexture) {
-  // BoxTextured.gltf copied without its PNG (and with its .bin).
+TEST_F(GltfBadInput, MissingTextureIsOneWarningAndTheFactorAlone) {
+  // BoxTextured.gltf copied without its PNG (and with its .bin): it still loads, its material
+  // keeps its base colour factor without a texture, and one warning names the missing file.
   std::filesystem::copy(sample("BoxTextured/glTF/BoxTextured.gltf"), dir + "/BoxTextured.gltf");
   std::filesystem::copy(sample("BoxTextured/glTF/BoxTextured0.bin"), dir + "/BoxTextured0.bin");
-  expect_error(dir + "/BoxTextured.gltf", {"BoxTextured.gltf", "images[0]", "CesiumLogoFlat.png"});
+  Scene scene = load_gltf(dir + "/BoxTextured.gltf");
+  EXPECT_TRUE(scene.textures.empty());
+  int warnings = 0;
+  for (const std::string& w : scene.warnings)
+    if (w.find("CesiumLogoFlat.png") != std::string::npos) {
+      ++warnings;
+      EXPECT_THAT(w, testing::HasSubstr("BoxTextured.gltf: images[0]"));
+    }
+  EXPECT_EQ(warnings, 1);
+  ASSERT_FALSE(scene.materials.empty());
+  const auto& mr = std::get<MetallicRoughnessMaterial>(scene.materials[0].model);
+  EXPECT_FALSE(mr.base_color_texture.valid());
 }
 
 TEST_F(GltfBadInput, CliReportsTheErrorAndExitsOne) {

@@ -7,6 +7,7 @@
 #include <cstring>
 #include <set>
 
+#include "obscura/io/gltf_accessor.h"
 #include "obscura/math/error.h"
 
 namespace obscura {
@@ -75,8 +76,8 @@ Transform without_scale(const Matrix4& m) {
 }
 
 NodeAnimations::NodeAnimations(const tinygltf::Model& model, const std::string& file,
-                               std::vector<std::string>& warnings)
-    : model_(&model), parent_(model.nodes.size(), -1) {
+                               GltfAccessorReader& accessors, std::vector<std::string>& warnings)
+    : model_(&model), file_(file), parent_(model.nodes.size(), -1) {
   for (size_t n = 0; n < model.nodes.size(); ++n)
     for (int child : model.nodes[n].children)
       if (child >= 0 && size_t(child) < parent_.size()) parent_[child] = int(n);
@@ -87,61 +88,78 @@ NodeAnimations::NodeAnimations(const tinygltf::Model& model, const std::string& 
   const tinygltf::Animation& animation = model.animations[0];
   for (size_t c = 0; c < animation.channels.size(); ++c) {
     const tinygltf::AnimationChannel& ch = animation.channels[c];
-    std::string where = file + ": animations[0].channels[" + std::to_string(c) + "]";
+    std::string channel_path = "animations[0].channels[" + std::to_string(c) + "]";
+    std::string where = file + ": " + channel_path;
     if (ch.target_node < 0 || size_t(ch.target_node) >= model.nodes.size())
-      throw Error(where, "target node is out of range");
+      throw Error(where + ".target.node", "node index " + std::to_string(ch.target_node) +
+                                              " is out of range (the file has " +
+                                              std::to_string(model.nodes.size()) + ")");
     if (ch.sampler < 0 || size_t(ch.sampler) >= animation.samplers.size())
-      throw Error(where, "sampler index is out of range");
-    int width = ch.target_path == "rotation" ? 4 : 3;
+      throw Error(where + ".sampler", "sampler index " + std::to_string(ch.sampler) +
+                                          " is out of range (the animation has " +
+                                          std::to_string(animation.samplers.size()) + ")");
     if (ch.target_path != "translation" && ch.target_path != "rotation" &&
         ch.target_path != "scale") {
       warnings.push_back(where + ": '" + ch.target_path + "' animation is not supported");
       continue;
     }
-    const tinygltf::AnimationSampler& s = animation.samplers[ch.sampler];
-    // Both accessors must be float: read them through the buffer with range checks.
-    auto read = [&](int index, int components) {
-      if (index < 0 || size_t(index) >= model.accessors.size())
-        throw Error(where, "sampler accessor index is out of range");
-      const tinygltf::Accessor& a = model.accessors[index];
-      if (a.componentType != TINYGLTF_COMPONENT_TYPE_FLOAT ||
-          tinygltf::GetNumComponentsInType(uint32_t(a.type)) != components || a.bufferView < 0 ||
-          size_t(a.bufferView) >= model.bufferViews.size())
-        throw Error(where, "animation data must be float accessors with a buffer view");
-      const tinygltf::BufferView& v = model.bufferViews[a.bufferView];
-      if (v.buffer < 0 || size_t(v.buffer) >= model.buffers.size())
-        throw Error(where, "buffer index is out of range");
-      size_t stride = v.byteStride ? v.byteStride : 4 * components;
-      size_t begin = v.byteOffset + a.byteOffset;
-      const std::vector<unsigned char>& data = model.buffers[v.buffer].data;
-      if (a.count == 0 || begin + stride * (a.count - 1) + 4 * components > data.size())
-        throw Error(where, "animation data runs past the end of its buffer");
-      std::vector<double> out;
-      for (size_t i = 0; i < a.count; ++i)
-        for (int k = 0; k < components; ++k) {
-          float f;
-          std::memcpy(&f, data.data() + begin + i * stride + 4 * k, 4);
-          out.push_back(f);
-        }
-      return out;
-    };
+    if (model.nodes[size_t(ch.target_node)].matrix.size() != 0)
+      throw Error(where + ".target.node", "node " + std::to_string(ch.target_node) +
+                                              " has a matrix; an animated node must use TRS");
+    const int width = ch.target_path == "rotation" ? 4 : 3;
+    const tinygltf::AnimationSampler& s = animation.samplers[size_t(ch.sampler)];
+    std::string sampler_path = "animations[0].samplers[" + std::to_string(ch.sampler) + "]";
+    if (s.interpolation != "LINEAR" && s.interpolation != "STEP" &&
+        s.interpolation != "CUBICSPLINE")
+      throw Error(
+          file + ": " + sampler_path + ".interpolation",
+          "unknown interpolation '" + s.interpolation + "' (expected LINEAR, STEP or CUBICSPLINE)");
+    const bool cubic = s.interpolation == "CUBICSPLINE";
+    // Counts first, so that a mismatch is reported before either array is decoded.
+    uint64_t keys = accessors.count(s.input, sampler_path + ".input");
+    uint64_t outputs = accessors.count(s.output, sampler_path + ".output");
+    if (outputs != keys * (cubic ? 3 : 1))
+      throw Error(file + ": " + sampler_path,
+                  "input has " + std::to_string(keys) + " key times but output has " +
+                      std::to_string(outputs) + " values (expected " +
+                      std::to_string(keys * (cubic ? 3 : 1)) + " for " + s.interpolation + ")");
     Channel channel;
-    channel.times = read(s.input, 1);
-    std::vector<double> values = read(s.output, width);
+    std::vector<float> times =
+        accessors.floats(s.input, {1}, AccessorNumbers::kFloat, sampler_path + ".input");
+    for (size_t k = 0; k < times.size(); ++k) {
+      if (!std::isfinite(times[k]) || times[k] < 0)
+        throw Error(file + ": " + sampler_path + ".input", "key time " + std::to_string(k) + " = " +
+                                                               std::to_string(times[k]) +
+                                                               " is not a finite time ≥ 0");
+      if (k > 0 && !(times[k] > times[k - 1]))
+        throw Error(file + ": " + sampler_path + ".input",
+                    "key times must increase (time " + std::to_string(k) + " = " +
+                        std::to_string(times[k]) + " after " + std::to_string(times[k - 1]) + ")");
+    }
+    read_keys_ += times.size();
+    if (read_keys_ > kMaxAnimationKeys)
+      throw Error(
+          file + ": " + sampler_path + ".input",
+          "the animation has more than " + std::to_string(kMaxAnimationKeys) + " key times in all");
+    channel.times.assign(times.begin(), times.end());
+    std::vector<float> values =
+        accessors.floats(s.output, {width},
+                         width == 4 ? AccessorNumbers::kFloatOrNormalized : AccessorNumbers::kFloat,
+                         sampler_path + ".output");
+    for (size_t k = 0; k < values.size(); ++k)
+      if (!std::isfinite(values[k]))
+        throw Error(file + ": " + sampler_path + ".output",
+                    "value " + std::to_string(k / width) + " is not finite");
     channel.step = s.interpolation == "STEP";
-    if (s.interpolation == "CUBICSPLINE") {
+    if (cubic) {
       // Keep each key's value, dropping the tangents: linear between keys.
       warnings.push_back(where + ": CUBICSPLINE interpolation is approximated as LINEAR");
-      for (size_t k = 0; k < channel.times.size() && (3 * k + 2) * width <= values.size(); ++k)
+      for (size_t k = 0; k < channel.times.size(); ++k)
         channel.values.insert(channel.values.end(), values.begin() + (3 * k + 1) * width,
                               values.begin() + (3 * k + 2) * width);
     } else {
-      channel.values = std::move(values);
+      channel.values.assign(values.begin(), values.end());
     }
-    if (channel.values.size() != channel.times.size() * width)
-      throw Error(where, "sampler input and output counts differ");
-    for (size_t k = 1; k < channel.times.size(); ++k)
-      if (!(channel.times[k] > channel.times[k - 1])) throw Error(where, "key times must increase");
     NodeChannels& node = channels_[ch.target_node];
     (ch.target_path == "translation" ? node.translation
      : ch.target_path == "rotation"  ? node.rotation
@@ -197,7 +215,7 @@ Matrix4 NodeAnimations::local_at(int node, double time) const {
   return trs_matrix(t, q, s);
 }
 
-std::vector<TransformKey> NodeAnimations::world_keys(int node) const {
+std::vector<TransformKey> NodeAnimations::world_keys(int node) {
   std::set<double> times;
   int depth = 0;
   for (int n = node; n >= 0 && depth < 256; n = parent_[n], ++depth) {
@@ -207,6 +225,13 @@ std::vector<TransformKey> NodeAnimations::world_keys(int node) const {
          {&found->second.translation, &found->second.rotation, &found->second.scale})
       if (*c) times.insert((*c)->times.begin(), (*c)->times.end());
   }
+  // Every instance under an animated node gets its own keys: bound them all together, so that
+  // many nodes below one long animation cannot multiply it without limit.
+  emitted_keys_ += times.size();
+  if (emitted_keys_ > kMaxWorldKeys)
+    throw Error(file_ + ": " + "nodes[" + std::to_string(node) + "]",
+                "animated instances need more than " + std::to_string(kMaxWorldKeys) +
+                    " transform keys in all (" + std::to_string(times.size()) + " for this node)");
   std::vector<TransformKey> keys;
   for (double time : times) {
     Matrix4 m = Matrix4::identity();

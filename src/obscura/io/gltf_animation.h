@@ -2,6 +2,7 @@
 // transforms for motion blur from the first animation's translation/rotation/scale channels.
 #pragma once
 
+#include <cstddef>
 #include <map>
 #include <optional>
 #include <string>
@@ -17,6 +18,8 @@ class Node;
 }  // namespace tinygltf
 
 namespace obscura {
+
+class GltfAccessorReader;
 
 struct Quaternion {
   double x = 0, y = 0, z = 0, w = 1;
@@ -35,16 +38,25 @@ Transform without_scale(const Matrix4& m);
 
 class NodeAnimations {
  public:
+  // Key times read from all channels together, and world keys handed out to all instances and
+  // cameras together (~270 bytes each): far above a real animation, bounded against hostile ones.
+  static constexpr size_t kMaxAnimationKeys = size_t(1) << 20;
+  static constexpr size_t kMaxWorldKeys = size_t(1) << 20;
+
   NodeAnimations() = default;
   // Reads animations[0]; unsupported channels (morph weights) are reported in `warnings`.
+  // Every accessor is read through `accessors` (which bounds and checks them); throws
+  // obscura::Error for inconsistent samplers (counts, times that are not finite or do not
+  // increase) and out-of-range node or sampler references.
   NodeAnimations(const tinygltf::Model& model, const std::string& file,
-                 std::vector<std::string>& warnings);
+                 GltfAccessorReader& accessors, std::vector<std::string>& warnings);
 
   // The node's local transform at `time` (its static TRS where no channel animates it).
   Matrix4 local_at(int node, double time) const;
   // Keyframes of the node's object→world transform at every key time of it and its ancestors;
-  // empty when nothing on its path to the root is animated.
-  std::vector<TransformKey> world_keys(int node) const;
+  // empty when nothing on its path to the root is animated. Throws obscura::Error past
+  // kMaxWorldKeys keys over all calls.
+  std::vector<TransformKey> world_keys(int node);
 
  private:
   struct Channel {
@@ -56,6 +68,9 @@ class NodeAnimations {
     std::optional<Channel> translation, rotation, scale;
   };
   const tinygltf::Model* model_ = nullptr;
+  std::string file_;
+  size_t read_keys_ = 0;
+  size_t emitted_keys_ = 0;
   std::map<int, NodeChannels> channels_;
   std::vector<int> parent_;  // −1 for roots
 };

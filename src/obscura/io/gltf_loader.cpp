@@ -6,11 +6,15 @@
 #include <cmath>
 #include <cstring>
 #include <filesystem>
+#include <fstream>
+#include <limits>
 #include <map>
 #include <set>
 
 #include "obscura/io/camera_mapping.h"
+#include "obscura/io/gltf_accessor.h"
 #include "obscura/io/gltf_animation.h"
+#include "obscura/io/gltf_validation.h"
 #include "obscura/io/texture_loader.h"
 #include "obscura/math/error.h"
 
@@ -22,27 +26,52 @@ std::string element(const char* array, size_t index) {
   return std::string(array) + "[" + std::to_string(index) + "]";
 }
 
-// Decoded images, filled by tinygltf's image callback (which we route to OpenImageIO).
+// Decoded images, filled by tinygltf's image callback (which we route to OpenImageIO). An image
+// that cannot be read is a warning, not an error: its material renders with the factor alone.
 struct ImageStore {
   std::string file;
-  std::map<int, Texture> decoded;  // by glTF image index
+  const tinygltf::Model* model = nullptr;  // filled by tinygltf while it parses
+  std::map<int, Texture> decoded;          // by glTF image index
+  std::map<int, std::string> failed;       // by glTF image index: why it could not be decoded
 };
 
-bool decode_image(tinygltf::Image* image, const int image_index, std::string* err, std::string*,
-                  int, int, const unsigned char* bytes, int size, void* user) {
+bool decode_image(tinygltf::Image* image, const int image_index, std::string*, std::string*, int,
+                  int, const unsigned char* bytes, int size, void* user) {
   auto* store = static_cast<ImageStore*>(user);
-  std::string source = store->file + "#" + element("images", image_index);
+  std::string source = store->file + ": " + element("images", size_t(image_index));
   if (!image->uri.empty() && image->uri.rfind("data:", 0) != 0) source = image->uri;
+  // tinygltf hands over a bufferView's bytes without checking that the view lies inside its
+  // buffer: check it here, before reading them.
+  if (image->bufferView >= 0) {
+    const tinygltf::Model& model = *store->model;
+    bool inside = false;
+    if (size_t(image->bufferView) < model.bufferViews.size()) {
+      const tinygltf::BufferView& view = model.bufferViews[size_t(image->bufferView)];
+      uint64_t end = 0;
+      inside =
+          view.buffer >= 0 && size_t(view.buffer) < model.buffers.size() &&
+          !__builtin_add_overflow(uint64_t(view.byteOffset), uint64_t(view.byteLength), &end) &&
+          end <= model.buffers[size_t(view.buffer)].data.size() &&
+          view.byteLength <= size_t(std::numeric_limits<int>::max());
+    }
+    if (!inside) {
+      store->failed[image_index] =
+          "bufferView " + std::to_string(image->bufferView) + " runs past the end of its buffer";
+      return true;
+    }
+  }
   try {
     std::string hint = image->mimeType;
-    if (hint.empty() && !image->uri.empty())
-      hint = std::filesystem::path(image->uri).extension().string().substr(1);
+    if (hint.empty() && !image->uri.empty()) {
+      hint = std::filesystem::path(image->uri).extension().string();
+      if (!hint.empty()) hint = hint.substr(1);
+    }
     store->decoded[image_index] =
         decode_texture(std::span<const uint8_t>(bytes, size_t(std::max(size, 0))), source, hint,
                        TextureEncoding::kSrgb);
   } catch (const Error& e) {
-    if (err) *err += e.what();
-    return false;
+    store->failed[image_index] = e.what();
+    return true;
   }
   // tinygltf wants the image described; keep no pixels in its copy.
   image->width = store->decoded[image_index].width;
@@ -51,136 +80,18 @@ bool decode_image(tinygltf::Image* image, const int image_index, std::string* er
   return true;
 }
 
-// Reads glTF accessors with full range checks: every element must lie inside its buffer view,
-// and the view inside its buffer.
-class AccessorReader {
- public:
-  AccessorReader(const tinygltf::Model& model, std::string file)
-      : model_(model), file_(std::move(file)) {}
-
-  const tinygltf::Accessor& accessor(int index, const std::string& where) const {
-    if (index < 0 || size_t(index) >= model_.accessors.size())
-      throw Error(file_ + ": " + where, "accessor index " + std::to_string(index) +
-                                            " is out of range (the file has " +
-                                            std::to_string(model_.accessors.size()) + ")");
-    return model_.accessors[index];
-  }
-
-  // `components` floats per element; normalized integers map to [0, 1] (or [−1, 1]).
-  std::vector<float> floats(int index, int components, const std::string& where) const {
-    const tinygltf::Accessor& a = accessor(index, where);
-    std::string at = where + " (" + element("accessors", index) + ")";
-    int n = tinygltf::GetNumComponentsInType(uint32_t(a.type));
-    if (n != components)
-      throw Error(file_ + ": " + at, "expected " + std::to_string(components) +
-                                         " components per element, got " + std::to_string(n));
-    std::vector<float> out(a.count * size_t(n));
-    read(a, at, [&](const uint8_t* p, size_t i) {
-      for (int c = 0; c < n; ++c) out[i * n + c] = component(a, p, c);
-    });
-    return out;
-  }
-
-  std::vector<uint32_t> indices(int index, const std::string& where) const {
-    const tinygltf::Accessor& a = accessor(index, where);
-    std::string at = where + " (" + element("accessors", index) + ")";
-    if (a.type != TINYGLTF_TYPE_SCALAR) throw Error(file_ + ": " + at, "indices must be scalars");
-    std::vector<uint32_t> out(a.count);
-    read(a, at, [&](const uint8_t* p, size_t i) {
-      switch (a.componentType) {
-        case TINYGLTF_COMPONENT_TYPE_UNSIGNED_BYTE:
-          out[i] = *p;
-          break;
-        case TINYGLTF_COMPONENT_TYPE_UNSIGNED_SHORT:
-          out[i] = load<uint16_t>(p);
-          break;
-        case TINYGLTF_COMPONENT_TYPE_UNSIGNED_INT:
-          out[i] = load<uint32_t>(p);
-          break;
-        default:
-          throw Error(file_ + ": " + at, "indices must be unsigned integers");
-      }
-    });
-    return out;
-  }
-
- private:
-  template <typename T>
-  static T load(const uint8_t* p) {
-    T v;
-    std::memcpy(&v, p, sizeof v);
-    return v;
-  }
-
-  float component(const tinygltf::Accessor& a, const uint8_t* p, int c) const {
-    switch (a.componentType) {
-      case TINYGLTF_COMPONENT_TYPE_FLOAT:
-        return load<float>(p + 4 * c);
-      case TINYGLTF_COMPONENT_TYPE_UNSIGNED_BYTE: {
-        float v = p[c];
-        return a.normalized ? v / 255.f : v;
-      }
-      case TINYGLTF_COMPONENT_TYPE_BYTE: {
-        float v = float(int8_t(p[c]));
-        return a.normalized ? std::max(v / 127.f, -1.f) : v;
-      }
-      case TINYGLTF_COMPONENT_TYPE_UNSIGNED_SHORT: {
-        float v = load<uint16_t>(p + 2 * c);
-        return a.normalized ? v / 65535.f : v;
-      }
-      case TINYGLTF_COMPONENT_TYPE_SHORT: {
-        float v = load<int16_t>(p + 2 * c);
-        return a.normalized ? std::max(v / 32767.f, -1.f) : v;
-      }
-      case TINYGLTF_COMPONENT_TYPE_UNSIGNED_INT:
-        return float(load<uint32_t>(p + 4 * c));
-      default:
-        throw Error(file_, "unsupported accessor component type");
-    }
-  }
-
-  template <typename F>
-  void read(const tinygltf::Accessor& a, const std::string& at, F&& per_element) const {
-    if (a.sparse.isSparse) throw Error(file_ + ": " + at, "sparse accessors are not supported");
-    if (a.count == 0) return;
-    if (a.bufferView < 0) {  // no data: all zeros, as glTF specifies
-      std::vector<uint8_t> zeros(64, 0);
-      for (size_t i = 0; i < a.count; ++i) per_element(zeros.data(), i);
-      return;
-    }
-    if (size_t(a.bufferView) >= model_.bufferViews.size())
-      throw Error(file_ + ": " + at,
-                  "bufferView " + std::to_string(a.bufferView) + " is out of range");
-    const tinygltf::BufferView& view = model_.bufferViews[a.bufferView];
-    if (view.buffer < 0 || size_t(view.buffer) >= model_.buffers.size())
-      throw Error(file_ + ": " + element("bufferViews", a.bufferView),
-                  "buffer index is out of range");
-    const std::vector<unsigned char>& buffer = model_.buffers[view.buffer].data;
-    int component_size = tinygltf::GetComponentSizeInBytes(uint32_t(a.componentType));
-    int components = tinygltf::GetNumComponentsInType(uint32_t(a.type));
-    if (component_size <= 0 || components <= 0)
-      throw Error(file_ + ": " + at, "invalid component type or element type");
-    size_t element_size = size_t(component_size) * components;
-    size_t stride = view.byteStride ? view.byteStride : element_size;
-    size_t first = view.byteOffset + a.byteOffset;
-    size_t end = first + stride * (a.count - 1) + element_size;
-    if (view.byteOffset + view.byteLength > buffer.size() ||
-        end > view.byteOffset + view.byteLength)
-      throw Error(file_ + ": " + at,
-                  "data runs past the end of its buffer (" + std::to_string(end) + " > " +
-                      std::to_string(buffer.size()) + " bytes): truncated file?");
-    for (size_t i = 0; i < a.count; ++i) per_element(buffer.data() + first + i * stride, i);
-  }
-
-  const tinygltf::Model& model_;
-  std::string file_;
-};
-
 // Everything the loader builds while walking the file.
 class GltfImporter {
  public:
-  GltfImporter(const tinygltf::Model& model, std::string file, ImageStore& images)
-      : model_(model), file_(std::move(file)), images_(images), accessors_(model_, file_) {}
+  GltfImporter(const tinygltf::Model& model, std::string file, ImageStore& images,
+               std::vector<std::string> warnings, std::set<std::string> ignored_extensions)
+      : model_(model),
+        file_(std::move(file)),
+        images_(images),
+        accessors_(model_, file_),
+        ignored_extensions_(std::move(ignored_extensions)) {
+    scene_.warnings = std::move(warnings);
+  }
 
   Scene import();
 
@@ -201,7 +112,7 @@ class GltfImporter {
   const tinygltf::Model& model_;
   std::string file_;
   ImageStore& images_;
-  AccessorReader accessors_;
+  GltfAccessorReader accessors_;
   Scene scene_;
   std::map<std::pair<int, TextureEncoding>, int32_t> textures_;  // (glTF texture, encoding) → ours
   // Per glTF mesh, its primitives as (our mesh, material) pairs.
@@ -210,6 +121,7 @@ class GltfImporter {
   std::map<std::string, uint32_t> geometry_;
   int default_material_ = -1;
   NodeAnimations animations_;
+  std::set<std::string> ignored_extensions_;  // warned about already
 };
 
 double number(const tinygltf::Value& v, const char* key, double fallback) {
@@ -249,9 +161,7 @@ TextureRef GltfImporter::texture(int texture_index, int uv_set, TextureEncoding 
     fail(element("textures", texture_index),
          "image index " + std::to_string(gt.source) + " is out of range");
   auto image = images_.decoded.find(gt.source);
-  if (image == images_.decoded.end())
-    fail(element("images", gt.source),
-         "image '" + model_.images[gt.source].uri + "' could not be loaded (missing file?)");
+  if (image == images_.decoded.end()) return {};  // warned about once, at load: the factor alone
   Texture t = image->second;  // a copy: one glTF image may be used with two encodings
   t.name = !gt.name.empty() ? gt.name : model_.images[gt.source].name;
   if (t.name.empty()) t.name = model_.images[gt.source].uri;
@@ -301,8 +211,9 @@ void GltfImporter::import_materials() {
         }
       } else if (name == "KHR_materials_ior") {
         mr.ior = float(number(value, "ior", 1.5));
-      } else {
-        scene_.warnings.push_back(file_ + ": " + where + ": extension " + name + " is ignored");
+      } else if (ignored_extensions_.insert(name).second) {
+        scene_.warnings.push_back(file_ + ": " + where + ": extension " + name +
+                                  " is not supported; it is ignored");
       }
     }
     Material m;
@@ -355,7 +266,8 @@ Mesh GltfImporter::import_primitive(const tinygltf::Primitive& p, const std::str
   };
   int position = attribute("POSITION");
   if (position < 0) fail(where, "primitive has no POSITION attribute");
-  std::vector<float> xyz = accessors_.floats(position, 3, where + ".attributes.POSITION");
+  std::vector<float> xyz = accessors_.floats(position, {3}, AccessorNumbers::kFloatOrSmallInteger,
+                                             where + ".attributes.POSITION");
   mesh.positions.resize(xyz.size() / 3);
   for (size_t i = 0; i < mesh.positions.size(); ++i) {
     mesh.positions[i] = {xyz[3 * i], xyz[3 * i + 1], xyz[3 * i + 2]};
@@ -364,49 +276,39 @@ Mesh GltfImporter::import_primitive(const tinygltf::Primitive& p, const std::str
       fail(where + ".attributes.POSITION",
            "vertex " + std::to_string(i) + " is not finite (NaN or infinity)");
   }
+  xyz = {};
   size_t n = mesh.positions.size();
-  auto check_count = [&](size_t count, const char* key) {
-    if (count != n)
-      fail(where + ".attributes." + key,
-           std::to_string(count) + " elements for " + std::to_string(n) + " positions");
+  // Every other attribute has one element per position; checked before it is read.
+  auto read = [&](const char* key, std::initializer_list<int> components, AccessorNumbers numbers,
+                  int* got_components = nullptr) {
+    std::string at = where + ".attributes." + key;
+    int a = attribute(key);
+    if (a < 0) return std::vector<float>{};
+    if (uint64_t count = accessors_.count(a, at); count != n)
+      fail(at, std::to_string(count) + " elements for " + std::to_string(n) + " positions");
+    if (got_components) *got_components = accessors_.components(a, at);
+    return accessors_.floats(a, components, numbers, at);
   };
-  if (int a = attribute("NORMAL"); a >= 0) {
-    std::vector<float> v = accessors_.floats(a, 3, where + ".attributes.NORMAL");
-    check_count(v.size() / 3, "NORMAL");
-    for (size_t i = 0; i < n; ++i) mesh.normals.emplace_back(v[3 * i], v[3 * i + 1], v[3 * i + 2]);
-  }
-  if (int a = attribute("TEXCOORD_0"); a >= 0) {
-    std::vector<float> v = accessors_.floats(a, 2, where + ".attributes.TEXCOORD_0");
-    check_count(v.size() / 2, "TEXCOORD_0");
-    for (size_t i = 0; i < n; ++i) mesh.uvs.emplace_back(v[2 * i], v[2 * i + 1]);
-  }
-  if (int a = attribute("TANGENT"); a >= 0) {
-    std::vector<float> v = accessors_.floats(a, 4, where + ".attributes.TANGENT");
-    check_count(v.size() / 4, "TANGENT");
-    for (size_t i = 0; i < n; ++i)
-      mesh.tangents.emplace_back(v[4 * i], v[4 * i + 1], v[4 * i + 2], v[4 * i + 3]);
-  }
-  if (int a = attribute("COLOR_0"); a >= 0) {
-    int components = tinygltf::GetNumComponentsInType(
-        uint32_t(accessors_.accessor(a, where + ".attributes.COLOR_0").type));
-    if (components != 3 && components != 4)
-      fail(where + ".attributes.COLOR_0", "expected VEC3 or VEC4 colours");
-    std::vector<float> v = accessors_.floats(a, components, where + ".attributes.COLOR_0");
-    check_count(v.size() / components, "COLOR_0");
-    for (size_t i = 0; i < n; ++i)
-      mesh.colors.emplace_back(v[components * i], v[components * i + 1], v[components * i + 2]);
-  }
+  std::vector<float> v = read("NORMAL", {3}, AccessorNumbers::kFloatOrNormalized);
+  for (size_t i = 0; i < v.size() / 3; ++i)
+    mesh.normals.emplace_back(v[3 * i], v[3 * i + 1], v[3 * i + 2]);
+  v = read("TEXCOORD_0", {2}, AccessorNumbers::kFloatOrSmallInteger);
+  for (size_t i = 0; i < v.size() / 2; ++i) mesh.uvs.emplace_back(v[2 * i], v[2 * i + 1]);
+  v = read("TANGENT", {4}, AccessorNumbers::kFloatOrNormalized);
+  for (size_t i = 0; i < v.size() / 4; ++i)
+    mesh.tangents.emplace_back(v[4 * i], v[4 * i + 1], v[4 * i + 2], v[4 * i + 3]);
+  int c = 0;
+  v = read("COLOR_0", {3, 4}, AccessorNumbers::kFloatOrNormalized, &c);
+  for (size_t i = 0; c > 0 && i < v.size() / size_t(c); ++i)
+    mesh.colors.emplace_back(v[c * i], v[c * i + 1], v[c * i + 2]);
+  v = {};
   std::vector<uint32_t> indices;
   if (p.indices >= 0) {
-    indices = accessors_.indices(p.indices, where + ".indices");
+    indices = accessors_.indices(p.indices, n, where + ".indices");
   } else {
     indices.resize(n);
     for (size_t i = 0; i < n; ++i) indices[i] = uint32_t(i);
   }
-  for (size_t i = 0; i < indices.size(); ++i)
-    if (indices[i] >= n)
-      fail(where + ".indices", "index " + std::to_string(i) + " = " + std::to_string(indices[i]) +
-                                   " is past the vertex count " + std::to_string(n));
   if (p.mode == TINYGLTF_MODE_TRIANGLES) {
     indices.resize(indices.size() / 3 * 3);
     mesh.indices = std::move(indices);
@@ -542,7 +444,7 @@ void GltfImporter::visit_node(int node_index, const Matrix4& world_from_parent, 
 Scene GltfImporter::import() {
   scene_.name = std::filesystem::path(file_).stem().string();
   import_materials();
-  animations_ = NodeAnimations(model_, file_, scene_.warnings);
+  animations_ = NodeAnimations(model_, file_, accessors_, scene_.warnings);
   int scene_index = model_.defaultScene >= 0 ? model_.defaultScene : 0;
   if (!model_.scenes.empty()) {
     if (size_t(scene_index) >= model_.scenes.size()) fail("scene", "scene index is out of range");
@@ -561,34 +463,118 @@ Scene GltfImporter::import() {
   return std::move(scene_);
 }
 
+// tinygltf's file access, bounded: only regular files (not a directory, FIFO or device, which
+// its own reader sizes with tellg and then tries to allocate), at most kMaxGltfFileBytes each.
+bool read_bounded(std::vector<unsigned char>* out, std::string* err, const std::string& path,
+                  void*) {
+  try {
+    *out = read_gltf_file(path);
+    return true;
+  } catch (const Error& e) {
+    if (err) *err += e.what();
+    return false;
+  }
+}
+
+bool file_exists(const std::string& path, void*) {
+  std::error_code ec;
+  return std::filesystem::exists(path, ec);
+}
+
+std::string keep_path(const std::string& path, void*) {
+  return path;
+}
+
+// tinygltf quotes whole data URIs in its messages: keep each line short.
+std::string shorten(const std::string& message) {
+  std::string out, line;
+  for (size_t i = 0; i <= message.size(); ++i) {
+    if (i == message.size() || message[i] == '\n') {
+      if (line.size() > 200) line = line.substr(0, 200) + "…";
+      if (!line.empty()) out += (out.empty() ? "" : "; ") + line;
+      line.clear();
+    } else {
+      line += message[i];
+    }
+  }
+  return out;
+}
+
 }  // namespace
 
-Scene load_gltf(const std::string& path) {
+std::vector<unsigned char> read_gltf_file(const std::string& path) {
   std::error_code ec;
-  if (!std::filesystem::is_regular_file(path, ec)) throw Error(path, "file does not exist");
+  auto status = std::filesystem::status(path, ec);
+  if (ec || !std::filesystem::exists(status)) throw Error(path, "file does not exist");
+  if (std::filesystem::is_directory(status)) throw Error(path, "is a directory, not a file");
+  if (!std::filesystem::is_regular_file(status))
+    throw Error(path, "is not a regular file (a device, FIFO or socket)");
+  uintmax_t size = std::filesystem::file_size(path, ec);
+  if (ec) throw Error(path, "cannot read: " + ec.message());
+  if (size > kMaxGltfFileBytes)
+    throw Error(path, "is " + std::to_string(size >> 20) + " MiB; glTF files and buffers over " +
+                          std::to_string(kMaxGltfFileBytes >> 20) + " MiB are not read");
+  if (size == 0) throw Error(path, "file is empty");
+  std::ifstream in(path, std::ios::binary);
+  std::vector<unsigned char> bytes(size);
+  if (!in || !in.read(reinterpret_cast<char*>(bytes.data()), std::streamsize(size)) ||
+      in.gcount() != std::streamsize(size))
+    throw Error(path, "cannot read the whole file");
+  return bytes;
+}
+
+Scene load_gltf_bytes(std::span<const uint8_t> bytes, const std::string& name,
+                      const std::string& base_dir) {
   tinygltf::TinyGLTF loader;
-  ImageStore images{path, {}};
-  loader.SetImageLoader(decode_image, &images);
   tinygltf::Model model;
+  ImageStore images{name, &model, {}, {}};
+  loader.SetImageLoader(decode_image, &images);
+  loader.SetFsCallbacks({file_exists, keep_path, read_bounded, nullptr, nullptr});
   std::string err, warn;
-  std::string ext = std::filesystem::path(path).extension().string();
-  std::transform(ext.begin(), ext.end(), ext.begin(),
-                 [](unsigned char c) { return std::tolower(c); });
-  bool ok = ext == ".glb" ? loader.LoadBinaryFromFile(&model, &err, &warn, path)
-                          : loader.LoadASCIIFromFile(&model, &err, &warn, path);
+  // The content decides, not the extension: binary glTF starts with the magic "glTF".
+  bool binary = bytes.size() >= 4 && std::memcmp(bytes.data(), "glTF", 4) == 0;
+  bool ok = false;
+  if (binary) {
+    uint32_t version = 0;
+    if (bytes.size() >= 8) std::memcpy(&version, bytes.data() + 4, 4);
+    if (version != 2)
+      throw Error(name, "GLB container version " + std::to_string(version) +
+                            " is not supported (expected 2)");
+    if (bytes.size() > kMaxGltfFileBytes) throw Error(name, "GLB file is too large");
+    ok = loader.LoadBinaryFromMemory(&model, &err, &warn, bytes.data(), unsigned(bytes.size()),
+                                     base_dir);
+  } else {
+    ok = loader.LoadASCIIFromString(
+        &model, &err, &warn, reinterpret_cast<const char*>(bytes.data()),
+        unsigned(std::min<size_t>(bytes.size(), kMaxGltfFileBytes)), base_dir);
+  }
   if (!ok || !err.empty()) {
-    while (!err.empty() && err.back() == '\n') err.pop_back();
-    throw Error(path,
+    err = shorten(err);
+    throw Error(name,
                 "not a valid glTF file: " + (err.empty() ? std::string("unknown error") : err));
   }
-  // tinygltf only warns when an external image is missing; a missing texture is an error here.
-  for (size_t i = 0; i < model.images.size(); ++i)
-    if (!images.decoded.count(int(i)))
-      throw Error(path + ": " + element("images", i),
-                  "image '" + model.images[i].uri + "' does not exist or cannot be decoded" +
-                      (warn.empty() ? "" : " (" + warn.substr(0, warn.find('\n')) + ")"));
-  Scene scene = GltfImporter(model, path, images).import();
-  return scene;
+  std::vector<std::string> warnings;
+  std::set<std::string> unsupported = validate_gltf_model(model, name, warnings);
+  // A texture that cannot be read is not worth failing the render for: warn once per image.
+  for (size_t i = 0; i < model.images.size(); ++i) {
+    if (images.decoded.count(int(i))) continue;
+    auto failed = images.failed.find(int(i));
+    const std::string& uri = model.images[i].uri;
+    bool external = !uri.empty() && uri.rfind("data:", 0) != 0;
+    std::string why = failed != images.failed.end() ? failed->second
+                      : external                    ? "the file does not exist or cannot be read"
+                                                    : "malformed data URI";
+    warnings.push_back(name + ": " + element("images", i) + ": " +
+                       (external ? "'" + uri + "' " : std::string()) + "cannot be used (" +
+                       shorten(why) + "); its materials use their factors alone");
+  }
+  return GltfImporter(model, name, images, std::move(warnings), std::move(unsupported)).import();
+}
+
+Scene load_gltf(const std::string& path) {
+  std::vector<unsigned char> bytes = read_gltf_file(path);
+  std::string base_dir = std::filesystem::path(path).parent_path().string();
+  return load_gltf_bytes(bytes, path, base_dir);
 }
 
 }  // namespace obscura

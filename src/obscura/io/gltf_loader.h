@@ -4,19 +4,39 @@
 // with POSITION, NORMAL, TEXCOORD_0, TANGENT, COLOR_0; the default scene's node hierarchy,
 // flattened into instances (meshes shared, not copied); metallic-roughness materials and their
 // textures and samplers; KHR_materials_emissive_strength, KHR_materials_specular,
-// KHR_materials_ior; KHR_lights_punctual; perspective and orthographic cameras; the first
-// animation's node translation/rotation/scale channels, as instance keyframes for motion blur.
+// KHR_materials_ior; KHR_lights_punctual; KHR_mesh_quantization; perspective and orthographic
+// cameras; the first animation's node translation/rotation/scale channels, as instance keyframes
+// for motion blur.
+//
+// Hostile files are expected: every accessor is checked against its buffer before anything is
+// allocated (gltf_accessor.h), what a file decodes to is bounded, the spec's structural rules are
+// enforced (gltf_validation.h), and files are read only when regular and at most
+// kMaxGltfFileBytes. An image that cannot be read is a warning; its material keeps its factors.
 #pragma once
 
+#include <cstdint>
+#include <span>
 #include <string>
+#include <vector>
 
 #include "obscura/scene/scene.h"
 
 namespace obscura {
 
+// The largest .gltf, .glb or external buffer/image file read (1 GiB; GLB itself caps at 4 GiB).
+inline constexpr uint64_t kMaxGltfFileBytes = uint64_t(1) << 30;
+
 // Throws obscura::Error naming the file and the glTF element (e.g. "meshes[2].primitives[0]")
 // for anything malformed: truncated files, indices or accessors out of range, NaN positions,
-// missing images.
+// an unsupported version or required extension, a node hierarchy with a cycle.
 Scene load_gltf(const std::string& path);
+
+// The same from bytes already in memory (binary glTF when they start with "glTF", JSON
+// otherwise); `name` prefixes messages, relative URIs resolve against `base_dir`.
+Scene load_gltf_bytes(std::span<const uint8_t> bytes, const std::string& name,
+                      const std::string& base_dir);
+
+// A whole file, if it is a regular file of at most kMaxGltfFileBytes; else obscura::Error.
+std::vector<unsigned char> read_gltf_file(const std::string& path);
 
 }  // namespace obscura
