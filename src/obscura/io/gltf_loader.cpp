@@ -14,6 +14,7 @@
 #include "obscura/io/camera_mapping.h"
 #include "obscura/io/gltf_accessor.h"
 #include "obscura/io/gltf_animation.h"
+#include "obscura/io/gltf_feature_warnings.h"
 #include "obscura/io/gltf_validation.h"
 #include "obscura/io/texture_loader.h"
 #include "obscura/math/error.h"
@@ -555,6 +556,7 @@ Scene load_gltf_bytes(std::span<const uint8_t> bytes, const std::string& name,
   }
   std::vector<std::string> warnings;
   std::set<std::string> unsupported = validate_gltf_model(model, name, warnings);
+  warn_unapplied_gltf_features(model, name, warnings);
   // A texture that cannot be read is not worth failing the render for: warn once per image.
   for (size_t i = 0; i < model.images.size(); ++i) {
     if (images.decoded.count(int(i))) continue;

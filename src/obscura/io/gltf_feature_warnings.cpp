@@ -1,0 +1,81 @@
+#include "obscura/io/gltf_feature_warnings.h"
+
+#include <tiny_gltf.h>
+
+namespace obscura {
+
+namespace {
+
+// Collects the elements that use one feature and words them as a single warning.
+class Uses {
+ public:
+  void add(const std::string& element) {
+    if (++count_ <= kNamed) named_ += (named_.empty() ? "" : ", ") + element;
+  }
+  void warn(const std::string& file, const std::string& feature, const std::string& instead,
+            std::vector<std::string>& warnings) const {
+    if (count_ == 0) return;
+    std::string who = named_;
+    if (count_ > kNamed) who += " and " + std::to_string(count_ - kNamed) + " more";
+    warnings.push_back(file + ": " + feature + " is not supported yet (" + who + "); " + instead);
+  }
+
+ private:
+  static constexpr size_t kNamed = 3;
+  size_t count_ = 0;
+  std::string named_;
+};
+
+std::string material_name(const tinygltf::Model& model, size_t i) {
+  const std::string& name = model.materials[i].name;
+  return "materials[" + std::to_string(i) + "]" + (name.empty() ? "" : " '" + name + "'");
+}
+
+}  // namespace
+
+void warn_unapplied_gltf_features(const tinygltf::Model& model, const std::string& file,
+                                  std::vector<std::string>& warnings) {
+  Uses mask, blend, texcoord;
+  for (size_t i = 0; i < model.materials.size(); ++i) {
+    const tinygltf::Material& m = model.materials[i];
+    if (m.alphaMode == "MASK") mask.add(material_name(model, i));
+    if (m.alphaMode == "BLEND") blend.add(material_name(model, i));
+    const tinygltf::PbrMetallicRoughness& pbr = m.pbrMetallicRoughness;
+    for (int set :
+         {pbr.baseColorTexture.texCoord, pbr.metallicRoughnessTexture.texCoord,
+          m.normalTexture.texCoord, m.occlusionTexture.texCoord, m.emissiveTexture.texCoord})
+      if (set > 0) {
+        texcoord.add(material_name(model, i));
+        break;
+      }
+  }
+  mask.warn(file, "alphaMode MASK", "rendered opaque", warnings);
+  blend.warn(file, "alphaMode BLEND", "rendered opaque", warnings);
+  texcoord.warn(file, "a texture on TEXCOORD_1 or above", "sampled with TEXCOORD_0 instead",
+                warnings);
+
+  Uses skins;
+  for (size_t i = 0; i < model.skins.size(); ++i)
+    skins.add("skins[" + std::to_string(i) + "]" +
+              (model.skins[i].name.empty() ? "" : " '" + model.skins[i].name + "'"));
+  skins.warn(file, "skinning", "skinned meshes render in their bind pose", warnings);
+
+  Uses morphs;
+  for (size_t i = 0; i < model.meshes.size(); ++i)
+    for (const tinygltf::Primitive& p : model.meshes[i].primitives)
+      if (!p.targets.empty()) {
+        morphs.add("meshes[" + std::to_string(i) + "]" +
+                   (model.meshes[i].name.empty() ? "" : " '" + model.meshes[i].name + "'"));
+        break;
+      }
+  morphs.warn(file, "morph targets", "meshes render with their base shape", warnings);
+
+  if (model.scenes.size() > 1) {
+    int shown = model.defaultScene >= 0 ? model.defaultScene : 0;
+    warnings.push_back(file + ": the file has " + std::to_string(model.scenes.size()) +
+                       " scenes; only scenes[" + std::to_string(shown) +
+                       "] (its default) is rendered");
+  }
+}
+
+}  // namespace obscura
