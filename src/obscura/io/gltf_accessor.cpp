@@ -82,7 +82,37 @@ struct GltfAccessorReader::Layout {
   int components = 0;
   int component_size = 0;
   bool normalized = false;
+  bool sparse = false;  // substitutions follow (floats() applies them)
 };
+
+namespace {
+
+// One element of `n` components at p, as floats (normalized integers to [0, 1] or [−1, 1]).
+void decode_element(const uint8_t* p, int component_type, bool normalized, int n, float* o) {
+  for (int c = 0; c < n; ++c) switch (component_type) {
+      case TINYGLTF_COMPONENT_TYPE_FLOAT:
+        o[c] = load<float>(p + 4 * c);
+        break;
+      case TINYGLTF_COMPONENT_TYPE_UNSIGNED_BYTE:
+        o[c] = normalized ? p[c] / 255.f : float(p[c]);
+        break;
+      case TINYGLTF_COMPONENT_TYPE_BYTE:
+        o[c] = normalized ? std::max(float(int8_t(p[c])) / 127.f, -1.f) : float(int8_t(p[c]));
+        break;
+      case TINYGLTF_COMPONENT_TYPE_UNSIGNED_SHORT: {
+        float v = load<uint16_t>(p + 2 * c);
+        o[c] = normalized ? v / 65535.f : v;
+        break;
+      }
+      default: {  // SHORT: the only small integer left
+        float v = load<int16_t>(p + 2 * c);
+        o[c] = normalized ? std::max(v / 32767.f, -1.f) : v;
+        break;
+      }
+    }
+}
+
+}  // namespace
 
 GltfAccessorReader::GltfAccessorReader(const tinygltf::Model& model, std::string file,
                                        uint64_t budget_bytes)
@@ -121,7 +151,7 @@ GltfAccessorReader::Layout GltfAccessorReader::layout(int index, const std::stri
                        a.componentType == TINYGLTF_COMPONENT_TYPE_UNSIGNED_INT))
     throw Error(at, "normalized must not be true for " + component_type_name(a.componentType));
   if (a.count == 0) throw Error(at, "count must be at least 1");
-  if (a.sparse.isSparse) throw Error(at, "sparse accessors are not supported");
+  l.sparse = a.sparse.isSparse;
 
   // Matrix columns start on 4-byte boundaries (glTF 2.0 §3.6.2.4): 1- and 2-byte MAT2/MAT3
   // elements carry padding; every other element is its components, packed.
@@ -242,34 +272,79 @@ std::vector<float> GltfAccessorReader::floats(int index,
     throw Error(at, "count " + std::to_string(l.count) + " is too large");
   charge(bytes, at);
   std::vector<float> out(values, 0.f);
-  if (!l.data) return out;
   const int n = l.components;
-  for (uint64_t i = 0; i < l.count; ++i) {
-    const uint8_t* p = l.data + i * l.stride;
-    float* o = out.data() + i * n;
-    for (int c = 0; c < n; ++c) switch (l.component_type) {
-        case TINYGLTF_COMPONENT_TYPE_FLOAT:
-          o[c] = load<float>(p + 4 * c);
-          break;
-        case TINYGLTF_COMPONENT_TYPE_UNSIGNED_BYTE:
-          o[c] = l.normalized ? p[c] / 255.f : float(p[c]);
-          break;
-        case TINYGLTF_COMPONENT_TYPE_BYTE:
-          o[c] = l.normalized ? std::max(float(int8_t(p[c])) / 127.f, -1.f) : float(int8_t(p[c]));
-          break;
-        case TINYGLTF_COMPONENT_TYPE_UNSIGNED_SHORT: {
-          float v = load<uint16_t>(p + 2 * c);
-          o[c] = l.normalized ? v / 65535.f : v;
-          break;
-        }
-        default: {  // SHORT: the only small integer left
-          float v = load<int16_t>(p + 2 * c);
-          o[c] = l.normalized ? std::max(v / 32767.f, -1.f) : v;
-          break;
-        }
-      }
-  }
+  if (l.data)
+    for (uint64_t i = 0; i < l.count; ++i)
+      decode_element(l.data + i * l.stride, l.component_type, l.normalized, n, out.data() + i * n);
+  if (l.sparse) apply_sparse(index, out, at);
   return out;
+}
+
+const uint8_t* GltfAccessorReader::view_range(int view_index, uint64_t offset, uint64_t bytes,
+                                              const std::string& at) const {
+  if (view_index < 0 || size_t(view_index) >= model_.bufferViews.size())
+    throw Error(at, "bufferView " + std::to_string(view_index) + " is out of range (the file has " +
+                        std::to_string(model_.bufferViews.size()) + ")");
+  const tinygltf::BufferView& view = model_.bufferViews[size_t(view_index)];
+  if (view.buffer < 0 || size_t(view.buffer) >= model_.buffers.size())
+    throw Error(at, "bufferView " + std::to_string(view_index) + " names buffer " +
+                        std::to_string(view.buffer) + ", which is out of range");
+  const std::vector<unsigned char>& buffer = model_.buffers[size_t(view.buffer)].data;
+  uint64_t view_end = 0, end = 0;
+  if (!add(view.byteOffset, view.byteLength, &view_end) || view_end > buffer.size() ||
+      !add(offset, bytes, &end) || end > view.byteLength)
+    throw Error(at, std::to_string(bytes) + " bytes from byteOffset " + std::to_string(offset) +
+                        " exceed bufferView " + std::to_string(view_index) + " (" +
+                        std::to_string(view.byteLength) + " bytes)");
+  return buffer.data() + view.byteOffset + offset;
+}
+
+void GltfAccessorReader::apply_sparse(int index, std::vector<float>& out,
+                                      const std::string& at) const {
+  // §3.6.2.5: `count` substitutions; strictly increasing indices below the accessor's count;
+  // values tightly packed, of the accessor's own element and component type.
+  const tinygltf::Accessor& a = model_.accessors[size_t(index)];
+  const std::string where = at + ".sparse";
+  const uint64_t n = uint64_t(tinygltf::GetNumComponentsInType(uint32_t(a.type)));
+  if (a.sparse.count < 1 || uint64_t(a.sparse.count) > a.count)
+    throw Error(where, "count " + std::to_string(a.sparse.count) +
+                           " must be from 1 to the "
+                           "accessor's count " +
+                           std::to_string(a.count));
+  const int index_type = a.sparse.indices.componentType;
+  if (index_type != TINYGLTF_COMPONENT_TYPE_UNSIGNED_BYTE &&
+      index_type != TINYGLTF_COMPONENT_TYPE_UNSIGNED_SHORT &&
+      index_type != TINYGLTF_COMPONENT_TYPE_UNSIGNED_INT)
+    throw Error(where + ".indices",
+                "componentType must be UNSIGNED_BYTE, UNSIGNED_SHORT or "
+                "UNSIGNED_INT, got " +
+                    component_type_name(index_type));
+  const uint64_t count = uint64_t(a.sparse.count);
+  const uint64_t index_size = uint64_t(tinygltf::GetComponentSizeInBytes(uint32_t(index_type)));
+  const uint64_t value_size =
+      n * uint64_t(tinygltf::GetComponentSizeInBytes(uint32_t(a.componentType)));
+  if (a.sparse.indices.byteOffset < 0 || a.sparse.values.byteOffset < 0)
+    throw Error(where, "negative byteOffset");
+  const uint8_t* indices =
+      view_range(a.sparse.indices.bufferView, uint64_t(a.sparse.indices.byteOffset),
+                 count * index_size, where + ".indices");
+  const uint8_t* values =
+      view_range(a.sparse.values.bufferView, uint64_t(a.sparse.values.byteOffset),
+                 count * value_size, where + ".values");
+  uint64_t previous = 0;
+  for (uint64_t i = 0; i < count; ++i) {
+    const uint8_t* p = indices + i * index_size;
+    uint64_t target = index_type == TINYGLTF_COMPONENT_TYPE_UNSIGNED_BYTE    ? *p
+                      : index_type == TINYGLTF_COMPONENT_TYPE_UNSIGNED_SHORT ? load<uint16_t>(p)
+                                                                             : load<uint32_t>(p);
+    if (target >= a.count || (i > 0 && target <= previous))
+      throw Error(where + ".indices",
+                  "index " + std::to_string(i) + " = " + std::to_string(target) +
+                      " is not increasing or not below the count " + std::to_string(a.count));
+    previous = target;
+    decode_element(values + i * value_size, a.componentType, a.normalized, int(n),
+                   out.data() + target * n);
+  }
 }
 
 std::vector<uint32_t> GltfAccessorReader::indices(int index, uint64_t vertex_count,
@@ -286,6 +361,7 @@ std::vector<uint32_t> GltfAccessorReader::indices(int index, uint64_t vertex_cou
                         std::string(a.normalized ? "normalized " : "") +
                         component_type_name(a.componentType));
   const Layout l = layout(index, where);
+  if (l.sparse) throw Error(at, "sparse index accessors are not supported");
   uint64_t bytes = 0;
   if (!multiply(l.count, sizeof(uint32_t), &bytes))
     throw Error(at, "count " + std::to_string(l.count) + " is too large");

@@ -44,6 +44,7 @@ class GltfAccessorReader {
 
   // Elements of `components` numbers each (one of `allowed_components`), flattened; normalized
   // integers map to [0, 1] or [−1, 1] as the spec says, other integers keep their value.
+  // Sparse substitutions (§3.6.2.5) are applied, validated like the dense data.
   std::vector<float> floats(int index, std::initializer_list<int> allowed_components,
                             AccessorNumbers numbers, const std::string& where);
 
@@ -58,6 +59,11 @@ class GltfAccessorReader {
   const tinygltf::Accessor& accessor(int index, const std::string& where) const;
   Layout layout(int index, const std::string& at) const;
   void charge(uint64_t bytes, const std::string& at);
+  // `bytes` from `offset` inside bufferView `view_index`, range-checked; throws naming `at`.
+  const uint8_t* view_range(int view_index, uint64_t offset, uint64_t bytes,
+                            const std::string& at) const;
+  // Applies accessor `index`'s sparse substitutions to its decoded elements.
+  void apply_sparse(int index, std::vector<float>& out, const std::string& at) const;
 
   const tinygltf::Model& model_;
   std::string file_;
