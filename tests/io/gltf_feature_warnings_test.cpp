@@ -49,7 +49,8 @@ TEST_F(GltfFeatureWarnings, SkinsMorphTargetsOtherUvSetsAndScenes) {
                                     {"type", "MAT4"}});
   doc["skins"] = {{{"joints", {1}}, {"name", "rig"}, {"inverseBindMatrices", matrices}}};
   doc["scenes"].push_back({{"nodes", json::array()}});
-  doc["materials"] = {{{"emissiveTexture", {{"index", 0}, {"texCoord", 1}}}}};
+  doc["materials"] = {
+      {{"emissiveTexture", {{"index", 0}, {"texCoord", 1}}}, {"normalTexture", {{"index", 0}}}}};
   doc["textures"] = {{{"source", 0}}};
   doc["images"] = {{{"uri", "missing.png"}}};
   std::vector<std::string> w = warnings_of(doc);
@@ -57,6 +58,8 @@ TEST_F(GltfFeatureWarnings, SkinsMorphTargetsOtherUvSetsAndScenes) {
   EXPECT_TRUE(any_contains(w, "morph targets is not supported yet (meshes[0] 'blob')"));
   EXPECT_TRUE(any_contains(w, "TEXCOORD_1 or above is not supported yet (materials[0])"));
   EXPECT_TRUE(any_contains(w, "the file has 2 scenes; only scenes[0]"));
+  EXPECT_TRUE(
+      any_contains(w, "normalTexture (normal mapping) is not supported yet (materials[0])"));
 }
 
 TEST_F(GltfFeatureWarnings, ManyUsesAreCountedNotListed) {

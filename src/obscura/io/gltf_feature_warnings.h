@@ -1,6 +1,6 @@
 // glTF 2.0 core features the importer does not apply yet, each named in one warning so that
-// nothing a file asks for is dropped silently: alphaMode MASK/BLEND (rendered opaque), texture
-// coordinate sets other than TEXCOORD_0, skins, morph targets, more than one scene.
+// nothing a file asks for is dropped silently: alphaMode MASK/BLEND (rendered opaque), normal
+// maps, texture coordinate sets other than TEXCOORD_0, skins, morph targets, more than one scene.
 #pragma once
 
 #include <string>
