@@ -15,7 +15,9 @@ Scene one_triangle(Material material) {
   mesh.indices = {0, 1, 2};
   mesh.material = 0;
   scene.meshes.push_back(mesh);
-  scene.instances.push_back(Instance{.mesh = 0});
+  Instance instance;
+  instance.mesh = 0;
+  scene.instances.push_back(instance);
   scene.materials.push_back(std::move(material));
   return scene;
 }

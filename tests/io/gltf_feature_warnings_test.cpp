@@ -30,8 +30,10 @@ TEST_F(GltfFeatureWarnings, AlphaModesAreNamedWithTheirMaterials) {
                       {{"name", "plain"}, {"alphaMode", "OPAQUE"}}};
   doc["meshes"][0]["primitives"][0]["material"] = 0;
   std::vector<std::string> w = warnings_of(doc);
-  EXPECT_TRUE(any_contains(w, "alphaMode MASK is not supported yet (materials[0] 'leaves')"));
-  EXPECT_TRUE(any_contains(w, "alphaMode BLEND is not supported yet (materials[1] 'glass')"));
+  EXPECT_TRUE(any_contains(
+      w, "alphaMode MASK in the rasterizer is not supported yet (materials[0] 'leaves')"));
+  EXPECT_TRUE(any_contains(
+      w, "alphaMode BLEND in the rasterizer is not supported yet (materials[1] 'glass')"));
   EXPECT_FALSE(any_contains(w, "plain"));
 }
 

@@ -332,7 +332,7 @@ TEST_F(GltfHostile, PunctualLightValuesAreChecked) {
        }) {
     json doc = triangle();
     doc["extensionsUsed"] = {"KHR_lights_punctual"};
-    doc["extensions"] = {{"KHR_lights_punctual", {{"lights", {c.light}}}}};
+    doc["extensions"] = {{"KHR_lights_punctual", {{"lights", json::array({c.light})}}}};
     doc["nodes"].push_back({{"extensions", {{"KHR_lights_punctual", {{"light", 0}}}}}});
     doc["scenes"][0]["nodes"].push_back(1);
     expect_error(doc, c.name + ".gltf",
@@ -360,7 +360,7 @@ TEST_F(GltfHostile, UnreadableImagesWarnOnceAndKeepTheFactor) {
        }) {
     json doc = triangle();
     doc["bufferViews"].push_back({{"buffer", 0}, {"byteOffset", 600}, {"byteLength", 4000}});
-    doc["images"] = {c.image};
+    doc["images"] = json::array({c.image});  // not {c.image}: clang reads that as a copy
     doc["textures"] = {{{"source", 0}}};
     doc["materials"] = {
         {{"pbrMetallicRoughness",

@@ -57,6 +57,30 @@ TEST(Texture, TrilinearPicksTheLevelFromTheFootprint) {
   EXPECT_FLOAT_EQ(t.sample_trilinear(u, v, 2.828f * one_texel, 0, 0, 0).r, 1.f);
 }
 
+// Wrap modes as OpenGL defines them (glTF samplers use its names): for a 4-texel row,
+// integer coordinate 4 is texel 0 under REPEAT, 3 under CLAMP_TO_EDGE and 3 under
+// MIRRORED_REPEAT (the row read backwards); coordinate −1 is texel 3, 0 and 0.
+TEST(Texture, WrapModesFollowTheSampler) {
+  Image row(4, 1, 3);
+  for (int x = 0; x < 4; ++x) row.set_rgb(x, 0, Rgb(float(x)));
+  struct Case {
+    TextureWrap wrap;
+    float at_4, at_5, at_minus_1;
+  };
+  for (Case c : {Case{TextureWrap::kRepeat, 0, 1, 3}, Case{TextureWrap::kClampToEdge, 3, 3, 0},
+                 Case{TextureWrap::kMirroredRepeat, 3, 2, 0}}) {
+    Texture t(row, c.wrap, c.wrap);
+    EXPECT_EQ(t.sample_nearest(4.5f / 4, 0.5f).r, c.at_4) << int(c.wrap);
+    EXPECT_EQ(t.sample_nearest(5.5f / 4, 0.5f).r, c.at_5) << int(c.wrap);
+    EXPECT_EQ(t.sample_nearest(-0.5f / 4, 0.5f).r, c.at_minus_1) << int(c.wrap);
+  }
+  // Bilinear at the right edge: clamping blends the last texel with itself.
+  Texture clamped(row, TextureWrap::kClampToEdge, TextureWrap::kClampToEdge);
+  EXPECT_FLOAT_EQ(clamped.sample_bilinear(1.f, 0.5f).r, 3.f);
+  Texture repeated(row);
+  EXPECT_FLOAT_EQ(repeated.sample_bilinear(1.f, 0.5f).r, 1.5f);  // halfway between 3 and 0
+}
+
 TEST(Texture, RejectsEmptyImages) {
   Image empty;
   EXPECT_THROW(Texture{empty}, Error);

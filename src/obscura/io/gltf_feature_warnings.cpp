@@ -50,8 +50,10 @@ void warn_unapplied_gltf_features(const tinygltf::Model& model, const std::strin
         break;
       }
   }
-  mask.warn(file, "alphaMode MASK", "rendered opaque", warnings);
-  blend.warn(file, "alphaMode BLEND", "rendered opaque", warnings);
+  mask.warn(file, "alphaMode MASK in the rasterizer",
+            "it draws them opaque (the tracer cuts them out)", warnings);
+  blend.warn(file, "alphaMode BLEND in the rasterizer",
+             "it draws them opaque (the tracer lets 1 − alpha of the light through)", warnings);
   normal_maps.warn(file, "normalTexture (normal mapping)",
                    "shaded with the interpolated vertex normals", warnings);
   texcoord.warn(file, "a texture on TEXCOORD_1 or above", "sampled with TEXCOORD_0 instead",

@@ -102,6 +102,24 @@ class GltfImporter {
   }
   TextureRef texture(int texture_index, int uv_set, TextureEncoding encoding,
                      const std::string& where);
+  // The texture with the textureInfo's KHR_texture_transform, when it has one.
+  template <class Info>
+  TextureRef texture(const Info& info, TextureEncoding encoding, const std::string& where) {
+    TextureRef ref = texture(info.index, info.texCoord, encoding, where);
+    auto found = info.extensions.find("KHR_texture_transform");
+    if (found == info.extensions.end() || !ref.valid()) return ref;
+    const std::string ext_where = where + ".extensions.KHR_texture_transform";
+    ref.transform = uv_transform(found->second, ext_where);
+    // The extension may also name the UV set, overriding the textureInfo's own texCoord.
+    if (found->second.Has("texCoord")) {
+      const tinygltf::Value& set = found->second.Get("texCoord");
+      if (!set.IsInt() || set.GetNumberAsInt() < 0)
+        fail(ext_where + ".texCoord", "expected a non-negative integer");
+      ref.uv_set = uint32_t(set.GetNumberAsInt());
+    }
+    return ref;
+  }
+  UvTransform uv_transform(const tinygltf::Value& value, const std::string& where) const;
   void import_materials();
   uint32_t default_material();
   std::vector<std::pair<uint32_t, uint32_t>> import_mesh(int mesh_index);
@@ -156,7 +174,7 @@ TextureRef GltfImporter::texture(int texture_index, int uv_set, TextureEncoding 
     fail(where, "texture index " + std::to_string(texture_index) + " is out of range");
   auto key = std::make_pair(texture_index, encoding);
   auto found = textures_.find(key);
-  if (found != textures_.end()) return {found->second, uint32_t(std::max(uv_set, 0))};
+  if (found != textures_.end()) return {found->second, uint32_t(std::max(uv_set, 0)), {}};
   const tinygltf::Texture& gt = model_.textures[texture_index];
   if (gt.source < 0 || size_t(gt.source) >= model_.images.size())
     fail(element("textures", texture_index),
@@ -177,7 +195,30 @@ TextureRef GltfImporter::texture(int texture_index, int uv_set, TextureEncoding 
   auto index = int32_t(scene_.textures.size());
   scene_.textures.push_back(std::move(t));
   textures_[key] = index;
-  return {index, uint32_t(std::max(uv_set, 0))};
+  return {index, uint32_t(std::max(uv_set, 0)), {}};
+}
+
+UvTransform GltfImporter::uv_transform(const tinygltf::Value& value,
+                                       const std::string& where) const {
+  // KHR_texture_transform: offset [0, 0], rotation 0 (radians), scale [1, 1].
+  auto pair = [&](const char* key, Point2f fallback) {
+    if (!value.Has(key)) return fallback;
+    const tinygltf::Value& v = value.Get(key);
+    if (!v.IsArray() || v.ArrayLen() != 2 || !v.Get(0).IsNumber() || !v.Get(1).IsNumber())
+      fail(where + "." + key, "expected an array of 2 numbers");
+    Point2f p(float(v.Get(0).GetNumberAsDouble()), float(v.Get(1).GetNumberAsDouble()));
+    if (!std::isfinite(p.x) || !std::isfinite(p.y)) fail(where + "." + key, "must be finite");
+    return p;
+  };
+  float rotation = 0;
+  if (value.Has("rotation")) {
+    const tinygltf::Value& r = value.Get("rotation");
+    if (!r.IsNumber() || !std::isfinite(r.GetNumberAsDouble()))
+      fail(where + ".rotation", "expected a finite number (radians)");
+    rotation = float(r.GetNumberAsDouble());
+  }
+  return UvTransform::offset_rotation_scale(pair("offset", {0, 0}), rotation,
+                                            pair("scale", {1, 1}));
 }
 
 void GltfImporter::import_materials() {
@@ -188,15 +229,14 @@ void GltfImporter::import_materials() {
     MetallicRoughnessMaterial mr;
     mr.base_color = rgb(pbr.baseColorFactor, Rgb(1.f));
     mr.alpha = pbr.baseColorFactor.size() == 4 ? float(pbr.baseColorFactor[3]) : 1.f;
-    mr.base_color_texture = texture(pbr.baseColorTexture.index, pbr.baseColorTexture.texCoord,
-                                    TextureEncoding::kSrgb, where + ".baseColorTexture");
+    mr.base_color_texture =
+        texture(pbr.baseColorTexture, TextureEncoding::kSrgb, where + ".baseColorTexture");
     mr.metallic = float(pbr.metallicFactor);
     mr.roughness = float(pbr.roughnessFactor);
-    mr.metallic_roughness_texture =
-        texture(pbr.metallicRoughnessTexture.index, pbr.metallicRoughnessTexture.texCoord,
-                TextureEncoding::kLinear, where + ".metallicRoughnessTexture");
-    mr.occlusion_texture = texture(gm.occlusionTexture.index, gm.occlusionTexture.texCoord,
-                                   TextureEncoding::kLinear, where + ".occlusionTexture");
+    mr.metallic_roughness_texture = texture(pbr.metallicRoughnessTexture, TextureEncoding::kLinear,
+                                            where + ".metallicRoughnessTexture");
+    mr.occlusion_texture =
+        texture(gm.occlusionTexture, TextureEncoding::kLinear, where + ".occlusionTexture");
     float emissive_strength = 1;
     for (const auto& [name, value] : gm.extensions) {
       if (name == "KHR_materials_emissive_strength") {
@@ -221,12 +261,23 @@ void GltfImporter::import_materials() {
     m.name = gm.name.empty() ? where : gm.name;
     m.model = mr;
     m.emission = rgb(gm.emissiveFactor, Rgb()) * emissive_strength;
-    m.emission_texture = texture(gm.emissiveTexture.index, gm.emissiveTexture.texCoord,
-                                 TextureEncoding::kSrgb, where + ".emissiveTexture");
-    m.normal_texture = texture(gm.normalTexture.index, gm.normalTexture.texCoord,
-                               TextureEncoding::kLinear, where + ".normalTexture");
+    m.emission_texture =
+        texture(gm.emissiveTexture, TextureEncoding::kSrgb, where + ".emissiveTexture");
+    m.normal_texture =
+        texture(gm.normalTexture, TextureEncoding::kLinear, where + ".normalTexture");
     m.normal_scale = float(gm.normalTexture.scale);
     m.double_sided = gm.doubleSided;
+    if (gm.alphaMode == "MASK") {
+      m.alpha_mode = AlphaMode::kMask;
+      if (!std::isfinite(gm.alphaCutoff) || gm.alphaCutoff < 0)
+        fail(where + ".alphaCutoff",
+             std::to_string(gm.alphaCutoff) + " must be a finite number ≥ 0");
+      m.alpha_cutoff = float(gm.alphaCutoff);
+    } else if (gm.alphaMode == "BLEND") {
+      m.alpha_mode = AlphaMode::kBlend;
+    } else if (gm.alphaMode != "OPAQUE" && !gm.alphaMode.empty()) {
+      fail(where + ".alphaMode", "'" + gm.alphaMode + "' is not OPAQUE, MASK or BLEND");
+    }
     scene_.materials.push_back(std::move(m));
   }
 }

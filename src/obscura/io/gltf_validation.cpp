@@ -185,7 +185,7 @@ const std::set<std::string>& supported_gltf_extensions() {
                                               "KHR_materials_ior", "KHR_materials_specular",
                                               // Quantized attributes (integer POSITION, TEXCOORD,
                                               // NORMAL, TANGENT) are read like any other accessor.
-                                              "KHR_mesh_quantization"};
+                                              "KHR_mesh_quantization", "KHR_texture_transform"};
   return names;
 }
 

@@ -119,7 +119,8 @@ struct ScenePixelProgram {
       s.lobe_normalization = blinn_phong_lobe_normalization(s.shininess);
     }
     Rgb c = shade_surface(s, *uniforms.lights, uniforms.shadows, a.position, n, geometric, v);
-    if (info.front_facing) c += m.emission * sample_or_one(m.emission_texture, m.filter, tc);
+    if (info.front_facing)
+      c += m.emission * sample_or_one(m.emission_texture, m.emission_transform, m.filter, tc);
     return c * uniforms.exposure;
   }
 
@@ -158,8 +159,10 @@ struct SceneGouraudProgram {
   Rgb fragment(const Varyings& a, const Varyings& dx, const Varyings& dy, FragmentInfo info) const {
     const SurfaceMaterial& m = *uniforms.material;
     TextureCoordinates tc{a.u, a.v, dx.u, dx.v, dy.u, dy.v};
-    Rgb c = a.lit * sample_or_one(m.base_texture, m.filter, tc);  // modulate, as fixed-function GL
-    if (info.front_facing) c += m.emission * sample_or_one(m.emission_texture, m.filter, tc);
+    // Modulate, as fixed-function GL.
+    Rgb c = a.lit * sample_or_one(m.base_texture, m.base_transform, m.filter, tc);
+    if (info.front_facing)
+      c += m.emission * sample_or_one(m.emission_texture, m.emission_transform, m.filter, tc);
     return c * uniforms.exposure;
   }
 

@@ -50,7 +50,7 @@ Texture compile_texture(const obscura::Texture& t) {
       Vector4f v = sample_texture(t, {(x + 0.5f) / t.width, (y + 0.5f) / t.height});
       image.set_rgb(x, y, {v.x, v.y, v.z});
     }
-  return Texture(image);
+  return Texture(image, t.wrap_u, t.wrap_v);
 }
 
 void mark_used(const TextureRef& ref, std::vector<bool>& used) {

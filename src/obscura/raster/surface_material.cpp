@@ -27,6 +27,7 @@ SurfaceMaterial compile_material(const Material& material,
   SurfaceMaterial s;
   s.emission = material.emission;
   s.emission_texture = texture_of(material.emission_texture, textures);
+  s.emission_transform = material.emission_texture.transform;
   s.double_sided = material.double_sided;
   struct Visitor {
     SurfaceMaterial& s;
@@ -35,6 +36,7 @@ SurfaceMaterial compile_material(const Material& material,
       s.model = SurfaceModel::kLambert;
       s.base = m.reflectance;
       s.base_texture = texture_of(m.reflectance_texture, textures);
+      s.base_transform = m.reflectance_texture.transform;
     }
     void operator()(const obscura::PhongMaterial& m) const {
       s.model = m.blinn ? SurfaceModel::kBlinnPhong : SurfaceModel::kPhong;
@@ -42,6 +44,7 @@ SurfaceMaterial compile_material(const Material& material,
       s.specular = m.specular;
       s.shininess = std::max(0.f, m.shininess);
       s.base_texture = texture_of(m.diffuse_texture, textures);
+      s.base_transform = m.diffuse_texture.transform;
     }
     void operator()(const ConductorMaterial& m) const {
       s.model = SurfaceModel::kConductor;
@@ -62,7 +65,9 @@ SurfaceMaterial compile_material(const Material& material,
     void operator()(const MetallicRoughnessMaterial& m) const {
       s.base = m.base_color;
       s.base_texture = texture_of(m.base_color_texture, textures);
+      s.base_transform = m.base_color_texture.transform;
       s.occlusion_texture = texture_of(m.occlusion_texture, textures);
+      s.occlusion_transform = m.occlusion_texture.transform;
       // KHR_materials_specular with a zero specular: a plain Lambertian surface (as the tracer).
       if (m.purely_diffuse()) {
         s.model = SurfaceModel::kLambert;
@@ -72,6 +77,7 @@ SurfaceMaterial compile_material(const Material& material,
       s.metallic = m.metallic, s.roughness = m.roughness;
       s.specular_strength = m.specular, s.specular = m.specular_color, s.ior = m.ior;
       s.metallic_roughness_texture = texture_of(m.metallic_roughness_texture, textures);
+      s.metallic_roughness_transform = m.metallic_roughness_texture.transform;
     }
     void operator()(const EmissiveMaterial&) const { s.model = SurfaceModel::kBlack; }
   };
@@ -114,18 +120,22 @@ SurfacePoint surface_point_untextured(const SurfaceMaterial& m, Rgb vertex_color
 
 SurfacePoint surface_point(const SurfaceMaterial& m, const TextureCoordinates& tc,
                            Rgb vertex_color) {
-  Rgb color = vertex_color * sample_or_one(m.base_texture, m.filter, tc);
+  Rgb color = vertex_color * sample_or_one(m.base_texture, m.base_transform, m.filter, tc);
   if (m.model == SurfaceModel::kMetallicRoughness && m.metallic_roughness_texture) {
-    Rgb mr = sample_or_one(m.metallic_roughness_texture, m.filter, tc);
+    Rgb mr =
+        sample_or_one(m.metallic_roughness_texture, m.metallic_roughness_transform, m.filter, tc);
     SurfaceMaterial textured = m;
     textured.roughness *= mr.g;
     textured.metallic *= mr.b;
     SurfacePoint p = surface_point_untextured(textured, color);
-    p.occlusion = m.occlusion_texture ? sample_or_one(m.occlusion_texture, m.filter, tc).r : 1.f;
+    p.occlusion = m.occlusion_texture
+                      ? sample_or_one(m.occlusion_texture, m.occlusion_transform, m.filter, tc).r
+                      : 1.f;
     return p;
   }
   SurfacePoint p = surface_point_untextured(m, color);
-  if (m.occlusion_texture) p.occlusion = sample_or_one(m.occlusion_texture, m.filter, tc).r;
+  if (m.occlusion_texture)
+    p.occlusion = sample_or_one(m.occlusion_texture, m.occlusion_transform, m.filter, tc).r;
   return p;
 }
 

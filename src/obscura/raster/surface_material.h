@@ -56,6 +56,8 @@ struct SurfaceMaterial {
   const Texture* metallic_roughness_texture = nullptr;
   const Texture* occlusion_texture = nullptr;
   const Texture* emission_texture = nullptr;
+  // Their KHR_texture_transform maps.
+  UvTransform base_transform, metallic_roughness_transform, occlusion_transform, emission_transform;
   TextureFilter filter = TextureFilter::kTrilinear;
   bool double_sided = true;
 };
@@ -83,9 +85,13 @@ struct SurfacePoint {
   float occlusion;
 };
 
-OBSCURA_RASTER_INLINE Rgb sample_or_one(const Texture* t, TextureFilter filter,
-                                        const TextureCoordinates& c) {
-  return t ? t->sample(filter, c.u, c.v, c.du_dx, c.dv_dx, c.du_dy, c.dv_dy) : Rgb(1.f);
+OBSCURA_RASTER_INLINE Rgb sample_or_one(const Texture* t, const UvTransform& m,
+                                        TextureFilter filter, const TextureCoordinates& c) {
+  if (!t) return Rgb(1.f);
+  // The derivatives go through the map's linear part, so mip selection sees the scaled texture.
+  return t->sample(filter, m.m00 * c.u + m.m01 * c.v + m.m02, m.m10 * c.u + m.m11 * c.v + m.m12,
+                   m.m00 * c.du_dx + m.m01 * c.dv_dx, m.m10 * c.du_dx + m.m11 * c.dv_dx,
+                   m.m00 * c.du_dy + m.m01 * c.dv_dy, m.m10 * c.du_dy + m.m11 * c.dv_dy);
 }
 
 SurfacePoint surface_point(const SurfaceMaterial& m, const TextureCoordinates& tc,

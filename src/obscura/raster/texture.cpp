@@ -7,16 +7,8 @@
 
 namespace obscura::raster {
 
-namespace {
-
-int wrap(int i, int n) {
-  int r = i % n;
-  return r < 0 ? r + n : r;
-}
-
-}  // namespace
-
-Texture::Texture(const Image& image) {
+Texture::Texture(const Image& image, TextureWrap wrap_u, TextureWrap wrap_v)
+    : wrap_u_(wrap_u), wrap_v_(wrap_v) {
   if (image.width <= 0 || image.height <= 0 || image.channels < 3)
     throw Error("texture", "expected a non-empty RGB or RGBA image");
   Level base{image.width, image.height, {}};
@@ -45,7 +37,8 @@ Texture::Texture(const Image& image) {
 
 Rgb Texture::texel(int level, int i, int j) const {
   const Level& l = levels_[level];
-  return l.texels[size_t(wrap(j, l.height)) * l.width + wrap(i, l.width)];
+  return l.texels[size_t(wrap_texel_index(j, l.height, wrap_v_)) * l.width +
+                  wrap_texel_index(i, l.width, wrap_u_)];
 }
 
 Rgb Texture::sample_nearest(float u, float v) const {

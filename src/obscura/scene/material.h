@@ -69,6 +69,11 @@ struct EmissiveMaterial {};
 using MaterialModel = std::variant<DiffuseMaterial, PhongMaterial, ConductorMaterial,
                                    DielectricMaterial, MetallicRoughnessMaterial, EmissiveMaterial>;
 
+// glTF's alphaMode: how the base colour's alpha (factor × texture alpha) covers the surface.
+// kMask: fully there where alpha ≥ alpha_cutoff, absent elsewhere; kBlend: a fraction alpha of
+// the light meets the surface and the rest passes through it (a veil, a leaf's edge).
+enum class AlphaMode { kOpaque, kMask, kBlend };
+
 struct Material {
   std::string name;
   MaterialModel model = DiffuseMaterial{};
@@ -79,6 +84,8 @@ struct Material {
   TextureRef normal_texture;  // tangent-space normal map
   float normal_scale = 1;
   bool double_sided = true;  // glTF doubleSided; the tracer reflects on both sides regardless
+  AlphaMode alpha_mode = AlphaMode::kOpaque;
+  float alpha_cutoff = 0.5f;  // kMask only
 };
 
 // A Lambertian material, emitting where `emission` is not black: the common case of scenes built

@@ -6,10 +6,7 @@
 
 namespace obscura {
 
-namespace {
-
-// Texel index along one axis of `size` texels for the integer coordinate i, per the wrap mode.
-int wrap_index(int i, int size, TextureWrap wrap) {
+int wrap_texel_index(int i, int size, TextureWrap wrap) {
   switch (wrap) {
     case TextureWrap::kClampToEdge:
       return i < 0 ? 0 : (i >= size ? size - 1 : i);
@@ -23,6 +20,8 @@ int wrap_index(int i, int size, TextureWrap wrap) {
       return ((i % size) + size) % size;
   }
 }
+
+namespace {
 
 // The linear RGBA value of one texel.
 Vector4f texel_rgba(const Texture& t, int x, int y) {
@@ -39,13 +38,21 @@ Vector4f texel_rgba(const Texture& t, int x, int y) {
 
 }  // namespace
 
+UvTransform UvTransform::offset_rotation_scale(Point2f offset, float rotation, Point2f scale) {
+  const float c = std::cos(rotation), s = std::sin(rotation);
+  UvTransform t;
+  t.m00 = c * scale.x, t.m01 = s * scale.y, t.m02 = offset.x;
+  t.m10 = -s * scale.x, t.m11 = c * scale.y, t.m12 = offset.y;
+  return t;
+}
+
 Vector4f sample_texture(const Texture& t, Point2f uv) {
   if (t.width <= 0 || t.height <= 0) return {0, 0, 0, 1};
   // Continuous texel coordinates, texel centres at integer + ½.
   float x = uv.x * t.width, y = uv.y * t.height;
   if (t.filter == TextureFilter::kNearest) {
-    int ix = wrap_index(int(std::floor(x)), t.width, t.wrap_u);
-    int iy = wrap_index(int(std::floor(y)), t.height, t.wrap_v);
+    int ix = wrap_texel_index(int(std::floor(x)), t.width, t.wrap_u);
+    int iy = wrap_texel_index(int(std::floor(y)), t.height, t.wrap_v);
     return texel_rgba(t, ix, iy);
   }
   float fx = x - 0.5f, fy = y - 0.5f;
@@ -56,8 +63,8 @@ Vector4f sample_texture(const Texture& t, Point2f uv) {
     for (int dx = 0; dx < 2; ++dx) {
       float w = (dx ? ax : 1 - ax) * (dy ? ay : 1 - ay);
       if (w == 0) continue;
-      Vector4f v = texel_rgba(t, wrap_index(x0 + dx, t.width, t.wrap_u),
-                              wrap_index(y0 + dy, t.height, t.wrap_v));
+      Vector4f v = texel_rgba(t, wrap_texel_index(x0 + dx, t.width, t.wrap_u),
+                              wrap_texel_index(y0 + dy, t.height, t.wrap_v));
       result = result + v * w;
     }
   return result;

@@ -45,11 +45,30 @@ struct Texture {
 // channels filled as glTF does (grey → RGB, alpha 1). Wrap modes apply per axis; kNearest picks
 // one texel, kBilinear and kTrilinear blend the four nearest (no MIP levels are built here).
 Vector4f sample_texture(const Texture& texture, Point2f uv);
+// The texel index along an axis of `size` texels for integer coordinate i, per the wrap mode.
+int wrap_texel_index(int i, int size, TextureWrap wrap);
 
-// A material's use of a texture: which one and which UV set.
+// An affine map of texture coordinates, applied before the lookup: glTF's KHR_texture_transform,
+// uv' = T · R · S · uv with T the offset, S the scale and R = [cos r, sin r; −sin r, cos r] (the
+// extension's rotation, counter-clockwise in UV space with v pointing down).
+struct UvTransform {
+  float m00 = 1, m01 = 0, m02 = 0;
+  float m10 = 0, m11 = 1, m12 = 0;
+
+  static UvTransform offset_rotation_scale(Point2f offset, float rotation, Point2f scale);
+  bool is_identity() const {
+    return m00 == 1 && m01 == 0 && m02 == 0 && m10 == 0 && m11 == 1 && m12 == 0;
+  }
+  Point2f operator()(Point2f uv) const {
+    return {m00 * uv.x + m01 * uv.y + m02, m10 * uv.x + m11 * uv.y + m12};
+  }
+};
+
+// A material's use of a texture: which one, which UV set, and how the UVs are transformed.
 struct TextureRef {
   int32_t texture = -1;  // index into Scene::textures; −1 = none
   uint32_t uv_set = 0;   // TEXCOORD_n; only set 0 is stored in Mesh::uvs for now
+  UvTransform transform = {};
   bool valid() const { return texture >= 0; }
 };
 

@@ -18,14 +18,15 @@ Point3d to_double(Point3f p) {
 // mean luminance at seven points (vertices, edge midpoints, centroid), but never below 1 % so that
 // a triangle whose bright texels fall between those points can still be chosen (no bias; only
 // the variance depends on this estimate).
-double texture_weight(const Texture& texture, Point2f uv0, Point2f uv1, Point2f uv2) {
+double texture_weight(const Texture& texture, const UvTransform& transform, Point2f uv0,
+                      Point2f uv1, Point2f uv2) {
   const Point2f b[7] = {
       {0, 0}, {1, 0}, {0, 1}, {0.5f, 0}, {0, 0.5f}, {0.5f, 0.5f}, {1 / 3.f, 1 / 3.f}};
   double sum = 0;
   for (Point2f w : b) {
     Point2f uv{uv0.x + (uv1.x - uv0.x) * w.x + (uv2.x - uv0.x) * w.y,
                uv0.y + (uv1.y - uv0.y) * w.x + (uv2.y - uv0.y) * w.y};
-    Vector4f v = sample_texture(texture, uv);
+    Vector4f v = sample_texture(texture, transform(uv));
     sum += luminance(Rgb(v.x, v.y, v.z));
   }
   return std::max(sum / 7, 0.01);
@@ -69,7 +70,8 @@ AreaLights::AreaLights(const std::vector<Mesh>& meshes, const std::vector<Materi
         tri.uv0 = mesh.uvs[mesh.indices[3 * t]];
         tri.uv1 = mesh.uvs[mesh.indices[3 * t + 1]];
         tri.uv2 = mesh.uvs[mesh.indices[3 * t + 2]];
-        weight = texture_weight(*texture, tri.uv0, tri.uv1, tri.uv2);
+        tri.transform = material.emission_texture.transform;
+        weight = texture_weight(*texture, tri.transform, tri.uv0, tri.uv1, tri.uv2);
       }
       triangles_.push_back(tri);
       power.push_back(double(area) * luminance(radiance) * weight);
@@ -89,7 +91,7 @@ Rgb AreaLights::radiance_at(const Triangle& tri, Point2f b) {
   if (!tri.texture) return tri.radiance;
   Point2f uv{tri.uv0.x + (tri.uv1.x - tri.uv0.x) * b.x + (tri.uv2.x - tri.uv0.x) * b.y,
              tri.uv0.y + (tri.uv1.y - tri.uv0.y) * b.x + (tri.uv2.y - tri.uv0.y) * b.y};
-  Vector4f v = sample_texture(*tri.texture, uv);
+  Vector4f v = sample_texture(*tri.texture, tri.transform(uv));
   return tri.radiance * Rgb(v.x, v.y, v.z);
 }
 

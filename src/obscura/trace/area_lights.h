@@ -85,6 +85,7 @@ class AreaLights {
     Rgb radiance;  // the emission factor; times the texture where there is one
     float area = 0;
     const Texture* texture = nullptr;
+    UvTransform transform;  // the emission texture's
     Point2f uv0, uv1, uv2;
   };
   // Emitted radiance at barycentric b (b.x towards p1, b.y towards p2).

@@ -8,11 +8,29 @@ TraceMaterial::TraceMaterial(const Material& material, const std::vector<Texture
     : emission(material.emission),
       emission_texture_(material.emission_texture),
       model_(material.model),
-      textures_(textures) {}
+      textures_(textures) {
+  // Coverage comes from the metallic-roughness base colour, as in glTF; other models are opaque.
+  if (const auto* mr = std::get_if<MetallicRoughnessMaterial>(&material.model)) {
+    alpha_mode_ = material.alpha_mode;
+    alpha_cutoff_ = material.alpha_cutoff;
+    alpha_ = mr->alpha;
+    alpha_texture_ = mr->base_color_texture;
+  }
+}
+
+bool TraceMaterial::passes_through(const SurfaceHit& hit, float u) const {
+  if (alpha_mode_ == AlphaMode::kOpaque) return false;
+  float alpha = alpha_;
+  if (alpha_texture_.valid() && textures_)
+    alpha *=
+        sample_texture((*textures_)[alpha_texture_.texture], alpha_texture_.transform(hit.uv)).w;
+  if (alpha_mode_ == AlphaMode::kMask) return alpha < alpha_cutoff_;
+  return u >= alpha;
+}
 
 Rgb TraceMaterial::texture_rgb(const TextureRef& ref, const SurfaceHit& hit) const {
   if (!ref.valid() || !textures_) return Rgb(1.f);
-  Vector4f v = sample_texture((*textures_)[ref.texture], hit.uv);
+  Vector4f v = sample_texture((*textures_)[ref.texture], ref.transform(hit.uv));
   return {v.x, v.y, v.z};
 }
 

@@ -28,10 +28,20 @@ class TraceMaterial {
   // The emission factor (strength included): black for a material that never emits.
   Rgb emission;
 
+  // glTF alpha coverage. Whether the material can let a ray through at all (alphaMode MASK or
+  // BLEND), and whether it does at `hit`: MASK below the cutoff always, BLEND with probability
+  // 1 − alpha, decided by `u` (uniform in [0, 1)).
+  bool has_alpha() const { return alpha_mode_ != AlphaMode::kOpaque; }
+  bool passes_through(const SurfaceHit& hit, float u) const;
+
  private:
   Rgb texture_rgb(const TextureRef& ref, const SurfaceHit& hit) const;
 
   TextureRef emission_texture_;
+  AlphaMode alpha_mode_ = AlphaMode::kOpaque;
+  float alpha_cutoff_ = 0.5f;
+  float alpha_ = 1;           // the base colour factor's alpha
+  TextureRef alpha_texture_;  // the base colour texture, whose alpha channel multiplies it
   std::optional<AnyBsdf> fixed_;
   MaterialModel model_;
   const std::vector<Texture>* textures_ = nullptr;

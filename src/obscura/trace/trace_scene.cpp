@@ -1,11 +1,14 @@
 #include "obscura/trace/trace_scene.h"
 
 #include <algorithm>
+#include <bit>
 #include <cmath>
+#include <limits>
 #include <variant>
 
 #include "obscura/camera/animated_transform.h"
 #include "obscura/math/error.h"
+#include "obscura/math/rng.h"
 
 namespace obscura {
 
@@ -177,6 +180,8 @@ TraceScene::TraceScene(const Scene& scene, std::shared_ptr<const EmbreeDevice> d
   }
   embree_.commit();
   for (const Material& m : scene.materials) materials_.emplace_back(m, &textures_);
+  has_alpha_ = std::any_of(materials_.begin(), materials_.end(),
+                           [](const TraceMaterial& m) { return m.has_alpha(); });
   Bounds3f b = scene.bounds();
   if (!b.empty()) {
     float extent = std::max({std::abs(b.min.x), std::abs(b.min.y), std::abs(b.min.z),
@@ -241,6 +246,7 @@ void TraceScene::add_moving(const Scene& scene, uint32_t instance) {
 
 void TraceScene::set_material(uint32_t index, TraceMaterial material) {
   materials_.at(index) = std::move(material);
+  has_alpha_ = has_alpha_ || materials_[index].has_alpha();
 }
 
 void TraceScene::set_environment(std::optional<EnvironmentLight> environment) {
@@ -253,17 +259,57 @@ void TraceScene::set_punctual_lights(std::vector<PunctualLight> lights) {
   lights_ = LightSet(lights_.area_lights(), std::move(environment), std::move(lights), radius_);
 }
 
+namespace {
+
+// The uniform number that decides whether a ray passes an alpha-blended surface: a hash of the
+// ray and of what it hit, so that it is the same for any thread count and tile order, and
+// independent between rays, layers and surfaces.
+float alpha_sample(const Ray& ray, const RayHit& hit, int layer) {
+  auto bits = [](float a, float b) {
+    return (uint64_t(std::bit_cast<uint32_t>(a)) << 32) | std::bit_cast<uint32_t>(b);
+  };
+  uint64_t where = (uint64_t(hit.geometry_id) << 32) | hit.primitive_id;
+  return bits_to_unit_float(
+      hash_words(bits(ray.origin.x, ray.origin.y), bits(ray.origin.z, ray.direction.x),
+                 bits(ray.direction.y, ray.direction.z), where ^ (uint64_t(layer) << 56)));
+}
+
+}  // namespace
+
 std::optional<SurfaceHit> TraceScene::intersect(const Ray& ray) const {
-  std::optional<RayHit> hit = embree_.intersect(ray);
-  if (!hit) return std::nullopt;
+  if (!has_alpha_) {
+    std::optional<RayHit> hit = embree_.intersect(ray);
+    if (!hit) return std::nullopt;
+    return surface_hit(ray, *hit);
+  }
+  // Surfaces with alpha coverage: continue past each one the ray passes through, from just
+  // beyond it along the same ray (so t stays measured from the original origin).
+  Ray rest = ray;
+  for (int layer = 0;; ++layer) {
+    std::optional<RayHit> hit = embree_.intersect(rest);
+    if (!hit) return std::nullopt;
+    SurfaceHit s = surface_hit(ray, *hit);
+    if (layer + 1 >= kMaxAlphaLayers ||
+        !materials_[s.material].passes_through(s, alpha_sample(ray, *hit, layer)))
+      return s;
+    rest.t_min = std::nextafter(hit->t, std::numeric_limits<float>::infinity());
+    if (!(rest.t_min < rest.t_max)) return std::nullopt;
+  }
+}
+
+bool TraceScene::occluded(const Ray& ray) const {
+  return has_alpha_ ? intersect(ray).has_value() : embree_.occluded(ray);
+}
+
+SurfaceHit TraceScene::surface_hit(const Ray& ray, const RayHit& hit) const {
   // Everything here comes with Embree's answer; mesh data is read only for meshes that carry
   // shading normals or UVs (a cache miss per incoherent ray on large scenes).
-  const Placement& place = placements_[hit->geometry_id];
+  const Placement& place = placements_[hit.geometry_id];
   // Object-space normals go to the world by the inverse transpose, at the ray's time if moving.
   float moving_normal_matrix[3][3];
   const float(*to_world)[3] = place.normal_from_object;
   if (place.moving) {
-    Affine3f a = embree_.instance_transform(hit->geometry_id, ray.time);
+    Affine3f a = embree_.instance_transform(hit.geometry_id, ray.time);
     double linear[3][3];
     for (int r = 0; r < 3; ++r)
       for (int c = 0; c < 3; ++c) linear[r][c] = a.m[r][c];
@@ -271,20 +317,20 @@ std::optional<SurfaceHit> TraceScene::intersect(const Ray& ray) const {
     to_world = moving_normal_matrix;
   }
   SurfaceHit s;
-  s.t = hit->t;
+  s.t = hit.t;
   s.time = ray.time;
-  s.position = ray.at(hit->t);
-  Vector3f ng = place.object_space ? apply(to_world, hit->normal) : hit->normal;
+  s.position = ray.at(hit.t);
+  Vector3f ng = place.object_space ? apply(to_world, hit.normal) : hit.normal;
   s.geometric_normal = Normal3f(normalize(ng));
   s.shading_normal = s.geometric_normal;
   s.mesh = place.instance;
-  s.primitive = hit->primitive_id;
+  s.primitive = hit.primitive_id;
   s.material = place.material;
   const Mesh& mesh = *place.attributes;
   if (!mesh.normals.empty() || !mesh.uvs.empty() || !mesh.colors.empty()) {
     // Interpolated attributes: only meshes that carry them pay for the vertex reads.
-    const uint32_t* tri = &mesh.indices[3 * size_t(hit->primitive_id)];
-    float b1 = hit->barycentric.x, b2 = hit->barycentric.y, b0 = 1 - b1 - b2;
+    const uint32_t* tri = &mesh.indices[3 * size_t(hit.primitive_id)];
+    float b1 = hit.barycentric.x, b2 = hit.barycentric.y, b0 = 1 - b1 - b2;
     if (!mesh.normals.empty()) {
       Vector3f n = to_vector(mesh.normals[tri[0]]) * b0 + to_vector(mesh.normals[tri[1]]) * b1 +
                    to_vector(mesh.normals[tri[2]]) * b2;
@@ -310,7 +356,7 @@ bool TraceScene::occluded(Point3f from, Point3f to, float time_s) const {
   ray.t_min = 0;
   ray.t_max = 1 - 1e-4f;  // stop just short of the target surface
   ray.time = time_s;
-  return embree_.occluded(ray);
+  return occluded(ray);
 }
 
 Point3f offset_ray_origin(Point3f p, Normal3f n, Vector3f w, float epsilon) {

@@ -38,11 +38,15 @@ class TraceScene {
   TraceScene(const Scene& scene, std::shared_ptr<const EmbreeDevice> device,
              const TraceSceneOptions& options = {});
 
+  // The closest surface the ray meets, passing through alpha-masked and (stochastically)
+  // alpha-blended surfaces where their coverage lets it.
   std::optional<SurfaceHit> intersect(const Ray& ray) const;
   // Whether the open segment between two points is blocked at time `time_s`.
   bool occluded(Point3f from, Point3f to, float time_s = 0) const;
   // Whether anything lies along the ray within [t_min, t_max].
-  bool occluded(const Ray& ray) const { return embree_.occluded(ray); }
+  bool occluded(const Ray& ray) const;
+  // How many alpha-covered surfaces one ray may pass; the next one is treated as opaque.
+  static constexpr int kMaxAlphaLayers = 256;
 
   const TraceMaterial& material(uint32_t index) const { return materials_[index]; }
   const AreaLights& lights() const { return lights_.area_lights(); }
@@ -75,6 +79,7 @@ class TraceScene {
   void add_static(const Scene& scene, uint32_t instance, const Transform& world_from_object,
                   bool instanced);
   void add_moving(const Scene& scene, uint32_t instance);
+  SurfaceHit surface_hit(const Ray& ray, const RayHit& hit) const;
   uint32_t prototype_of(const Scene& scene, uint32_t mesh);
 
   EmbreeScene embree_;
@@ -90,6 +95,7 @@ class TraceScene {
   LightSet lights_;
   float ray_epsilon_ = 1e-4f;
   float radius_ = 1;
+  bool has_alpha_ = false;  // some material lets rays through (alphaMode MASK or BLEND)
 };
 
 // Points a ray's origin off a surface along its normal, to the side the ray leaves towards.
