@@ -66,6 +66,13 @@ TEST_F(ObjLoader, PolygonsAreFanTriangulatedAndLinesDropped) {
   EXPECT_EQ(s.meshes[0].indices, (std::vector<uint32_t>{0, 1, 2, 0, 2, 3, 0, 3, 4}));
 }
 
+TEST_F(ObjLoader, ConcaveQuadIsSplitFromItsReflexCorner) {
+  // An arrowhead with its notch at corner 2 (1, 0.3): the fan from corner 1 would cover the notch
+  // and leave part of the quad empty; the diagonal from the notch covers exactly the quad.
+  Scene s = load_obj(write("dart.obj", "v 0 0 0\nv 1 0.3 0\nv 2 0 0\nv 1 2 0\nf 1 2 3 4\n"));
+  EXPECT_EQ(s.meshes[0].indices, (std::vector<uint32_t>{1, 2, 3, 1, 3, 0}));
+}
+
 TEST_F(ObjLoader, ObjectsGroupsAndMaterialsBecomeMeshesAsAssimpMadeThem) {
   write("g.mtl",
         "newmtl red\nKd 1 0 0\nKs 0.5 0.5 0.5\nNs 20\n"

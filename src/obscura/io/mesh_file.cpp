@@ -1,8 +1,11 @@
 #include "obscura/io/mesh_file.h"
 
+#include <algorithm>
 #include <charconv>
+#include <cmath>
 #include <filesystem>
 #include <fstream>
+#include <numbers>
 
 #include "obscura/math/error.h"
 
@@ -108,6 +111,40 @@ Scene single_mesh_scene(const std::string& path, Mesh mesh, Material material) {
   scene.add_mesh(std::move(mesh));
   scene.instances.back().material = 0;  // as the Assimp loader set it
   return scene;
+}
+
+namespace {
+
+// The angle at `at` between the directions to `a` and `b`; NaN when either has no length.
+double angle_between(const Point3f& at, const Point3f& a, const Point3f& b) {
+  Vector3d u(a.x - at.x, a.y - at.y, a.z - at.z), v(b.x - at.x, b.y - at.y, b.z - at.z);
+  double cosine = dot(u, v) / std::sqrt(dot(u, u) * dot(v, v));
+  return std::acos(std::clamp(cosine, -1.0, 1.0));
+}
+
+}  // namespace
+
+void triangulate_polygon(std::span<const uint32_t> corners, const std::vector<Point3f>& positions,
+                         std::vector<uint32_t>& indices) {
+  size_t start = 0;
+  if (corners.size() == 4 && !positions.empty()) {
+    // Corner i is reflex when the two angles its diagonal to corner i + 2 makes with its edges
+    // add up to more than a half turn: the diagonal then leaves the quad.
+    for (size_t i = 0; i < 4; ++i) {
+      const Point3f& v = positions[corners[i]];
+      const Point3f& opposite = positions[corners[(i + 2) % 4]];
+      double sum = angle_between(v, positions[corners[(i + 3) % 4]], opposite) +
+                   angle_between(v, positions[corners[(i + 1) % 4]], opposite);
+      if (sum > std::numbers::pi) {
+        start = i;
+        break;
+      }
+    }
+  }
+  size_t n = corners.size();
+  for (size_t k = 2; k < n; ++k)
+    indices.insert(indices.end(),
+                   {corners[start], corners[(start + k - 1) % n], corners[(start + k) % n]});
 }
 
 void drop_unused_vertices(Mesh& mesh) {

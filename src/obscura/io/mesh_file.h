@@ -60,6 +60,13 @@ std::string scene_name_of(const std::string& path);
 // bring no materials of their own).
 Scene single_mesh_scene(const std::string& path, Mesh mesh, Material material);
 
+// Appends the triangles of a polygon whose corners are mesh vertex indices. A quad is split from
+// its reflex corner, where it has one, so that a concave quad is covered rather than overdrawn
+// (the diagonal Assimp chose too); larger polygons are fanned from the first corner. Fewer than
+// three corners (a point or a line) add nothing.
+void triangulate_polygon(std::span<const uint32_t> corners, const std::vector<Point3f>& positions,
+                         std::vector<uint32_t>& indices);
+
 // Keeps only the vertices some triangle uses, in their order, and renumbers the indices (a
 // mesh file's unused vertices are not rendered; Assimp, whose output these loaders match, drops
 // them too).

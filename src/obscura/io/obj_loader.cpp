@@ -163,13 +163,10 @@ class ObjReader {
     if (corners_.size() < 3) return;  // a point or a line: not rendered
     if (!current()) start_object("defaultobject");
     MeshBuild& m = *current();
-    uint32_t first = vertex(m, corners_[0]);
-    uint32_t previous = vertex(m, corners_[1]);
-    for (size_t i = 2; i < corners_.size(); ++i) {
-      uint32_t next = vertex(m, corners_[i]);
-      m.mesh.indices.insert(m.mesh.indices.end(), {first, previous, next});
-      previous = next;
-    }
+    // Every corner's vertex first, in corner order (the order Assimp numbered them in).
+    polygon_.clear();
+    for (const Corner& corner : corners_) polygon_.push_back(vertex(m, corner));
+    triangulate_polygon(polygon_, m.mesh.positions, m.mesh.indices);
   }
 
   struct Corner {
@@ -336,6 +333,7 @@ class ObjReader {
   std::vector<Point2f> uvs_;
   std::vector<Normal3f> normals_;
   std::vector<Corner> corners_;
+  std::vector<uint32_t> polygon_;  // the current face's vertices
   // Per v/vt/vn line, the first line with the same values, and the maps that find it.
   std::vector<int32_t> canonical_v_, canonical_vt_, canonical_vn_;
   FlatIndexMap<6> position_index_;

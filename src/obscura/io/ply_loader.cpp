@@ -143,6 +143,8 @@ VertexLayout vertex_layout(const PlyElement& e, const std::string& name) {
   return layout;
 }
 
+const std::vector<Point3f> kNoPositions;
+
 template <typename Source>
 class PlyBodyReader {
  public:
@@ -268,8 +270,10 @@ class PlyBodyReader {
                      std::to_string(vertex_count_));
           corners_.push_back(uint32_t(index));
         }
-        for (size_t c = 2; c < corners_.size(); ++c)  // fewer than 3: a point or line, dropped
-          mesh_.indices.insert(mesh_.indices.end(), {corners_[0], corners_[c - 1], corners_[c]});
+        // Faces before the vertices (allowed, never seen) are fanned: no positions to test.
+        bool have_positions = mesh_.positions.size() == vertex_count_;
+        triangulate_polygon(corners_, have_positions ? mesh_.positions : kNoPositions,
+                            mesh_.indices);
       }
     }
   }
