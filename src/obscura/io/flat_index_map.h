@@ -16,14 +16,15 @@ class FlatIndexMap {
  public:
   using Key = std::array<uint32_t, N>;
 
-  // The index stored for `key`, and false; or `index` after storing it, and true.
+  // The index stored for `key`, and false; or `index` after storing it, and true. `index` must
+  // not be kEmpty.
   std::pair<uint32_t, bool> find_or_add(const Key& key, uint32_t index) {
     if ((size_ + 1) * 2 > slots_.size()) grow();
     size_t mask = slots_.size() - 1;
     for (size_t i = hash(key) & mask;; i = (i + 1) & mask) {
       Slot& s = slots_[i];
-      if (!s.used) {
-        s = {key, index, true};
+      if (s.index == kEmpty) {
+        s = {key, index};
         ++size_;
         return {index, true};
       }
@@ -42,10 +43,10 @@ class FlatIndexMap {
   }
 
  private:
-  struct Slot {
+  static constexpr uint32_t kEmpty = ~uint32_t(0);
+  struct Slot {  // no separate "used" flag: a smaller slot is fewer cache misses
     Key key{};
-    uint32_t index = 0;
-    bool used = false;
+    uint32_t index = kEmpty;
   };
 
   static size_t hash(const Key& key) {
@@ -63,7 +64,7 @@ class FlatIndexMap {
     slots_.assign(old.empty() ? 64 : old.size() * 2, Slot{});
     size_ = 0;
     for (const Slot& s : old)
-      if (s.used) find_or_add(s.key, s.index);
+      if (s.index != kEmpty) find_or_add(s.key, s.index);
   }
 
   std::vector<Slot> slots_;

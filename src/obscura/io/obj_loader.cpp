@@ -27,6 +27,7 @@ struct MeshBuild {
   // is one vertex, as Assimp's vertex joining made it.
   FlatIndexMap<3> corners;
   std::vector<uint8_t> has_normal;  // per vertex
+  uint32_t serial = 0;              // which mesh this is, for ObjReader::last_use_
   bool any_uv = false, any_normal = false, any_color = false;
 };
 
@@ -93,6 +94,7 @@ class ObjReader {
       if (!c.number(x)) fail("expected 'v X Y Z'");
     if (!finite(p[0]) || !finite(p[1]) || !finite(p[2])) fail("vertex position is not finite");
     positions_.push_back({p[0], p[1], p[2]});
+    last_use_.emplace_back();
     float extra[4];
     int count = 0;
     while (count < 4 && c.number(extra[count])) ++count;
@@ -110,7 +112,7 @@ class ObjReader {
   MeshBuild* current() { return objects_.empty() ? nullptr : &objects_.back().back(); }
 
   void start_object(const std::string& object) {
-    objects_.emplace_back().emplace_back();
+    objects_.emplace_back().emplace_back().serial = mesh_count_++;
     MeshBuild& m = objects_.back().back();
     m.mesh.name = m.object = object;
     m.material = material_;
@@ -126,6 +128,7 @@ class ObjReader {
     }
     std::vector<MeshBuild>& object = objects_.back();
     MeshBuild& next = object.emplace_back();
+    next.serial = mesh_count_++;
     next.object = object.front().object;
     next.mesh.name = next.material = material;
   }
@@ -174,12 +177,16 @@ class ObjReader {
   };
 
   uint32_t vertex(MeshBuild& m, const Corner& corner) {
+    auto v = uint32_t(canonical_v_[corner.v]);
+    int32_t vt = corner.vt == kNone ? kNone : canonical_vt_[corner.vt];
+    int32_t vn = corner.vn == kNone ? kNone : canonical_vn_[corner.vn];
+    // Neighbouring faces share corners: most lookups are answered here, in file order, without
+    // the random access of the hash table.
+    LastUse& last = last_use_[v];
+    if (last.mesh == m.serial && last.vt == vt && last.vn == vn) return last.vertex;
     auto next = uint32_t(m.mesh.positions.size());
-    auto [index, added] =
-        m.corners.find_or_add({uint32_t(canonical_v_[corner.v]),
-                               corner.vt == kNone ? ~0u : uint32_t(canonical_vt_[corner.vt]),
-                               corner.vn == kNone ? ~0u : uint32_t(canonical_vn_[corner.vn])},
-                              next);
+    auto [index, added] = m.corners.find_or_add({v, uint32_t(vt), uint32_t(vn)}, next);
+    last = {m.serial, vt, vn, index};
     if (!added) return index;
     m.mesh.positions.push_back(positions_[corner.v]);  // equal to the canonical one's
     // Assimp's default for a corner without vt: (0, 0), flipped.
@@ -334,6 +341,14 @@ class ObjReader {
   std::vector<Normal3f> normals_;
   std::vector<Corner> corners_;
   std::vector<uint32_t> polygon_;  // the current face's vertices
+  // Per canonical v: the mesh vertex its last corner became, and with which vt and vn.
+  struct LastUse {
+    uint32_t mesh = ~0u;
+    int32_t vt = 0, vn = 0;
+    uint32_t vertex = 0;
+  };
+  std::vector<LastUse> last_use_;
+  uint32_t mesh_count_ = 0;
   // Per v/vt/vn line, the first line with the same values, and the maps that find it.
   std::vector<int32_t> canonical_v_, canonical_vt_, canonical_vn_;
   FlatIndexMap<6> position_index_;
