@@ -170,6 +170,28 @@ TEST_F(ObjLoader, NormalsAreNormalisedAndMissingOnesComeFromTheFaces) {
   for (const Normal3f& n : m.normals) EXPECT_EQ(n, Normal3f(0, 0, 1));
 }
 
+TEST_F(ObjLoader, FilesLargerThanTheReadChunk) {
+  // load_obj streams the file in 1 MiB chunks: lines across chunk boundaries, a 3 MiB comment
+  // line and CRLF endings must read as they do from memory. A strip of 2·n triangles.
+  const int n = 40000;
+  std::string text = "# " + std::string(3 << 20, 'x') + "\r\n";
+  for (int i = 0; i <= n; ++i)
+    text += "v " + std::to_string(i) + " 0 0\r\nv " + std::to_string(i) + " 1 0.5\r\n";
+  for (int i = 0; i < n; ++i) {
+    int a = 2 * i + 1;
+    text += "f " + std::to_string(a) + " " + std::to_string(a + 2) + " " + std::to_string(a + 3) +
+            " " + std::to_string(a + 1) + "\r\n";
+  }
+  Scene s = load_obj(write("strip.obj", text));
+  ASSERT_EQ(s.meshes.size(), 1u);
+  EXPECT_EQ(s.meshes[0].triangle_count(), size_t(2 * n));
+  EXPECT_EQ(s.meshes[0].vertex_count(), size_t(2 * n + 2));
+  EXPECT_EQ(s.bounds().diagonal(), Vector3f(n, 1, 0.5f));
+  // An error's line number counts every line, across chunks.
+  expect_load_error([&] { load_obj(write("bad.obj", text + "f 1 2 x\n")); },
+                    {"bad.obj:" + std::to_string(1 + 2 * (n + 1) + n + 1)});
+}
+
 TEST_F(ObjLoader, UtahTeapotWithTexture) {
   // tests/data/README.md: 8,028 faces (triangles and quads) making 15,704 triangles; map_Kd
   // default.png, 128².

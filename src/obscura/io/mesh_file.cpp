@@ -11,7 +11,7 @@
 
 namespace obscura {
 
-std::vector<char> read_mesh_file(const std::string& path) {
+uint64_t check_mesh_file(const std::string& path) {
   std::error_code ec;
   auto status = std::filesystem::status(path, ec);
   if (ec || !std::filesystem::exists(status)) throw Error(path, "file does not exist");
@@ -23,6 +23,11 @@ std::vector<char> read_mesh_file(const std::string& path) {
   if (size > kMaxMeshFileBytes)
     throw Error(path, "is " + std::to_string(size >> 20) + " MiB; mesh files over " +
                           std::to_string(kMaxMeshFileBytes >> 20) + " MiB are not read");
+  return size;
+}
+
+std::vector<char> read_mesh_file(const std::string& path) {
+  uint64_t size = check_mesh_file(path);
   std::vector<char> bytes(size);
   if (size == 0) return bytes;
   std::ifstream in(path, std::ios::binary);

@@ -16,6 +16,10 @@ namespace obscura {
 // needs, and small enough that the decoded scene stays within a few GiB.
 inline constexpr uint64_t kMaxMeshFileBytes = uint64_t(1) << 30;
 
+// Throws obscura::Error naming `path` unless it is a regular file (not a FIFO, device or
+// directory) of at most kMaxMeshFileBytes; returns its size.
+uint64_t check_mesh_file(const std::string& path);
+
 // A whole file, if it is a regular file (not a FIFO, device or directory) of at most
 // kMaxMeshFileBytes; else obscura::Error naming it. An empty file is returned empty.
 std::vector<char> read_mesh_file(const std::string& path);

@@ -6,6 +6,7 @@
 #include <filesystem>
 #include <map>
 
+#include "obscura/io/file_lines.h"
 #include "obscura/io/flat_index_map.h"
 #include "obscura/io/mesh_file.h"
 #include "obscura/io/mtl_reader.h"
@@ -28,13 +29,14 @@ struct MeshBuild {
   FlatIndexMap<3> corners;
   std::vector<uint8_t> has_normal;  // per vertex
   uint32_t serial = 0;              // which mesh this is, for ObjReader::last_use_
-  bool any_uv = false, any_normal = false, any_color = false;
 };
 
+// `Lines` is LineReader (bytes in memory) or FileLines (a file streamed in chunks).
+template <typename Lines>
 class ObjReader {
  public:
-  ObjReader(std::span<const char> bytes, const std::string& name, const std::string& base_dir)
-      : lines_{std::string_view(bytes.data(), bytes.size())}, name_(name), base_dir_(base_dir) {}
+  ObjReader(Lines& lines, const std::string& name, const std::string& base_dir)
+      : lines_(lines), name_(name), base_dir_(base_dir) {}
 
   Scene read() {
     std::string_view line;
@@ -188,16 +190,33 @@ class ObjReader {
     auto [index, added] = m.corners.find_or_add({v, uint32_t(vt), uint32_t(vn)}, next);
     last = {m.serial, vt, vn, index};
     if (!added) return index;
+    // Attributes are stored from the first vertex that has one (earlier vertices get the
+    // default), so a mesh without uvs, normals or colours never allocates them.
+    size_t at = m.mesh.positions.size();
     m.mesh.positions.push_back(positions_[corner.v]);  // equal to the canonical one's
-    // Assimp's default for a corner without vt: (0, 0), flipped.
-    m.mesh.uvs.push_back(corner.vt == kNone ? Point2f(0, 1) : uvs_[corner.vt]);
-    m.mesh.normals.push_back(corner.vn == kNone ? Normal3f(0, 0, 0) : normals_[corner.vn]);
-    m.has_normal.push_back(corner.vn != kNone);
-    m.mesh.colors.push_back(size_t(corner.v) < colors_.size() ? colors_[corner.v] : Rgb(1.f));
-    m.any_uv |= corner.vt != kNone;
-    m.any_normal |= corner.vn != kNone;
-    m.any_color |= size_t(corner.v) < colors_.size();
+    if (corner.vt != kNone) {
+      pad(m.mesh.uvs, at, kNoUv);
+      m.mesh.uvs.push_back(uvs_[corner.vt]);
+    }
+    if (corner.vn != kNone) {
+      pad(m.mesh.normals, at, Normal3f());
+      pad(m.has_normal, at, uint8_t(0));
+      m.mesh.normals.push_back(normals_[corner.vn]);
+      m.has_normal.push_back(1);
+    }
+    if (size_t(corner.v) < colors_.size()) {
+      pad(m.mesh.colors, at, Rgb(1.f));
+      m.mesh.colors.push_back(colors_[corner.v]);
+    }
     return index;
+  }
+
+  // Assimp's texture coordinate for a corner without vt: (0, 0), flipped.
+  static constexpr Point2f kNoUv{0, 1};
+
+  template <typename T>
+  static void pad(std::vector<T>& attribute, size_t size, const T& value) {
+    if (attribute.size() < size) attribute.resize(size, value);
   }
 
   void material_library(const std::string& file) {
@@ -252,12 +271,12 @@ class ObjReader {
 
   // Drops what no corner had, fills normals a corner lacked from its faces, normalises.
   static void finish_attributes(MeshBuild& m) {
-    if (!m.any_uv) m.mesh.uvs = {};
-    if (!m.any_color) m.mesh.colors = {};
-    if (!m.any_normal) {
-      m.mesh.normals = {};
-      return;
-    }
+    size_t n = m.mesh.positions.size();
+    if (!m.mesh.uvs.empty()) pad(m.mesh.uvs, n, kNoUv);
+    if (!m.mesh.colors.empty()) pad(m.mesh.colors, n, Rgb(1.f));
+    if (m.mesh.normals.empty()) return;
+    pad(m.mesh.normals, n, Normal3f());
+    pad(m.has_normal, n, uint8_t(0));
     auto unit = [](Vector3f v, bool& ok) {
       float length = std::sqrt(dot(v, v));
       ok = length > 0 && std::isfinite(length);
@@ -332,7 +351,7 @@ class ObjReader {
     return std::move(scene_);
   }
 
-  LineReader lines_;
+  Lines& lines_;
   const std::string& name_;
   std::string base_dir_;
   std::vector<Point3f> positions_;
@@ -368,12 +387,14 @@ class ObjReader {
 
 Scene load_obj_bytes(std::span<const char> bytes, const std::string& name,
                      const std::string& base_dir) {
-  return ObjReader(bytes, name, base_dir).read();
+  LineReader lines{std::string_view(bytes.data(), bytes.size())};
+  return ObjReader<LineReader>(lines, name, base_dir).read();
 }
 
 Scene load_obj(const std::string& path) {
-  std::vector<char> bytes = read_mesh_file(path);
-  return load_obj_bytes(bytes, path, std::filesystem::path(path).parent_path().string());
+  FileLines lines(path);
+  return ObjReader<FileLines>(lines, path, std::filesystem::path(path).parent_path().string())
+      .read();
 }
 
 }  // namespace obscura
