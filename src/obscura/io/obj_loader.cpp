@@ -343,6 +343,12 @@ class ObjReader {
       MeshBuild& m = *meshes[i];
       finish_attributes(m);
       m.mesh.material = uint32_t(remap[material_of[i]]);
+      // Grown by push_back: give back the spare capacity the scene would otherwise keep.
+      m.mesh.indices.shrink_to_fit();
+      m.mesh.positions.shrink_to_fit();
+      m.mesh.normals.shrink_to_fit();
+      m.mesh.uvs.shrink_to_fit();
+      m.mesh.colors.shrink_to_fit();
       std::string object = m.object;
       uint32_t index = scene_.add_mesh(std::move(m.mesh));
       scene_.instances.back().name = object;
