@@ -129,8 +129,10 @@ double angle_between(const Point3f& at, const Point3f& a, const Point3f& b) {
 
 }  // namespace
 
-void triangulate_polygon(std::span<const uint32_t> corners, const std::vector<Point3f>& positions,
+bool triangulate_polygon(std::span<const uint32_t> corners, const std::vector<Point3f>& positions,
                          std::vector<uint32_t>& indices) {
+  if (corners.size() < 3) return true;
+  if (indices.size() / 3 + (corners.size() - 2) > kMaxMeshTriangles) return false;
   size_t start = 0;
   if (corners.size() == 4 && !positions.empty()) {
     // Corner i is reflex when the two angles its diagonal to corner i + 2 makes with its edges
@@ -150,6 +152,7 @@ void triangulate_polygon(std::span<const uint32_t> corners, const std::vector<Po
   for (size_t k = 2; k < n; ++k)
     indices.insert(indices.end(),
                    {corners[start], corners[(start + k - 1) % n], corners[(start + k) % n]});
+  return true;
 }
 
 void drop_unused_vertices(Mesh& mesh) {

@@ -20,6 +20,11 @@ inline constexpr uint64_t kMaxMeshFileBytes = uint64_t(1) << 30;
 // directory) of at most kMaxMeshFileBytes; returns its size.
 uint64_t check_mesh_file(const std::string& path);
 
+// The most triangles one mesh of an OBJ or PLY file may have (2^26, 67 M; 0.8 GB of indices).
+// A file under kMaxMeshFileBytes holding real geometry stays below it; the cap stops a file of
+// long polygons of repeated indices ("f 1 1 1 1 …") from turning each byte into six of memory.
+inline constexpr size_t kMaxMeshTriangles = size_t(1) << 26;
+
 // A whole file, if it is a regular file (not a FIFO, device or directory) of at most
 // kMaxMeshFileBytes; else obscura::Error naming it. An empty file is returned empty.
 std::vector<char> read_mesh_file(const std::string& path);
@@ -67,9 +72,11 @@ Scene single_mesh_scene(const std::string& path, Mesh mesh, Material material);
 // Appends the triangles of a polygon whose corners are mesh vertex indices. A quad is split from
 // its reflex corner, where it has one, so that a concave quad is covered rather than overdrawn
 // (the diagonal Assimp chose too); larger polygons are fanned from the first corner. Fewer than
-// three corners (a point or a line) add nothing.
-void triangulate_polygon(std::span<const uint32_t> corners, const std::vector<Point3f>& positions,
-                         std::vector<uint32_t>& indices);
+// three corners (a point or a line) add nothing. Returns false, adding nothing, when the polygon
+// would take `indices` past kMaxMeshTriangles triangles.
+[[nodiscard]] bool triangulate_polygon(std::span<const uint32_t> corners,
+                                       const std::vector<Point3f>& positions,
+                                       std::vector<uint32_t>& indices);
 
 // Keeps only the vertices some triangle uses, in their order, and renumbers the indices (a
 // mesh file's unused vertices are not rendered; Assimp, whose output these loaders match, drops

@@ -171,7 +171,9 @@ class ObjReader {
     // Every corner's vertex first, in corner order (the order Assimp numbered them in).
     polygon_.clear();
     for (const Corner& corner : corners_) polygon_.push_back(vertex(m, corner));
-    triangulate_polygon(polygon_, m.mesh.positions, m.mesh.indices);
+    if (!triangulate_polygon(polygon_, m.mesh.positions, m.mesh.indices))
+      fail("mesh '" + m.mesh.name + "' would have more than " + std::to_string(kMaxMeshTriangles) +
+           " triangles, the most one mesh may have");
   }
 
   struct Corner {

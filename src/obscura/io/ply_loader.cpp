@@ -272,8 +272,11 @@ class PlyBodyReader {
         }
         // Faces before the vertices (allowed, never seen) are fanned: no positions to test.
         bool have_positions = mesh_.positions.size() == vertex_count_;
-        triangulate_polygon(corners_, have_positions ? mesh_.positions : kNoPositions,
-                            mesh_.indices);
+        if (!triangulate_polygon(corners_, have_positions ? mesh_.positions : kNoPositions,
+                                 mesh_.indices))
+          fail(e, f,
+               "more than " + std::to_string(kMaxMeshTriangles) +
+                   " triangles, the most one mesh may have");
       }
     }
   }
