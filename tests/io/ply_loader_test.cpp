@@ -265,6 +265,12 @@ TEST_F(PlyLoader, SceneLoaderRoutesPlyHereAndTheCliReportsErrors) {
   test::CommandResult r = test::run_cli("info " + path);
   EXPECT_EQ(r.exit_code, 1) << r.output;
   EXPECT_THAT(r.output, testing::HasSubstr("cut.ply"));
+  // Issue 12: the first 3,000 bytes of a bunny aborted `obscura info` through Assimp (SIGABRT,
+  // exit 134); now a message and exit status 1.
+  std::string bunny = test::read_file(test::data_path("meshes/stanford_bunny/bun_zipper_res4.ply"));
+  r = test::run_cli("info " + write("bunny3000.ply", bunny.substr(0, 3000)));
+  EXPECT_EQ(r.exit_code, 1) << r.output;
+  EXPECT_THAT(r.output, testing::HasSubstr("bunny3000.ply: element 'vertex' declares 453"));
 }
 
 }  // namespace
