@@ -2,6 +2,8 @@
 // "solid"), and hostile input: truncation at many cut points and triangle counts that lie.
 #include "obscura/io/stl_loader.h"
 
+#include <sys/stat.h>
+
 #include "mesh_test_files.h"
 #include "obscura/io/scene_loader.h"
 #include "test_paths.h"
@@ -126,6 +128,16 @@ TEST_F(StlLoader, MalformedAsciiNamesTheLine) {
   expect_load_error([&] { load_stl(write("d.stl", "solid x\nbanana\nendsolid\n")); },
                     {"d.stl:2", "banana"});
   expect_load_error([&] { load_stl(write("e.stl", "")); }, {"e.stl", "empty"});
+}
+
+TEST_F(StlLoader, FifoDeviceAndDirectoryAreRefusedWithoutReading) {
+  // Read forever (a FIFO no one writes, /dev/zero) if opened: refused from the file's type.
+  std::string fifo = dir_ + "/pipe.stl";
+  ASSERT_EQ(mkfifo(fifo.c_str(), 0600), 0);
+  expect_load_error([&] { load_stl(fifo); }, {"pipe.stl", "not a regular file"});
+  expect_load_error([&] { load_stl("/dev/zero"); }, {"/dev/zero", "not a regular file"});
+  expect_load_error([&] { load_stl(dir_); }, {"directory"});
+  expect_load_error([&] { load_stl(dir_ + "/none.stl"); }, {"none.stl", "does not exist"});
 }
 
 TEST_F(StlLoader, SceneLoaderRoutesStlHere) {
