@@ -1,4 +1,6 @@
-// OBJ/MTL, PLY, STL, FBX, COLLADA, 3DS… (every format Assimp reads) into a Scene.
+// FBX, COLLADA, 3DS… (every format Assimp reads) into a Scene. OBJ, PLY and STL files go to
+// Obscura's own readers (obj_loader.h, ply_loader.h, stl_loader.h) instead, which produce the
+// same layout; this loader still reads them when called directly (the parity tests compare).
 //
 // Faces are triangulated, points and lines dropped; texture coordinates are flipped to glTF's
 // convention (v = 0 at the image's top). OBJ/MTL materials become Phong materials: Ka, Kd, Ks,

@@ -11,6 +11,9 @@
 #include "obscura/io/camera_mapping.h"
 #include "obscura/io/gltf_loader.h"
 #include "obscura/io/json_scene.h"
+#include "obscura/io/obj_loader.h"
+#include "obscura/io/ply_loader.h"
+#include "obscura/io/stl_loader.h"
 #include "obscura/math/error.h"
 #include "obscura/scene/builtin_scenes.h"
 
@@ -40,10 +43,15 @@ Scene load_model_file(const std::string& path) {
     throw Error(path, "is a directory, not a model file");
   std::string ext = lower_extension(path);
   if (ext == ".gltf" || ext == ".glb") return load_gltf(path);
+  // Obscura's own readers for the common mesh formats: bounded, fast, and they fail with a
+  // message where Assimp's asserts abort the process on hostile input.
+  if (ext == ".obj") return load_obj(path);
+  if (ext == ".ply") return load_ply(path);
+  if (ext == ".stl") return load_stl(path);
   if (ext != ".json" && Assimp::Importer().IsExtensionSupported(ext)) return load_with_assimp(path);
   throw Error(path, "unknown model format '" + ext +
-                        "'; expected .gltf, .glb or a mesh format Assimp reads "
-                        "(.obj, .ply, .stl, .fbx, .dae, .3ds, …)");
+                        "'; expected .gltf, .glb, .obj, .ply, .stl or another mesh format "
+                        "Assimp reads (.fbx, .dae, .3ds, …)");
 }
 
 Scene load_scene_file(const std::string& path) {

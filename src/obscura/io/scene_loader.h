@@ -9,12 +9,13 @@
 namespace obscura {
 
 // Loads a scene file, choosing the loader by extension: .gltf/.glb (glTF 2.0), .json (Obscura's
-// scene file), anything else Assimp reads (.obj, .ply, .stl, .fbx, .dae, .3ds, …). The result
+// scene file), .obj/.ply/.stl (Obscura's own readers), anything else Assimp reads (.fbx, .dae,
+// .3ds, …). The result
 // is validated and has a render camera (the file's first, or one framing the scene).
 Scene load_scene_file(const std::string& path);
 
-// A model file (glTF or an Assimp format) as it is, without a render camera or validation: what
-// the JSON scene file includes.
+// A model file (glTF, OBJ, PLY, STL or an Assimp format) as it is, without a render camera or
+// validation: what the JSON scene file includes.
 Scene load_model_file(const std::string& path);
 
 struct BuiltinScene {
