@@ -8,6 +8,7 @@
 
 #include "camera_options.h"
 #include "display_options.h"
+#include "image_limit_option.h"
 #include "obscura/io/default_environment.h"
 #include "obscura/io/image_io.h"
 #include "obscura/io/scene_loader.h"
@@ -194,6 +195,7 @@ void add_render_command(CLI::App& app) {
       ->capture_default_str();
   add_camera_options(*render, options->camera);
   add_display_options(render, options->display);
+  add_max_image_pixels_option(render);
   add_tracer_options(*render, options->tracer);
   add_raster_options(*render, options->raster);
   add_raster_effects_options(*render, options->raster_effects);

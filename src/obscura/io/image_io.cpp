@@ -16,6 +16,7 @@
 #include <OpenImageIO/imageio.h>
 
 #include "obscura/color/quantize.h"
+#include "obscura/io/image_reader.h"
 #include "obscura/io/y4m_writer.h"
 #include "obscura/math/error.h"
 
@@ -259,14 +260,11 @@ WriteReport write_image(const std::string& path, const Image& image,
 }
 
 Image read_image(const std::string& path) {
-  auto in = OIIO::ImageInput::open(path);
-  if (!in) throw Error(path, "cannot read image: " + OIIO::geterror());
-  const OIIO::ImageSpec& spec = in->spec();
+  CheckedImageInput in = CheckedImageInput::open_file(path);
+  const OIIO::ImageSpec& spec = in.spec();
   Image image(spec.width, spec.height, spec.nchannels);
   image.channel_names = spec.channelnames;
-  if (!in->read_image(0, 0, 0, spec.nchannels, OIIO::TypeDesc::FLOAT, image.data.data()))
-    throw Error(path, "cannot decode image: " + in->geterror());
-  in->close();
+  in.read(spec.nchannels, OIIO::TypeDesc::FLOAT, image.data.data());
   return image;
 }
 

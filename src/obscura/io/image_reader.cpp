@@ -1,0 +1,69 @@
+#include "obscura/io/image_reader.h"
+
+#include <filesystem>
+#include <utility>
+
+#include "obscura/io/image_limits.h"
+#include "obscura/math/error.h"
+
+namespace obscura {
+
+namespace {
+
+std::string extension_for(const std::string& hint) {
+  if (hint == "image/png") return "png";
+  if (hint == "image/jpeg") return "jpg";
+  if (hint.rfind("image/", 0) == 0) return hint.substr(6);
+  return hint;
+}
+
+// Refuses, before anything is decoded, what the readers below cannot or must not decode.
+void check_header(const OIIO::ImageSpec& spec, const std::string& source) {
+  if (spec.deep) throw Error(source, "deep images are not supported; expected a flat image");
+  check_decoded_size(source, spec.width, spec.height, spec.depth, spec.nchannels);
+}
+
+}  // namespace
+
+CheckedImageInput::CheckedImageInput(std::string source,
+                                     std::unique_ptr<OIIO::Filesystem::IOMemReader> memory,
+                                     std::unique_ptr<OIIO::ImageInput> input)
+    : source_(std::move(source)), memory_(std::move(memory)), input_(std::move(input)) {
+  check_header(input_->spec(), source_);
+}
+
+CheckedImageInput CheckedImageInput::open_file(const std::string& path) {
+  std::error_code ec;
+  if (!std::filesystem::exists(path, ec)) throw Error(path, "image file does not exist");
+  // A FIFO or a device such as /dev/zero would be read forever.
+  if (!std::filesystem::is_regular_file(path, ec))
+    throw Error(path, "not a regular file; expected an image file");
+  std::unique_ptr<OIIO::ImageInput> input = OIIO::ImageInput::open(path);
+  if (!input) throw Error(path, "cannot read image: " + OIIO::geterror());
+  return CheckedImageInput(path, nullptr, std::move(input));
+}
+
+CheckedImageInput CheckedImageInput::open_memory(std::span<const uint8_t> bytes,
+                                                 const std::string& source,
+                                                 const std::string& format_hint) {
+  if (bytes.empty()) throw Error(source, "embedded image is empty");
+  // OpenImageIO reads from memory through an IOProxy; the made-up file name only selects the
+  // format reader. The reader never writes through the pointer.
+  auto memory = std::make_unique<OIIO::Filesystem::IOMemReader>(const_cast<uint8_t*>(bytes.data()),
+                                                                bytes.size());
+  void* proxy = memory.get();
+  OIIO::ImageSpec config;
+  config.attribute("oiio:ioproxy", OIIO::TypeDesc::PTR, &proxy);
+  std::string ext = extension_for(format_hint);
+  std::unique_ptr<OIIO::ImageInput> input =
+      OIIO::ImageInput::open("embedded." + (ext.empty() ? std::string("png") : ext), &config);
+  if (!input) throw Error(source, "cannot decode embedded image: " + OIIO::geterror());
+  return CheckedImageInput(source, std::move(memory), std::move(input));
+}
+
+void CheckedImageInput::read(int channels, OIIO::TypeDesc type, void* pixels) {
+  if (!input_->read_image(0, 0, 0, channels, type, pixels))
+    throw Error(source_, "cannot decode image: " + input_->geterror());
+}
+
+}  // namespace obscura
