@@ -83,6 +83,23 @@ TEST_F(AtomicOutput, CannotCreateInMissingDirectoryNamesTheTarget) {
   }
 }
 
+TEST_F(AtomicOutput, ReplacedFileKeepsItsPermissionBits) {
+  Image image(4, 4, 3);
+  for (unsigned mode : {0600u, 0640u, 0755u, 0444u | 0200u}) {
+    for (const char* name : {"keep.png", "keep.pfm", "keep.y4m"}) {
+      write_image(path(name), image);
+      ASSERT_EQ(::chmod(path(name).c_str(), mode), 0);
+      write_image(path(name), image);
+      EXPECT_EQ(mode_of(path(name)), mode) << name;
+    }
+  }
+  // A new file gets the usual 0666 less the umask.
+  mode_t mask = ::umask(0);
+  ::umask(mask);
+  write_image(path("new.exr"), image);
+  EXPECT_EQ(mode_of(path("new.exr")), 0666u & ~unsigned(mask));
+}
+
 // `ulimit -f 1` makes any write past the first 512 or 1024 bytes fail with EFBIG (the CLI ignores
 // SIGXFSZ), the way a full disk fails: each format must report it and keep the old output.
 TEST_F(AtomicOutput, FailedWriteKeepsExistingOutputForEveryFormat) {
@@ -99,6 +116,7 @@ TEST_F(AtomicOutput, FailedWriteKeepsExistingOutputForEveryFormat) {
     auto r = test::run_shell(convert);
     ASSERT_EQ(r.exit_code, 0) << r.output;  // without a limit the write succeeds...
     EXPECT_GT(fs::file_size(out), 2048u) << name;
+    EXPECT_EQ(mode_of(out), 0640u) << name;
     std::ofstream(out, std::ios::binary | std::ios::trunc) << good;
     unsigned mode = mode_of(out);
     r = test::run_shell("ulimit -f 1; " + convert);  // ...and under the limit it fails, whole
@@ -107,6 +125,7 @@ TEST_F(AtomicOutput, FailedWriteKeepsExistingOutputForEveryFormat) {
     EXPECT_NE(r.output.find("File too large"), std::string::npos) << r.output;
     EXPECT_EQ(contents(out), good) << name;
     EXPECT_EQ(mode_of(out), mode) << name;
+    EXPECT_EQ(mode_of(out), 0640u) << name;
     EXPECT_TRUE(others({"in.exr", name}).empty()) << name << ": " << others({"in.exr", name})[0];
     fs::remove(out);
   }

@@ -80,6 +80,10 @@ void AtomicFile::commit() {
   // closed.
   if (::fsync(fd_) != 0 && errno != EINVAL && errno != EROFS)
     fail("write failed: " + system_reason(errno));
+  struct stat replaced;
+  if (::stat(target_.c_str(), &replaced) == 0 && S_ISREG(replaced.st_mode) &&
+      ::fchmod(fd_, replaced.st_mode & 07777) != 0)
+    fail("cannot keep the replaced file's permissions: " + system_reason(errno));
   int fd = std::exchange(fd_, -1);
   if (::close(fd) != 0) fail("write failed: " + system_reason(errno));
   if (::rename(temporary_.c_str(), target_.c_str()) != 0)

@@ -2,7 +2,8 @@
 // hidden temporary file beside the target, every write, the flush to disk and the close are
 // checked (a full disk, a quota or a file-size limit is an error, never a truncated file), and
 // only then is the temporary renamed over the target. On any failure the temporary file is
-// removed and an existing target is left untouched.
+// removed and an existing target is left untouched. A replaced target's permission bits are
+// kept.
 #pragma once
 
 #include <cstdint>
@@ -24,7 +25,8 @@ class AtomicFile {
   // space left on device"); the temporary file is removed then.
   void write(std::span<const uint8_t> bytes);
   void write(const std::string& text);
-  // Flushes to disk, closes it and renames it over the target. Throws obscura::Error, removing the temporary.
+  // Flushes to disk, gives the file the replaced target's permission bits (if there is one),
+  // closes it and renames it over the target. Throws obscura::Error, removing the temporary.
   void commit();
 
   const std::string& target() const { return target_; }
