@@ -99,6 +99,8 @@ void run_render(RenderOptions options) {
   EnvironmentChoice environment = parse_environment_choice(options.environment);
   environment.intensity = float(options.environment_intensity);
   apply_environment(scene, environment);
+  // Before rendering: the output must not replace the scene file, a model, buffer or texture.
+  check_not_an_input(options.output, scene.input_files);
   apply_scene_settings(scene.render, options);
   if (!options.quiet)
     for (const std::string& w : scene.warnings) std::fprintf(stderr, "warning: %s\n", w.c_str());

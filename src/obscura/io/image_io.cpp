@@ -163,7 +163,7 @@ bool is_display_format(ImageFormat f) {
          f == ImageFormat::kY4m;
 }
 
-void check_not_an_input(const std::string& output, std::initializer_list<std::string> inputs) {
+void check_not_an_input(const std::string& output, const std::vector<std::string>& inputs) {
   std::error_code ec;
   for (const std::string& input : inputs)
     if (fs::exists(output, ec) && fs::equivalent(output, input, ec))

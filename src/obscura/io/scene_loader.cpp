@@ -39,11 +39,17 @@ Scene load_model_file(const std::string& path) {
   if (std::filesystem::is_directory(path, ec))
     throw Error(path, "is a directory, not a model file");
   std::string ext = lower_extension(path);
-  if (ext == ".gltf" || ext == ".glb") return load_gltf(path);
-  if (ext != ".json" && Assimp::Importer().IsExtensionSupported(ext)) return load_with_assimp(path);
-  throw Error(path, "unknown model format '" + ext +
-                        "'; expected .gltf, .glb or a mesh format Assimp reads "
-                        "(.obj, .ply, .stl, .fbx, .dae, .3ds, …)");
+  Scene scene;
+  if (ext == ".gltf" || ext == ".glb")
+    scene = load_gltf(path);
+  else if (ext != ".json" && Assimp::Importer().IsExtensionSupported(ext))
+    scene = load_with_assimp(path);
+  else
+    throw Error(path, "unknown model format '" + ext +
+                          "'; expected .gltf, .glb or a mesh format Assimp reads "
+                          "(.obj, .ply, .stl, .fbx, .dae, .3ds, …)");
+  scene.input_files.insert(scene.input_files.begin(), path);
+  return scene;
 }
 
 Scene load_scene_file(const std::string& path) {
@@ -52,6 +58,7 @@ Scene load_scene_file(const std::string& path) {
     std::error_code ec;
     if (!std::filesystem::exists(path, ec)) throw Error(path, "scene file does not exist");
     scene = load_json_scene(path);  // chooses its own camera
+    scene.input_files.insert(scene.input_files.begin(), path);
   } else {
     scene = load_model_file(path);
     finish_cameras(scene, "", path);
