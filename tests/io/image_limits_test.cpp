@@ -12,6 +12,7 @@
 #include <string>
 #include <vector>
 
+#include "obscura/io/gltf_loader.h"
 #include "obscura/io/image_io.h"
 #include "obscura/io/texture_loader.h"
 #include "obscura/math/error.h"
@@ -57,6 +58,20 @@ std::vector<uint8_t> png_declaring(uint32_t width, uint32_t height) {
   put_chunk(png, "IDAT", {0x78, 0x9C, 0x63, 0x00, 0x00, 0x00, 0x01, 0x00, 0x01});
   put_chunk(png, "IEND", {});
   return png;
+}
+
+// RFC 4648 base64, for a glTF data URI.
+std::string base64(const std::vector<uint8_t>& bytes) {
+  const char* alphabet = "ABCDEFGHIJKLMNOPQRSTUVWXYZabcdefghijklmnopqrstuvwxyz0123456789+/";
+  std::string out;
+  for (size_t i = 0; i < bytes.size(); i += 3) {
+    uint32_t n = uint32_t(bytes[i]) << 16;
+    if (i + 1 < bytes.size()) n |= uint32_t(bytes[i + 1]) << 8;
+    if (i + 2 < bytes.size()) n |= bytes[i + 2];
+    size_t left = bytes.size() - i;  // 1, 2 or 3 bytes in this group
+    for (size_t k = 0; k < 4; ++k) out += k <= left ? alphabet[(n >> (18 - 6 * k)) & 63] : '=';
+  }
+  return out;
 }
 
 class ImageLimits : public test::TempDirTest {
@@ -116,6 +131,16 @@ TEST_F(ImageLimits, HugeDeclaredPngIsRefusedFromItsHeaderByEveryReader) {
     expect_limit_message(e.what(), "model.gltf: images[0]");
   }
   EXPECT_LT(std::chrono::steady_clock::now() - start, std::chrono::seconds(5));
+}
+
+TEST_F(ImageLimits, HugeGltfImageIsNamedInAWarningWithTheLimit) {
+  std::string gltf = R"({"asset": {"version": "2.0"}, "images": [{"uri": "data:image/png;base64,)" +
+                     base64(png_declaring(20000, 20000)) + R"("}]})";
+  Scene scene = load_gltf_bytes(
+      std::span<const uint8_t>(reinterpret_cast<const uint8_t*>(gltf.data()), gltf.size()),
+      "huge.gltf", dir_);
+  ASSERT_EQ(scene.warnings.size(), 1u);
+  expect_limit_message(scene.warnings[0], "huge.gltf: images[0]");
 }
 
 TEST_F(ImageLimits, EnvironmentVariableAndSetterMoveTheLimit) {

@@ -67,13 +67,12 @@ void check_decoded_size(const std::string& source, int64_t width, int64_t height
   bool overflow = __builtin_mul_overflow(uint64_t(width), uint64_t(height), &pixels) ||
                   __builtin_mul_overflow(pixels, (uint64_t(channels) + 3) / 4, &pixel_equivalents);
   if (overflow || pixel_equivalents > limit)
-    throw Error(
-        source,
-        "image is " + dimensions(width, height) + " pixels" +
-            (channels > 4 ? " of " + std::to_string(channels) + " channels" : "") + " (" +
-            std::to_string(pixel_equivalents) + (channels > 4 ? " pixels' worth" : " pixels") +
-            "), beyond the decoded-size limit of " + std::to_string(limit) +
-            " pixels; raise it with --max-image-pixels N or the environment variable " + kVariable);
+    // Kept short: glTF loading shows it in a warning cut at 200 characters.
+    throw Error(source, "image is " + dimensions(width, height) +
+                            (channels > 4 ? "x" + std::to_string(channels) + " channels" : "") +
+                            " (" + std::to_string(pixel_equivalents) +
+                            " pixels), over the decoded-size limit of " + std::to_string(limit) +
+                            "; raise it with --max-image-pixels or " + kVariable);
 }
 
 }  // namespace obscura
