@@ -3,6 +3,7 @@
 #include "obscura/io/image_limits.h"
 
 #include <gtest/gtest.h>
+#include <sys/stat.h>
 
 #include <chrono>
 #include <cstdint>
@@ -231,6 +232,15 @@ TEST_F(ImageLimits, CliOptionAndVariableSetTheLimit) {
   r = test::run_shell("OBSCURA_MAX_IMAGE_PIXELS=4095 " + convert + path("f.exr") +
                       " --max-image-pixels 4096");  // the option wins
   EXPECT_EQ(r.exit_code, 0) << r.output;
+}
+
+TEST_F(ImageLimits, DevicesAndFifosAreRefusedNotReadForever) {
+  ASSERT_EQ(mkfifo(path("fifo.png").c_str(), 0600), 0);
+  EXPECT_THROW(read_image(path("fifo.png")), Error);
+  EXPECT_THROW(read_texture(path("fifo.png"), TextureEncoding::kSrgb), Error);
+  auto r = test::run_cli("image convert /dev/zero " + path("out.png"));
+  EXPECT_EQ(r.exit_code, 1) << r.output;
+  EXPECT_NE(r.output.find("/dev/zero: not a regular file"), std::string::npos) << r.output;
 }
 
 }  // namespace
