@@ -243,5 +243,28 @@ TEST_F(ImageLimits, DevicesAndFifosAreRefusedNotReadForever) {
   EXPECT_NE(r.output.find("/dev/zero: not a regular file"), std::string::npos) << r.output;
 }
 
+// Found by the image fuzz target: a 298-byte EXR whose "capDate" string attribute declares
+// 1768161299 bytes (0x69640013, little-endian at offset 22), which OpenEXR allocates before
+// reading. The header check refuses it first.
+TEST_F(ImageLimits, ExrAttributeLargerThanTheFileIsRefused) {
+  std::string file = test::source_path("fuzz/corpus/image/regress-exr-string-attribute-1.7gb.exr");
+  std::ifstream in(file, std::ios::binary);
+  std::vector<uint8_t> bytes{std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
+  ASSERT_EQ(bytes.size(), 298u);
+  for (auto read : {+[](const std::string&f, const std::vector<uint8_t>&) { read_image(f); },
+                    +[](const std::string&, const std::vector<uint8_t>&b) {
+                      decode_texture(b, "mem.exr", "exr", TextureEncoding::kLinear);
+                    }}) {
+    try {
+      read(file, bytes);
+      ADD_FAILURE() << "accepted";
+    } catch (const Error& e) {
+      EXPECT_NE(std::string(e.what()).find("'capDate' declares 1768161299 bytes"),
+                std::string::npos)
+          << e.what();
+    }
+  }
+}
+
 }  // namespace
 }  // namespace obscura

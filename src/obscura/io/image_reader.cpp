@@ -1,8 +1,13 @@
 #include "obscura/io/image_reader.h"
 
+#include <fcntl.h>
+#include <unistd.h>
+
+#include <cstring>
 #include <filesystem>
 #include <utility>
 
+#include "obscura/io/exr_header_check.h"
 #include "obscura/io/image_limits.h"
 #include "obscura/math/error.h"
 
@@ -23,6 +28,34 @@ void check_header(const OIIO::ImageSpec& spec, const std::string& source) {
   check_decoded_size(source, spec.width, spec.height, spec.depth, spec.nchannels);
 }
 
+// OpenEXR allocates what its header declares before reading it: check the header first.
+void check_exr_file(const std::string& path) {
+  int fd = ::open(path.c_str(), O_RDONLY | O_CLOEXEC);
+  if (fd < 0) return;  // OpenImageIO reports why it cannot be read
+  auto read = [fd](uint64_t offset, size_t size, uint8_t* out) {
+    return ::pread(fd, out, size, off_t(offset)) == ssize_t(size);
+  };
+  uint8_t magic[4];
+  try {
+    if (read(0, 4, magic) && is_exr_magic(magic))
+      check_exr_header(read, uint64_t(std::filesystem::file_size(path)), path);
+  } catch (...) {
+    ::close(fd);
+    throw;
+  }
+  ::close(fd);
+}
+
+void check_exr_memory(std::span<const uint8_t> bytes, const std::string& source) {
+  if (bytes.size() < 4 || !is_exr_magic(bytes.data())) return;
+  auto read = [bytes](uint64_t offset, size_t size, uint8_t* out) {
+    if (offset > bytes.size() || size > bytes.size() - offset) return false;
+    std::memcpy(out, bytes.data() + offset, size);
+    return true;
+  };
+  check_exr_header(read, bytes.size(), source);
+}
+
 }  // namespace
 
 CheckedImageInput::CheckedImageInput(std::string source,
@@ -38,6 +71,7 @@ CheckedImageInput CheckedImageInput::open_file(const std::string& path) {
   // A FIFO or a device such as /dev/zero would be read forever.
   if (!std::filesystem::is_regular_file(path, ec))
     throw Error(path, "not a regular file; expected an image file");
+  check_exr_file(path);
   std::unique_ptr<OIIO::ImageInput> input = OIIO::ImageInput::open(path);
   if (!input) throw Error(path, "cannot read image: " + OIIO::geterror());
   return CheckedImageInput(path, nullptr, std::move(input));
@@ -47,6 +81,7 @@ CheckedImageInput CheckedImageInput::open_memory(std::span<const uint8_t> bytes,
                                                  const std::string& source,
                                                  const std::string& format_hint) {
   if (bytes.empty()) throw Error(source, "embedded image is empty");
+  check_exr_memory(bytes, source);
   // OpenImageIO reads from memory through an IOProxy; the made-up file name only selects the
   // format reader. The reader never writes through the pointer.
   auto memory = std::make_unique<OIIO::Filesystem::IOMemReader>(const_cast<uint8_t*>(bytes.data()),
