@@ -185,6 +185,10 @@ TEST_F(ImageLimits, HeaderChecksRejectDegenerateAndHostileShapes) {
   EXPECT_THROW(check_decoded_size("a", 4, 4, 1, 0), Error);
   EXPECT_THROW(check_decoded_size("a", 4, 4, 1, 65), Error);
   EXPECT_THROW(check_decoded_size("a", 4, 4, 1, 100000), Error);
+  set_max_image_pixels(uint64_t(1) << 40);
+  EXPECT_NO_THROW(check_decoded_size("a", 65536, 2, 1, 4));  // rows of 65536 × 4 values
+  EXPECT_THROW(check_decoded_size("a", 65537, 2, 1, 4), Error);
+  EXPECT_THROW(check_decoded_size("a", 1000000, 1, 1, 3), Error);  // fuzz finding (PFM)
   set_max_image_pixels(UINT64_MAX);  // products that wrap 64 bits are still refused
   EXPECT_THROW(check_decoded_size("a", INT64_MAX, INT64_MAX, 1, 64), Error);
 }

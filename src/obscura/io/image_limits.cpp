@@ -62,6 +62,12 @@ void check_decoded_size(const std::string& source, int64_t width, int64_t height
   if (channels <= 0 || channels > kMaxImageChannels)
     throw Error(source, "image declares " + std::to_string(channels) + " channels; expected 1 to " +
                             std::to_string(kMaxImageChannels));
+  uint64_t row_values = 0;
+  if (__builtin_mul_overflow(uint64_t(width), uint64_t(channels), &row_values) ||
+      row_values > kMaxImageRowValues)
+    throw Error(source, "image rows are " + std::to_string(width) + " pixels of " +
+                            std::to_string(channels) + " channels; at most " +
+                            std::to_string(kMaxImageRowValues) + " values per row are read");
   uint64_t limit = max_image_pixels();
   uint64_t pixels = 0, pixel_equivalents = 0;
   bool overflow = __builtin_mul_overflow(uint64_t(width), uint64_t(height), &pixels) ||
