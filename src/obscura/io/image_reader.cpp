@@ -3,6 +3,7 @@
 #include <fcntl.h>
 #include <unistd.h>
 
+#include <algorithm>
 #include <cstring>
 #include <filesystem>
 #include <utility>
@@ -58,8 +59,21 @@ void check_exr_memory(std::span<const uint8_t> bytes, const std::string& source)
 
 }  // namespace
 
+size_t BoundedMemoryReader::pread(void* buffer, size_t size, int64_t offset) {
+  if (offset < 0 || uint64_t(offset) >= bytes_.size()) return 0;
+  size_t n = std::min(size, bytes_.size() - size_t(offset));
+  std::memcpy(buffer, bytes_.data() + offset, n);
+  return n;
+}
+
+size_t BoundedMemoryReader::read(void* buffer, size_t size) {
+  size_t n = pread(buffer, size, m_pos);
+  m_pos += int64_t(n);
+  return n;
+}
+
 CheckedImageInput::CheckedImageInput(std::string source,
-                                     std::unique_ptr<OIIO::Filesystem::IOMemReader> memory,
+                                     std::unique_ptr<BoundedMemoryReader> memory,
                                      std::unique_ptr<OIIO::ImageInput> input)
     : source_(std::move(source)), memory_(std::move(memory)), input_(std::move(input)) {
   check_header(input_->spec(), source_);
@@ -83,9 +97,8 @@ CheckedImageInput CheckedImageInput::open_memory(std::span<const uint8_t> bytes,
   if (bytes.empty()) throw Error(source, "embedded image is empty");
   check_exr_memory(bytes, source);
   // OpenImageIO reads from memory through an IOProxy; the made-up file name only selects the
-  // format reader. The reader never writes through the pointer.
-  auto memory = std::make_unique<OIIO::Filesystem::IOMemReader>(const_cast<uint8_t*>(bytes.data()),
-                                                                bytes.size());
+  // format reader.
+  auto memory = std::make_unique<BoundedMemoryReader>(bytes);
   void* proxy = memory.get();
   OIIO::ImageSpec config;
   config.attribute("oiio:ioproxy", OIIO::TypeDesc::PTR, &proxy);

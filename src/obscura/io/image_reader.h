@@ -14,6 +14,21 @@
 
 namespace obscura {
 
+// Reads from bytes in memory for OpenImageIO. (OpenImageIO 2.4's IOMemReader copies past its
+// buffer when a reader asks for an offset beyond the end, which a corrupt file makes OpenEXR
+// do: found by fuzz/image_fuzz.cpp.) Reads past the end return fewer bytes, never more.
+class BoundedMemoryReader final : public OIIO::Filesystem::IOProxy {
+ public:
+  explicit BoundedMemoryReader(std::span<const uint8_t> bytes) : IOProxy("", Read), bytes_(bytes) {}
+  const char* proxytype() const override { return "obscura-memreader"; }
+  size_t read(void* buffer, size_t size) override;
+  size_t pread(void* buffer, size_t size, int64_t offset) override;
+  size_t size() const override { return bytes_.size(); }
+
+ private:
+  std::span<const uint8_t> bytes_;
+};
+
 class CheckedImageInput {
  public:
   // Opens an image file. Throws obscura::Error naming the file when it is missing, not a regular
@@ -33,11 +48,11 @@ class CheckedImageInput {
   void read(int channels, OIIO::TypeDesc type, void* pixels);
 
  private:
-  CheckedImageInput(std::string source, std::unique_ptr<OIIO::Filesystem::IOMemReader> memory,
+  CheckedImageInput(std::string source, std::unique_ptr<BoundedMemoryReader> memory,
                     std::unique_ptr<OIIO::ImageInput> input);
 
   std::string source_;
-  std::unique_ptr<OIIO::Filesystem::IOMemReader> memory_;  // the proxy input_ reads through
+  std::unique_ptr<BoundedMemoryReader> memory_;  // the proxy input_ reads through
   std::unique_ptr<OIIO::ImageInput> input_;
 };
 
