@@ -8,6 +8,7 @@
 #include <vector>
 
 #include "display_options.h"
+#include "image_limit_option.h"
 #include "obscura/color/transfer.h"
 #include "obscura/io/image_io.h"
 #include "obscura/math/error.h"
@@ -155,6 +156,7 @@ void add_image_command(CLI::App& app) {
   c->add_option("output", convert->output, "Output image; the format follows the extension")
       ->required();
   add_display_options(c, convert->display, /*with_exposure=*/true);
+  add_max_image_pixels_option(c);
   c->add_flag("-q,--quiet", convert->quiet, "Print nothing on success");
   c->callback([convert] { run_convert(*convert); });
 
@@ -167,6 +169,7 @@ void add_image_command(CLI::App& app) {
   d->add_option("b", diff->b, "Second image")->required()->check(CLI::ExistingFile);
   d->add_option("--heatmap", diff->heatmap, "Write a heat map of the per-pixel error (PNG)");
   d->add_flag("--json", diff->json, "Machine-readable output");
+  add_max_image_pixels_option(d);
   d->callback([diff] { run_diff(*diff); });
 }
 

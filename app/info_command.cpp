@@ -7,6 +7,7 @@
 #include <memory>
 #include <variant>
 
+#include "image_limit_option.h"
 #include "obscura/io/scene_loader.h"
 
 namespace obscura::app {
@@ -96,6 +97,7 @@ void add_info_command(CLI::App& app) {
   info->add_option("scene", *scene,
                    "A scene file or a built-in scene name; default: the Cornell box");
   info->add_flag("-v,--verbose", *verbose, "Also list materials, textures, lights and cameras");
+  add_max_image_pixels_option(info);
   info->callback([scene, verbose] { run_info(*scene, *verbose); });
 }
 

@@ -1,19 +1,23 @@
 // obscura: the command line. main only wires subcommands; each lives in its own file.
+#include <csignal>
 #include <cstdio>
 #include <exception>
 
 #include <CLI/CLI.hpp>
 
-#include "obscura/math/error.h"
 #include "camera_command.h"
 #include "color_command.h"
 #include "image_command.h"
 #include "info_command.h"
+#include "obscura/math/error.h"
 #include "raster_clip_command.h"
 #include "render_command.h"
 #include "usage_error.h"
 
 int main(int argc, char** argv) {
+  // Over a file-size limit (ulimit -f) a write then fails with EFBIG and is reported like a full
+  // disk, naming the output, instead of SIGXFSZ killing the process with the file half written.
+  std::signal(SIGXFSZ, SIG_IGN);
   CLI::App app("Obscura: a physical camera that turns a 3D scene into an image.", "obscura");
   app.set_version_flag("--version", "obscura " OBSCURA_VERSION);
   app.require_subcommand(1);

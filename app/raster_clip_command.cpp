@@ -5,12 +5,15 @@
 #include <filesystem>
 #include <fstream>
 #include <memory>
+#include <span>
+#include <sstream>
 #include <string>
 #include <vector>
 
 #include <nlohmann/json.hpp>
 
 #include "obscura/color/srgb.h"
+#include "obscura/io/atomic_file.h"
 #include "obscura/io/image_io.h"
 #include "obscura/math/error.h"
 #include "obscura/raster/pipeline.h"
@@ -157,39 +160,31 @@ struct TriangleColorProgram {
   Rgb fragment(const Varyings&, raster::FragmentInfo f) const { return (*colors)[f.primitive]; }
 };
 
-// Plain ("P2") greyscale PGM, row 0 first.
+// Plain ("P2") greyscale PGM, row 0 first; written whole or not at all (AtomicFile).
 void write_plain_pgm(const fs::path& path, int width, int height, const std::vector<uint32_t>& v) {
   uint32_t max_value = 1;
   for (uint32_t x : v) max_value = std::max(max_value, x);
-  fs::path tmp = path;
-  tmp += ".tmp";
-  {
-    std::ofstream out(tmp);
-    if (!out) throw Error(path.string(), "cannot open for writing");
-    out << "P2\n" << width << " " << height << "\n" << max_value << "\n";
-    for (int y = 0; y < height; ++y)
-      for (int x = 0; x < width; ++x)
-        out << v[size_t(y) * width + x] << (x + 1 == width ? '\n' : ' ');
-    if (!out) throw Error(path.string(), "write failed");
-  }
-  fs::rename(tmp, path);
+  std::ostringstream out;
+  out << "P2\n" << width << " " << height << "\n" << max_value << "\n";
+  for (int y = 0; y < height; ++y)
+    for (int x = 0; x < width; ++x)
+      out << v[size_t(y) * width + x] << (x + 1 == width ? '\n' : ' ');
+  AtomicFile file(path.string());
+  file.write(out.str());
+  file.commit();
 }
 
 // Greyscale PFM ("Pf"): little-endian floats, bottom row first as the format requires.
 void write_grey_pfm(const fs::path& path, const Image& image) {
   static_assert(std::endian::native == std::endian::little);
-  fs::path tmp = path;
-  tmp += ".tmp";
-  {
-    std::ofstream out(tmp, std::ios::binary);
-    if (!out) throw Error(path.string(), "cannot open for writing");
-    out << "Pf\n" << image.width << " " << image.height << "\n-1.0\n";
-    for (int y = image.height - 1; y >= 0; --y)
-      out.write(reinterpret_cast<const char*>(&image.data[size_t(y) * image.width]),
-                std::streamsize(sizeof(float) * image.width));
-    if (!out) throw Error(path.string(), "write failed");
-  }
-  fs::rename(tmp, path);
+  AtomicFile file(path.string());
+  file.write("Pf\n" + std::to_string(image.width) + " " + std::to_string(image.height) +
+             "\n-1.0\n");
+  for (int y = image.height - 1; y >= 0; --y)
+    file.write(std::span<const uint8_t>(
+        reinterpret_cast<const uint8_t*>(&image.data[size_t(y) * image.width]),
+        sizeof(float) * size_t(image.width)));
+  file.commit();
 }
 
 Rgb decode_255(Rgb c) {  // PNG stores sRGB-encoded bytes; the film holds linear values

@@ -8,6 +8,7 @@
 
 #include "camera_options.h"
 #include "display_options.h"
+#include "image_limit_option.h"
 #include "obscura/io/default_environment.h"
 #include "obscura/io/image_io.h"
 #include "obscura/io/scene_loader.h"
@@ -98,6 +99,8 @@ void run_render(RenderOptions options) {
   EnvironmentChoice environment = parse_environment_choice(options.environment);
   environment.intensity = float(options.environment_intensity);
   apply_environment(scene, environment);
+  // Before rendering: the output must not replace the scene file, a model, buffer or texture.
+  check_not_an_input(options.output, scene.input_files);
   apply_scene_settings(scene.render, options);
   if (!options.quiet)
     for (const std::string& w : scene.warnings) std::fprintf(stderr, "warning: %s\n", w.c_str());
@@ -194,6 +197,7 @@ void add_render_command(CLI::App& app) {
       ->capture_default_str();
   add_camera_options(*render, options->camera);
   add_display_options(render, options->display);
+  add_max_image_pixels_option(render);
   add_tracer_options(*render, options->tracer);
   add_raster_options(*render, options->raster);
   add_raster_effects_options(*render, options->raster_effects);

@@ -13,15 +13,21 @@
 namespace obscura::test {
 
 CommandResult run_cli(const std::string& arguments) {
-  CommandResult result;
   // (Appended piece by piece: GCC 12 warns falsely (-Wrestrict) on `"'" + std::string`.)
   std::string command(1, '\'');
-  command.append(cli_path()).append("' ").append(arguments).append(" 2>&1");
+  command.append(cli_path()).append("' ").append(arguments);
+  return run_shell(command);
+}
+
+CommandResult run_shell(const std::string& command_line) {
+  CommandResult result;
+  std::string command = "{ " + command_line + "; } 2>&1";
   FILE* pipe = popen(command.c_str(), "r");
   if (!pipe) return result;
   std::array<char, 4096> buffer;
   size_t n;
-  while ((n = fread(buffer.data(), 1, buffer.size(), pipe)) > 0) result.output.append(buffer.data(), n);
+  while ((n = fread(buffer.data(), 1, buffer.size(), pipe)) > 0)
+    result.output.append(buffer.data(), n);
   int status = pclose(pipe);
   result.exit_code = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
   return result;

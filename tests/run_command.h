@@ -15,6 +15,8 @@ struct CommandResult {
 
 // Runs `obscura <arguments>` (arguments are passed to the shell as written).
 CommandResult run_cli(const std::string& arguments);
+// Runs a shell command line (e.g. with `ulimit` before the CLI); stdout and stderr captured.
+CommandResult run_shell(const std::string& command_line);
 
 // A fresh, empty directory under the system temp directory, removed at process exit.
 std::string make_temp_dir(const std::string& prefix);

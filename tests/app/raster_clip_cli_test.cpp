@@ -8,6 +8,7 @@
 
 #include "obscura/io/image_io.h"
 #include "run_command.h"
+#include "test_paths.h"
 
 namespace obscura {
 namespace {
@@ -106,6 +107,20 @@ TEST_F(RasterClipCli, NamesTheJsonPathOfMalformedInput) {
   EXPECT_NE(result.output.find("depth_func"), std::string::npos) << result.output;
   result = test::run_cli("raster-clip " + path("bad.json"));
   EXPECT_EQ(result.exit_code, 2) << "missing --out is a usage error";
+}
+
+// Under a file-size limit (failing like a full disk) the outputs fail whole: exit 1 naming the
+// file, and no temporary file left in the output directory.
+TEST_F(RasterClipCli, FailedWriteLeavesNoTemporaryFiles) {
+  write("big.json", R"({"name": "big", "width": 96, "height": 96, "triangles": [
+    {"id": 3, "color": [255, 0, 0], "clip": [[-1, -1, 0, 1], [1, -1, 0, 1], [-1, 1, 0, 1]]}]})");
+  std::string command(1, '\'');
+  command.append(test::cli_path()).append("' raster-clip " + path("big.json") + " --out " + dir_);
+  auto result = test::run_shell("ulimit -f 1; " + command);
+  EXPECT_EQ(result.exit_code, 1) << result.output;
+  EXPECT_NE(result.output.find("File too large"), std::string::npos) << result.output;
+  for (const auto& entry : fs::directory_iterator(dir_))
+    EXPECT_EQ(entry.path().filename().string().find("tmp"), std::string::npos) << entry.path();
 }
 
 }  // namespace

@@ -517,10 +517,12 @@ Scene GltfImporter::import() {
 
 // tinygltf's file access, bounded: only regular files (not a directory, FIFO or device, which
 // its own reader sizes with tellg and then tries to allocate), at most kMaxGltfFileBytes each.
+// Each file read (buffers, images) is recorded in `files_read`, a std::vector<std::string>.
 bool read_bounded(std::vector<unsigned char>* out, std::string* err, const std::string& path,
-                  void*) {
+                  void* files_read) {
   try {
     *out = read_gltf_file(path);
+    static_cast<std::vector<std::string>*>(files_read)->push_back(path);
     return true;
   } catch (const Error& e) {
     if (err) *err += e.what();
@@ -581,7 +583,8 @@ Scene load_gltf_bytes(std::span<const uint8_t> bytes, const std::string& name,
   tinygltf::Model model;
   ImageStore images{name, &model, {}, {}};
   loader.SetImageLoader(decode_image, &images);
-  loader.SetFsCallbacks({file_exists, keep_path, read_bounded, nullptr, nullptr});
+  std::vector<std::string> files_read;
+  loader.SetFsCallbacks({file_exists, keep_path, read_bounded, nullptr, &files_read});
   std::string err, warn;
   // The content decides, not the extension: binary glTF starts with the magic "glTF".
   bool binary = bytes.size() >= 4 && std::memcmp(bytes.data(), "glTF", 4) == 0;
@@ -621,7 +624,10 @@ Scene load_gltf_bytes(std::span<const uint8_t> bytes, const std::string& name,
                        (external ? "'" + uri + "' " : std::string()) + "cannot be used (" +
                        shorten(why) + "); its materials use their factors alone");
   }
-  return GltfImporter(model, name, images, std::move(warnings), std::move(unsupported)).import();
+  Scene scene =
+      GltfImporter(model, name, images, std::move(warnings), std::move(unsupported)).import();
+  scene.input_files = std::move(files_read);
+  return scene;
 }
 
 Scene load_gltf(const std::string& path) {

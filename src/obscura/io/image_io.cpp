@@ -13,9 +13,12 @@
 #include <system_error>
 #include <vector>
 
+#include <OpenImageIO/filesystem.h>
 #include <OpenImageIO/imageio.h>
 
 #include "obscura/color/quantize.h"
+#include "obscura/io/atomic_file.h"
+#include "obscura/io/image_reader.h"
 #include "obscura/io/y4m_writer.h"
 #include "obscura/math/error.h"
 
@@ -32,37 +35,24 @@ std::string lowercase_extension(const std::string& path) {
   return ext;
 }
 
-// A name in the target's directory, hidden, unique to this process, keeping the extension so
-// that OpenImageIO picks the right writer.
-fs::path temporary_path_for(const fs::path& target) {
-  // (Appended piece by piece: GCC 12 warns falsely (-Wrestrict) on `"." + std::string`.)
-  std::string name(1, '.');
-  name.append(target.stem().string()).append(".tmp-").append(std::to_string(getpid()));
-  name.append(target.extension().string());
-  return target.parent_path() / name;
-}
-
-// Opens `tmp`, lets `write` fill it, closes and renames it over `path`; removes it on failure.
+// Encodes the image in memory (OpenImageIO writes to a proxy) and only then writes the bytes
+// through an AtomicFile, whose every write is checked. The codecs never touch the disk, so a full
+// disk cannot be ignored by a writer that does not check fwrite, nor end the process the way
+// libjpeg's default error handler does (exit(1)).
 template <typename Write>
-void write_through_temporary(const std::string& path, const OIIO::ImageSpec& spec, Write write) {
-  fs::path tmp = temporary_path_for(path);
-  auto out = OIIO::ImageOutput::create(path);
+void write_encoded(const std::string& path, const OIIO::ImageSpec& spec, Write write) {
+  std::vector<unsigned char> encoded;
+  OIIO::Filesystem::IOVecOutput memory(encoded);
+  auto out = OIIO::ImageOutput::create(path, &memory);
   if (!out) throw Error(path, "no image writer: " + OIIO::geterror());
-  auto fail = [&](const std::string& what) {
-    std::error_code ignored;
-    fs::remove(tmp, ignored);
-    throw Error(path, what);
-  };
-  if (!out->open(tmp.string(), spec)) fail("cannot open for writing: " + out->geterror());
-  if (!write(*out)) {
-    std::string message = out->geterror();
-    out->close();
-    fail("write failed: " + message);
-  }
-  if (!out->close()) fail("write failed: " + out->geterror());
-  std::error_code ec;
-  fs::rename(tmp, path, ec);
-  if (ec) fail("cannot move the finished file into place: " + ec.message());
+  if (!out->supports("ioproxy"))
+    throw Error(path, "this OpenImageIO cannot encode the format into memory");
+  if (!out->open(path, spec)) throw Error(path, "cannot encode: " + out->geterror());
+  bool ok = write(*out);
+  std::string message = out->geterror();
+  ok = out->close() && ok;
+  if (!ok) throw Error(path, "cannot encode: " + message + out->geterror());
+  write_file_atomically(path, encoded);
 }
 
 // Linear values with NaN/Inf replaced by defined ones (and counted).
@@ -99,18 +89,21 @@ std::string colorspace_attribute(DisplaySpace d) {
   return "sRGB";
 }
 
-// Portable float map, written directly (this OpenImageIO has no PFM writer): "PF" (RGB) or "Pf"
+// Portable float map, encoded directly (this OpenImageIO has no PFM writer): "PF" (RGB) or "Pf"
 // (grey), width and height, a negative scale meaning little-endian, then rows bottom to top.
-bool write_pfm(const std::string& tmp, int width, int height, int channels,
-               const std::vector<float>& data) {
-  std::FILE* file = std::fopen(tmp.c_str(), "wb");
-  if (!file) return false;
-  std::fprintf(file, "%s\n%d %d\n-1.0\n", channels == 1 ? "Pf" : "PF", width, height);
-  bool ok = true;
-  for (int y = height - 1; y >= 0 && ok; --y)
-    ok = std::fwrite(data.data() + size_t(y) * width * channels, sizeof(float),
-                     size_t(width) * channels, file) == size_t(width) * channels;
-  return std::fclose(file) == 0 && ok;
+std::vector<uint8_t> encode_pfm(int width, int height, int channels,
+                                const std::vector<float>& data) {
+  static_assert(std::endian::native == std::endian::little, "PFM is written little-endian");
+  std::string header = std::string(channels == 1 ? "Pf" : "PF") + "\n" + std::to_string(width) +
+                       " " + std::to_string(height) + "\n-1.0\n";
+  size_t row = size_t(width) * channels * sizeof(float);
+  std::vector<uint8_t> bytes(header.begin(), header.end());
+  bytes.reserve(header.size() + row * height);
+  for (int y = height - 1; y >= 0; --y) {
+    auto first = reinterpret_cast<const uint8_t*>(data.data() + size_t(y) * width * channels);
+    bytes.insert(bytes.end(), first, first + row);
+  }
+  return bytes;
 }
 
 WriteReport write_linear(const std::string& path, ImageFormat format, const Image& image,
@@ -129,17 +122,7 @@ WriteReport write_linear(const std::string& path, ImageFormat format, const Imag
     channels = 3;
   }
   if (format == ImageFormat::kPfm) {
-    static_assert(std::endian::native == std::endian::little, "PFM is written little-endian");
-    fs::path tmp = temporary_path_for(path);
-    std::error_code ec;
-    if (write_pfm(tmp.string(), image.width, image.height, channels, data))
-      fs::rename(tmp, path, ec);
-    else
-      ec = std::make_error_code(std::errc::io_error);
-    if (ec) {
-      fs::remove(tmp, ec);
-      throw Error(path, "cannot write the PFM file");
-    }
+    write_file_atomically(path, encode_pfm(image.width, image.height, channels, data));
     return report;
   }
   OIIO::ImageSpec spec(image.width, image.height, channels,
@@ -154,7 +137,7 @@ WriteReport write_linear(const std::string& path, ImageFormat format, const Imag
     spec.attribute("chromaticities", OIIO::TypeDesc(OIIO::TypeDesc::FLOAT, 8), chromaticities);
     spec.attribute("compression", "zip");
   }
-  write_through_temporary(path, spec, [&](OIIO::ImageOutput& out) {
+  write_encoded(path, spec, [&](OIIO::ImageOutput& out) {
     return out.write_image(OIIO::TypeDesc::FLOAT, data.data());
   });
   return report;
@@ -180,7 +163,7 @@ bool is_display_format(ImageFormat f) {
          f == ImageFormat::kY4m;
 }
 
-void check_not_an_input(const std::string& output, std::initializer_list<std::string> inputs) {
+void check_not_an_input(const std::string& output, const std::vector<std::string>& inputs) {
   std::error_code ec;
   for (const std::string& input : inputs)
     if (fs::exists(output, ec) && fs::equivalent(output, input, ec))
@@ -233,7 +216,7 @@ void write_display_image(const std::string& path, const DisplayImage& image) {
     codes[i] =
         uint16_t(image.bits == container ? image.codes[i]
                                          : requantize(image.codes[i], image.bits, container));
-  write_through_temporary(path, spec, [&](OIIO::ImageOutput& out) {
+  write_encoded(path, spec, [&](OIIO::ImageOutput& out) {
     if (container == 16) return out.write_image(OIIO::TypeDesc::UINT16, codes.data());
     std::vector<uint8_t> bytes(codes.begin(), codes.end());
     return out.write_image(OIIO::TypeDesc::UINT8, bytes.data());
@@ -259,14 +242,11 @@ WriteReport write_image(const std::string& path, const Image& image,
 }
 
 Image read_image(const std::string& path) {
-  auto in = OIIO::ImageInput::open(path);
-  if (!in) throw Error(path, "cannot read image: " + OIIO::geterror());
-  const OIIO::ImageSpec& spec = in->spec();
+  CheckedImageInput in = CheckedImageInput::open_file(path);
+  const OIIO::ImageSpec& spec = in.spec();
   Image image(spec.width, spec.height, spec.nchannels);
   image.channel_names = spec.channelnames;
-  if (!in->read_image(0, 0, 0, spec.nchannels, OIIO::TypeDesc::FLOAT, image.data.data()))
-    throw Error(path, "cannot decode image: " + in->geterror());
-  in->close();
+  in.read(spec.nchannels, OIIO::TypeDesc::FLOAT, image.data.data());
   return image;
 }
 

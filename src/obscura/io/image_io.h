@@ -14,8 +14,8 @@
 // half-float EXR holds are clamped to its largest value.
 #pragma once
 
-#include <initializer_list>
 #include <string>
+#include <vector>
 
 #include "obscura/color/develop.h"
 #include "obscura/film/image.h"
@@ -43,9 +43,10 @@ struct WriteReport {
   DevelopStats stats;  // non-finite and out-of-gamut pixel counts
 };
 
-// Throws obscura::Error when `output` names the same file as one of `inputs`: a command never
-// overwrites what it reads.
-void check_not_an_input(const std::string& output, std::initializer_list<std::string> inputs);
+// Throws obscura::Error when `output` is the same file as one of `inputs` — compared by identity
+// (device and inode), so another spelling, a hard link or a symbolic link is caught too: a
+// command never overwrites what it reads.
+void check_not_an_input(const std::string& output, const std::vector<std::string>& inputs);
 
 // Writes a linear RGB(A) image (grey images are written as grey where the format allows).
 WriteReport write_image(const std::string& path, const Image& linear_image,

@@ -70,6 +70,7 @@ class JsonSceneReader {
     if (!std::filesystem::is_regular_file(file, ec))
       json.fail(key, "texture '" + file + "' does not exist");
     Texture t = read_texture(file, encoding);
+    scene_.input_files.push_back(file);
     auto index = int32_t(scene_.textures.size());
     scene_.textures.push_back(std::move(t));
     textures_[{file, encoding}] = index;
@@ -289,6 +290,7 @@ class JsonSceneReader {
       scene_.materials.push_back(std::move(m));
     }
     for (Texture& t : model.textures) scene_.textures.push_back(std::move(t));
+    for (std::string& f : model.input_files) scene_.input_files.push_back(std::move(f));
     for (Mesh& m : model.meshes) {
       m.material += material_base;
       scene_.meshes.push_back(std::move(m));
@@ -369,6 +371,7 @@ class JsonSceneReader {
         json.fail("file", "environment map '" + file + "' does not exist");
       env.texture = int32_t(scene_.textures.size());
       Texture t = read_texture(file, TextureEncoding::kLinear);
+      scene_.input_files.push_back(file);
       t.wrap_v = TextureWrap::kClampToEdge;
       scene_.textures.push_back(std::move(t));
     }

@@ -232,6 +232,7 @@ class ObjReader {
       return;
     }
     std::vector<char> text = read_mesh_file(path.string());
+    scene_.input_files.push_back(path.string());
     for (MtlMaterial& m :
          parse_mtl(std::string_view(text.data(), text.size()), path.string(), warnings_))
       library_.push_back(std::move(m));
@@ -251,6 +252,7 @@ class ObjReader {
                   "texture '" + relative + "' does not exist (looked for " + full.string() + ")");
     auto index = int32_t(scene_.textures.size());
     scene_.textures.push_back(read_texture(full.string(), TextureEncoding::kSrgb));
+    scene_.input_files.push_back(full.string());
     textures_[full.string()] = index;
     return {index, 0};
   }

@@ -42,16 +42,25 @@ Scene load_model_file(const std::string& path) {
   if (std::filesystem::is_directory(path, ec))
     throw Error(path, "is a directory, not a model file");
   std::string ext = lower_extension(path);
-  if (ext == ".gltf" || ext == ".glb") return load_gltf(path);
+  Scene scene;
+  if (ext == ".gltf" || ext == ".glb")
+    scene = load_gltf(path);
   // Obscura's own readers for the common mesh formats: bounded, fast, and they fail with a
   // message where Assimp's asserts abort the process on hostile input.
-  if (ext == ".obj") return load_obj(path);
-  if (ext == ".ply") return load_ply(path);
-  if (ext == ".stl") return load_stl(path);
-  if (ext != ".json" && Assimp::Importer().IsExtensionSupported(ext)) return load_with_assimp(path);
-  throw Error(path, "unknown model format '" + ext +
-                        "'; expected .gltf, .glb, .obj, .ply, .stl or another mesh format "
-                        "Assimp reads (.fbx, .dae, .3ds, …)");
+  else if (ext == ".obj")
+    scene = load_obj(path);
+  else if (ext == ".ply")
+    scene = load_ply(path);
+  else if (ext == ".stl")
+    scene = load_stl(path);
+  else if (ext != ".json" && Assimp::Importer().IsExtensionSupported(ext))
+    scene = load_with_assimp(path);
+  else
+    throw Error(path, "unknown model format '" + ext +
+                          "'; expected .gltf, .glb, .obj, .ply, .stl or another mesh format "
+                          "Assimp reads (.fbx, .dae, .3ds, …)");
+  scene.input_files.insert(scene.input_files.begin(), path);
+  return scene;
 }
 
 Scene load_scene_file(const std::string& path) {
@@ -60,6 +69,7 @@ Scene load_scene_file(const std::string& path) {
     std::error_code ec;
     if (!std::filesystem::exists(path, ec)) throw Error(path, "scene file does not exist");
     scene = load_json_scene(path);  // chooses its own camera
+    scene.input_files.insert(scene.input_files.begin(), path);
   } else {
     scene = load_model_file(path);
     finish_cameras(scene, "", path);

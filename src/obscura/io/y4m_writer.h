@@ -3,11 +3,12 @@
 // intermediate image per frame. The file is written to a temporary name and renamed on close().
 #pragma once
 
-#include <cstdio>
+#include <memory>
 #include <string>
 
 #include "obscura/color/chroma_subsampling.h"
 #include "obscura/color/develop.h"
+#include "obscura/io/atomic_file.h"
 
 namespace obscura {
 
@@ -23,7 +24,7 @@ class Y4mWriter {
   // Preconditions (throw obscura::Error): width, height > 0; even sizes for subsampled chroma;
   // a writable path.
   Y4mWriter(const std::string& path, int width, int height, const Y4mSettings& settings = {});
-  ~Y4mWriter();  // an unclosed writer removes its temporary file
+  ~Y4mWriter();  // an unclosed writer removes its temporary file (see AtomicFile)
   Y4mWriter(const Y4mWriter&) = delete;
   Y4mWriter& operator=(const Y4mWriter&) = delete;
 
@@ -34,10 +35,10 @@ class Y4mWriter {
   int frames() const { return frames_; }
 
  private:
-  std::string path_, temporary_;
+  std::string path_;
   int width_, height_;
   Y4mSettings settings_;
-  std::FILE* file_ = nullptr;
+  std::unique_ptr<AtomicFile> file_;  // null once closed
   int frames_ = 0;
 };
 

@@ -48,10 +48,13 @@ struct Scene {
   std::vector<Texture> textures;
   std::vector<Light> lights;
   std::optional<Environment> environment;
-  std::vector<Camera> cameras;       // every camera the file names (Camera::name), in file order
-  Camera camera;                     // the camera to render with (by default cameras.front())
+  std::vector<Camera> cameras;  // every camera the file names (Camera::name), in file order
+  Camera camera;                // the camera to render with (by default cameras.front())
   SceneRenderSettings render;
   std::vector<std::string> warnings;  // what the loader skipped or approximated, for the user
+  // Every file the scene was read from (scene, models, buffers, textures, environment map), so
+  // that a command can refuse to write its output over one of them.
+  std::vector<std::string> input_files;
 
   // The material an instance is drawn with: its override, else its mesh's.
   uint32_t material_of(const Instance& instance) const {
