@@ -270,5 +270,19 @@ TEST_F(ImageLimits, ExrAttributeLargerThanTheFileIsRefused) {
   }
 }
 
+// Found by the image fuzz target: a 235-byte EXR whose data window is 16908288 × 2 pixels
+// (iinfo reports it so); OpenEXR sized line buffers from it while opening, seconds of work
+// before the pixel count could be checked. The header check refuses the width first.
+TEST_F(ImageLimits, ExrDataWindowWiderThanARowIsRefused) {
+  std::string file = test::source_path("fuzz/corpus/image/regress-exr-data-window-16m-wide.exr");
+  try {
+    read_image(file);
+    ADD_FAILURE() << "accepted";
+  } catch (const Error& e) {
+    EXPECT_NE(std::string(e.what()).find("dataWindow is 16908288 × 2 pixels"), std::string::npos)
+        << e.what();
+  }
+}
+
 }  // namespace
 }  // namespace obscura

@@ -3,6 +3,7 @@
 #include <bit>
 #include <cstring>
 
+#include "obscura/io/image_limits.h"
 #include "obscura/math/error.h"
 
 namespace obscura {
@@ -63,6 +64,19 @@ void check_exr_header(const ByteReader& read, uint64_t total_size, const std::st
       throw Error(source, "OpenEXR attribute '" + name + "' declares " + std::to_string(size) +
                               " bytes, more than the " + std::to_string(total_size - offset) +
                               " left in the file");
+    // OpenEXR sizes its line buffers from the data window while opening the file, before any
+    // pixel-count check can see the spec: a window millions of pixels wide must stop here.
+    if (name == "dataWindow" && type == "box2i" && size == 16) {
+      uint8_t box_bytes[16];
+      int32_t box[4];  // xMin, yMin, xMax, yMax
+      if (!read(offset, 16, box_bytes)) throw Error(source, "OpenEXR dataWindow is truncated");
+      std::memcpy(box, box_bytes, 16);
+      int64_t width = int64_t(box[2]) - box[0] + 1, height = int64_t(box[3]) - box[1] + 1;
+      if (width <= 0 || height <= 0 || uint64_t(width) > kMaxImageRowValues / 4)
+        throw Error(source, "OpenEXR dataWindow is " + std::to_string(width) + " × " +
+                                std::to_string(height) + " pixels; rows of 1 to " +
+                                std::to_string(kMaxImageRowValues / 4) + " pixels are read");
+    }
     offset += uint64_t(size);
   }
 }
