@@ -13,6 +13,7 @@
 #include "obscura/io/scene_loader.h"
 #include "obscura/math/error.h"
 #include "obscura/trace/render.h"
+#include "option_ranges.h"
 #include "progress_bar.h"
 #include "raster_effects_options.h"
 #include "raster_options.h"
@@ -60,6 +61,8 @@ void validate(const RenderOptions& o) {
   if (o.spp <= 0)
     throw UsageError("--spp must be a positive number of samples per pixel; got " +
                      std::to_string(o.spp));
+  // The sides were range-checked as they were parsed; their product is checked here.
+  if (o.width_given && o.height_given) check_image_size(o.width, o.height, true);
   if (o.threads < 0)
     throw UsageError("--threads must be 0 (all cores) or positive; got " +
                      std::to_string(o.threads));
@@ -99,6 +102,10 @@ void run_render(RenderOptions options) {
   environment.intensity = float(options.environment_intensity);
   apply_environment(scene, environment);
   apply_scene_settings(scene.render, options);
+  check_image_size(options.width, options.height, options.width_given || options.height_given);
+  if (options.spp > kMaxSamplesPerPixel)
+    throw Error("samples per pixel", "the scene asks for " + std::to_string(options.spp) +
+                                         "; at most " + std::to_string(kMaxSamplesPerPixel));
   if (!options.quiet)
     for (const std::string& w : scene.warnings) std::fprintf(stderr, "warning: %s\n", w.c_str());
   scene.camera = resolve_camera(scene, options.camera, options.width, options.height);
@@ -172,13 +179,20 @@ void add_render_command(CLI::App& app) {
       ->add_option("-o,--output", options->output,
                    "Output image; the format follows the extension: .png, .exr, .pfm")
       ->capture_default_str();
-  render->add_option("--width", options->width, "Image width in pixels")->capture_default_str();
-  render->add_option("--height", options->height, "Image height in pixels")->capture_default_str();
-  options->tracer.spp_option =
-      render->add_option("--spp", options->spp, "Samples per pixel")->capture_default_str();
+  render->add_option("--width", options->width, "Image width in pixels")
+      ->check(integer_in(1, kMaxImageSidePx))
+      ->capture_default_str();
+  render->add_option("--height", options->height, "Image height in pixels")
+      ->check(integer_in(1, kMaxImageSidePx))
+      ->capture_default_str();
+  options->tracer.spp_option = render->add_option("--spp", options->spp, "Samples per pixel")
+                                   ->check(integer_in(1, kMaxSamplesPerPixel))
+                                   ->capture_default_str();
   render->add_option("--threads", options->threads, "Worker threads (0 = all cores)")
+      ->check(integer_in(0, kMaxThreads))
       ->capture_default_str();
   render->add_option("--seed", options->seed, "Random seed: same seed, same image")
+      ->check(unsigned_64())
       ->capture_default_str();
   render->add_flag("-q,--quiet", options->quiet, "No progress or summary on stderr");
   render->add_flag("--scene-list", options->list_scenes, "List the built-in scenes and exit");
@@ -191,6 +205,7 @@ void add_render_command(CLI::App& app) {
   render
       ->add_option("--environment-intensity", options->environment_intensity,
                    "Scale of the environment --environment chooses")
+      ->check(number_in(0, 1e6))
       ->capture_default_str();
   add_camera_options(*render, options->camera);
   add_display_options(render, options->display);
