@@ -28,6 +28,7 @@ struct PendingVertex {
   Rgb weight;  // of the branch being traced now
   int depth = 0;
   std::optional<Branch> second;  // the branch still to trace after the current one
+  int second_budget = 0;         // rays its subtree may trace
 };
 
 Vertex shade(const TraceScene& scene, const Ray& ray, Sampler& sampler, RayCounts& counts,
@@ -91,25 +92,33 @@ Vertex shade(const TraceScene& scene, const Ray& ray, Sampler& sampler, RayCount
 Rgb WhittedIntegrator::radiance(const TraceScene& scene, const Ray& camera_ray, Sampler& sampler,
                                 RayCounts& counts, FirstHit* first_hit) const {
   // Depth-first, first branch before second, exactly as the recursive form visited the tree, so
-  // the sampler's numbers and the sums' rounding are the same as before.
+  // the sampler's numbers and the sums' rounding are the same as before. Each subtree has a
+  // budget of rays: a vertex spends one and splits the rest evenly between its branches (a single
+  // branch keeps it all), so a camera ray traces at most kRayBudget rays, a full tree of depth 11
+  // is traced whole, and chains (mirrors, total internal reflection) may run to kRayBudget deep.
   thread_local std::vector<PendingVertex> stack;
   stack.clear();
   Ray ray = camera_ray;
   ray.direction = normalize(camera_ray.direction);
   int depth = 0;
-  int rays = 0;
+  int budget = kRayBudget;
   for (;;) {
     bool follow = depth < settings_.max_depth;
     Vertex v = shade(scene, ray, sampler, counts, depth, follow, depth == 0 ? first_hit : nullptr);
-    ++rays;
-    if (v.branch_count > 0 && rays < kRayBudget) {
+    int rest = budget - 1;
+    int first_budget = v.branch_count == 2 ? (rest + 1) / 2 : rest;
+    if (v.branch_count > 0 && first_budget > 0) {
       PendingVertex& parent = stack.emplace_back();
       parent.L = v.L;
       parent.weight = v.branches[0].weight;
       parent.depth = depth;
-      if (v.branch_count == 2) parent.second = v.branches[1];
+      if (v.branch_count == 2) {
+        parent.second = v.branches[1];
+        parent.second_budget = rest - first_budget;
+      }
       ray = v.branches[0].ray;
       ++depth;
+      budget = first_budget;
       continue;
     }
     // A leaf: hand its radiance up until a vertex has a branch left to trace.
@@ -118,10 +127,11 @@ Rgb WhittedIntegrator::radiance(const TraceScene& scene, const Ray& camera_ray, 
     while (!stack.empty()) {
       PendingVertex& parent = stack.back();
       parent.L += parent.weight * value;
-      if (parent.second && rays < kRayBudget) {
+      if (parent.second && parent.second_budget > 0) {
         parent.weight = parent.second->weight;
         ray = parent.second->ray;
         depth = parent.depth + 1;
+        budget = parent.second_budget;
         parent.second.reset();
         descended = true;
         break;

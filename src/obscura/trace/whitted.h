@@ -17,9 +17,10 @@ struct WhittedSettings {
 
 class WhittedIntegrator final : public Integrator {
  public:
-  // Rays per camera ray, the camera ray included. A full binary tree of depth 11 (4095 rays) fits,
-  // so up to that depth every branch is followed and images are what recursion gave; deeper, the
-  // branches past the budget are dropped, darkening only what is seen through many layers of glass.
+  // Rays per camera ray, the camera ray included. A vertex spends one ray of its subtree's
+  // budget and splits the rest evenly between its branches, so a full binary tree of depth 11
+  // (4095 rays) is traced whole (images are what recursion gave, up to that depth), a chain of
+  // single branches (mirrors) may run 4096 deep, and deeper splits are dropped.
   static constexpr int kRayBudget = 4096;
 
   explicit WhittedIntegrator(WhittedSettings settings = {}) : settings_(settings) {}
