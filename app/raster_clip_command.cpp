@@ -77,7 +77,17 @@ void run_raster_clip(const std::string& file, const std::string& out_dir) {
   if (!fs::is_directory(out_dir)) throw UsageError("--out: '" + out_dir + "' is not a directory");
   ClipTriangles input = read_raster_clip_file(file);
   const fs::path base = fs::path(out_dir) / input.name;
+  RasterClipImages images = rasterize(input);
+  write_image(base.string() + ".png", images.color);
+  write_plain_pgm(base.string() + ".ids.pgm", input.width, input.height, images.ids);
+  write_plain_pgm(base.string() + ".count.pgm", input.width, input.height, images.count);
+  write_grey_pfm(base.string() + ".depth.pfm", images.depth);
+  std::printf("%s\n", base.string().c_str());
+}
 
+}  // namespace
+
+RasterClipImages rasterize(const ClipTriangles& input) {
   std::vector<Rgb> linear;
   for (Rgb c : input.colors) linear.push_back(decode_255(c));
   TriangleColorProgram program{&linear};
@@ -100,24 +110,22 @@ void run_raster_clip(const std::string& file, const std::string& out_dir) {
   count_state.blend = raster::BlendMode::kAdd;
   raster::draw(counts, count_state, count_program, input.clip);
 
+  RasterClipImages images;
   size_t n = size_t(input.width) * input.height;
-  std::vector<uint32_t> ids(n), count(n);
+  images.ids.resize(n);
+  images.count.resize(n);
   for (int y = 0; y < input.height; ++y)
     for (int x = 0; x < input.width; ++x) {
       size_t i = size_t(y) * input.width + x;
-      ids[i] = target.object_id_at(x, y) == raster::kNoObject
-                   ? 0
-                   : input.ids[target.primitive_id_at(x, y)];
-      count[i] = uint32_t(counts.color_at(x, y).r);
+      images.ids[i] = target.object_id_at(x, y) == raster::kNoObject
+                          ? 0
+                          : input.ids[target.primitive_id_at(x, y)];
+      images.count[i] = uint32_t(counts.color_at(x, y).r);
     }
-  write_image(base.string() + ".png", target.resolve_color());
-  write_plain_pgm(base.string() + ".ids.pgm", input.width, input.height, ids);
-  write_plain_pgm(base.string() + ".count.pgm", input.width, input.height, count);
-  write_grey_pfm(base.string() + ".depth.pfm", target.depth_image());
-  std::printf("%s\n", base.string().c_str());
+  images.color = target.resolve_color();
+  images.depth = target.depth_image();
+  return images;
 }
-
-}  // namespace
 
 void add_raster_clip_command(CLI::App& app) {
   auto file = std::make_shared<std::string>();
