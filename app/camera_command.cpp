@@ -9,6 +9,7 @@
 #include "obscura/camera/gltf_camera.h"
 #include "obscura/camera/intrinsics.h"
 #include "obscura/camera/number_text.h"
+#include "option_ranges.h"
 #include "render_command.h"
 #include "usage_error.h"
 
@@ -160,6 +161,7 @@ void run_camera(const CameraCommandOptions& options) {
   if (options.height && *options.height <= 0)
     throw UsageError("--height must be a positive number of pixels; got " +
                      std::to_string(*options.height));
+  if (options.width && options.height) check_image_size(*options.width, *options.height, true);
   Scene scene = load_scene(options.scene);
   Camera camera = resolve_camera(scene, options.overrides, options.width, options.height);
   std::printf("camera '%s' of scene '%s'\n", camera.name.c_str(), scene.name.c_str());
@@ -175,8 +177,10 @@ void add_camera_command(CLI::App& app) {
   CLI::App* command = app.add_subcommand(
       "camera", "Print a scene's camera, resolved with the overrides that render accepts");
   command->add_option("scene", options->scene, "A built-in scene name; default: the Cornell box");
-  command->add_option("--width", options->width, "Image width in pixels (default: the scene's)");
-  command->add_option("--height", options->height, "Image height in pixels (default: the scene's)");
+  command->add_option("--width", options->width, "Image width in pixels (default: the scene's)")
+      ->check(integer_in(1, kMaxImageSidePx));
+  command->add_option("--height", options->height, "Image height in pixels (default: the scene's)")
+      ->check(integer_in(1, kMaxImageSidePx));
   add_camera_options(*command, options->overrides);
   command->callback([options] { run_camera(*options); });
 }

@@ -7,6 +7,7 @@
 #include "obscura/camera/number_text.h"
 #include "obscura/camera/perspective.h"
 #include "obscura/math/error.h"
+#include "option_ranges.h"
 #include "usage_error.h"
 
 namespace obscura::app {
@@ -21,14 +22,14 @@ double parse_number(const std::string& text, const std::string& option) {
     size_t used = 0;
     if (slash == std::string::npos) {
       double v = std::stod(text, &used);
-      if (used != text.size()) fail();
+      if (used != text.size() || !std::isfinite(v)) fail();
       return v;
     }
     std::string numerator = text.substr(0, slash), denominator = text.substr(slash + 1);
     double a = std::stod(numerator, &used);
     if (used != numerator.size()) fail();
     double b = std::stod(denominator, &used);
-    if (used != denominator.size() || b == 0) fail();
+    if (used != denominator.size() || b == 0 || !std::isfinite(a / b)) fail();
     return a / b;
   } catch (const std::logic_error&) {  // std::invalid_argument, std::out_of_range
     fail();
@@ -215,24 +216,32 @@ void add_camera_options(CLI::App& command, CameraOverrides& o) {
   command
       .add_option("--fov", o.fov_degrees,
                   "Vertical field of view in degrees (glTF's yfov); fisheye: the circle's angle")
+      ->check(number_in(0, 360))
       ->group(group);
   command.add_option("--hfov", o.horizontal_fov_degrees, "Horizontal field of view in degrees")
+      ->check(number_in(0, 360))
       ->group(group);
-  command.add_option("--focal-length", o.focal_length_mm, "Lens focal length in mm")->group(group);
+  command.add_option("--focal-length", o.focal_length_mm, "Lens focal length in mm")
+      ->check(number_in(0, 1e6))
+      ->group(group);
   command.add_option("--sensor", o.sensor, "Sensor size WxH in mm, e.g. 36x24")->group(group);
   command.add_option("--sensor-fit", o.sensor_fit, "auto, horizontal or vertical (as Blender)")
       ->group(group);
   command.add_option("--view-height", o.view_height_m, "Orthographic view height in m")
+      ->check(number_in(0, 1e12))
       ->group(group);
   command.add_option("--fstop", o.f_number, "Aperture f-number N; turns on depth of field")
+      ->check(number_in(0, 1e4))
       ->group(group);
   command
       .add_option("--focus-distance", o.focus_distance_m,
                   "Focus distance in m; turns on depth of field")
+      ->check(number_in(0, 1e12))
       ->group(group);
   command
       .add_option("--aperture-blades", o.aperture_blades,
                   "Aperture blades (0 = circle, >= 3 = polygon bokeh); turns on depth of field")
+      ->check(integer_in(0, 64))
       ->group(group);
   command
       .add_option("--focus-breathing", o.focus_breathing,
@@ -242,11 +251,15 @@ void add_camera_options(CLI::App& command, CameraOverrides& o) {
   command
       .add_option("--aperture-rotation", o.aperture_rotation_degrees,
                   "Rotation of the aperture polygon in degrees")
+      ->check(number_in(-360, 360))
       ->group(group);
   command.add_option("--shutter", o.shutter, "Shutter OPEN:CLOSE in seconds, e.g. 0:1/60")
       ->group(group);
-  command.add_option("--iso", o.iso, "Film speed; selects the physical exposure")->group(group);
+  command.add_option("--iso", o.iso, "Film speed; selects the physical exposure")
+      ->check(number_in(0, 1e7))
+      ->group(group);
   command.add_option("--exposure", o.exposure_ev, "Exposure compensation in EV (stops)")
+      ->check(number_in(-kMaxExposureEv, kMaxExposureEv))
       ->group(group);
   command
       .add_option("--exposure-mode", o.exposure_mode,
@@ -257,9 +270,14 @@ void add_camera_options(CLI::App& command, CameraOverrides& o) {
   command.add_option("--filter", o.filter, "Pixel filter: box, tent, gaussian or mitchell")
       ->group(group);
   command.add_option("--filter-radius", o.filter_radius_px, "Pixel filter radius in pixels")
+      ->check(number_in(0.01, kMaxFilterRadiusPx))
       ->group(group);
-  command.add_option("--near", o.near_m, "Near clipping plane in m")->group(group);
-  command.add_option("--far", o.far_m, "Far clipping plane in m")->group(group);
+  command.add_option("--near", o.near_m, "Near clipping plane in m")
+      ->check(number_in(0, 1e12))
+      ->group(group);
+  command.add_option("--far", o.far_m, "Far clipping plane in m")
+      ->check(number_in(0, 1e15))
+      ->group(group);
 }
 
 Camera resolve_camera(const Scene& scene, const CameraOverrides& overrides,

@@ -1,5 +1,6 @@
 #include "color_command.h"
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <iostream>
@@ -81,6 +82,12 @@ void print_conversion(const ConvertOptions& o, const std::vector<double>& in, bo
   const ColorSpaceInfo& target = color_space(o.to);
   Vec3d xyz = xyz_d65_from(color_space(o.from), in);
   std::vector<double> out = from_xyz_d65(target, xyz);
+  // Finite input can still overflow on the way (1e308 through a matrix, a cube or a power).
+  auto finite = [](double v) { return std::isfinite(v); };
+  if (!std::all_of(xyz.begin(), xyz.end(), finite) || !std::all_of(out.begin(), out.end(), finite))
+    throw Error("color convert", "the colour " + list(in) + " in " + o.from +
+                                     " is too large to convert to " + o.to +
+                                     " (the result overflows a double)");
   const ColorSpaceInfo& gamut = gamut_space(target);
   bool inside = in_gamut(gamut.primaries, xyz);
   if (o.json) {
@@ -184,7 +191,7 @@ void print_spectral(const std::string& what, double value, const Vec3d& xyz, con
               in_srgb ? "" : ", chroma reduced to fit");
 }
 
-double parse_positive(const std::string& word, const std::string& what) {
+double parse_positive(const std::string& word, const std::string& what, double max) {
   size_t used = 0;
   double v = 0;
   try {
@@ -192,8 +199,9 @@ double parse_positive(const std::string& word, const std::string& what) {
   } catch (const std::exception&) {
     used = 0;
   }
-  if (used != word.size() || !std::isfinite(v) || v <= 0)
-    throw UsageError(what + " must be a positive number; got '" + word + "'");
+  if (used != word.size() || !std::isfinite(v) || v <= 0 || v > max)
+    throw UsageError(what + " must be a positive number of at most " + number(max) + "; got '" +
+                     word + "'");
   return v;
 }
 
@@ -218,7 +226,7 @@ void add_color_command(CLI::App& app) {
   w->add_option("nm", wavelength->first, "Wavelength in nanometres")->required();
   w->add_flag("--json", wavelength->second, "Machine-readable output");
   w->callback([wavelength] {
-    double nm = parse_positive(wavelength->first, "the wavelength");
+    double nm = parse_positive(wavelength->first, "the wavelength", 1e9);
     Vec3d xyz = cmf_xyz(nm), lms = cone_lms(nm);
     if (xyz[0] + xyz[1] + xyz[2] == 0)
       throw Error("wavelength", number(nm) +
@@ -232,7 +240,7 @@ void add_color_command(CLI::App& app) {
   t->add_option("kelvin", temperature->first, "Temperature in kelvin")->required();
   t->add_flag("--json", temperature->second, "Machine-readable output");
   t->callback([temperature] {
-    double kelvin = parse_positive(temperature->first, "the temperature");
+    double kelvin = parse_positive(temperature->first, "the temperature", 1e9);
     print_spectral("kelvin", kelvin, blackbody_xyz(kelvin), nullptr, temperature->second);
   });
 

@@ -3,6 +3,7 @@
 #include <cstdio>
 
 #include "obscura/math/error.h"
+#include "option_ranges.h"
 #include "usage_error.h"
 
 namespace obscura::app {
@@ -17,13 +18,13 @@ void add_display_options(CLI::App* command, DisplayOptions& o, bool with_exposur
   command
       ->add_option("--reinhard-white", o.reinhard_white,
                    "Reinhard: the linear value that maps to white")
-      ->check(CLI::PositiveNumber)
+      ->check(number_in(1e-6, 1e6))
       ->capture_default_str();
   command->add_option("--gamut", o.gamut, "Out-of-gamut colours: clip, or compress chroma (OKLCh)")
       ->check(CLI::IsMember({"clip", "compress"}))
       ->capture_default_str();
   command->add_option("--bits", o.bits, "Bits per channel, 1-16 (above 8: 16-bit PNG/TIFF)")
-      ->check(CLI::Range(1, 16))
+      ->check(integer_in(1, 16))
       ->capture_default_str();
   command->add_option("--dither", o.dither, "Dithering before quantization")
       ->check(CLI::IsMember({"none", "bayer", "blue-noise"}))
@@ -31,6 +32,7 @@ void add_display_options(CLI::App* command, DisplayOptions& o, bool with_exposur
   command->add_flag("--half", o.exr_half, "EXR output as 16-bit half floats");
   if (with_exposure)
     command->add_option("--exposure", o.exposure_ev, "Exposure change in stops (EV)")
+        ->check(number_in(-kMaxExposureEv, kMaxExposureEv))
         ->capture_default_str();
 }
 

@@ -2,6 +2,8 @@
 #include <csignal>
 #include <cstdio>
 #include <exception>
+#include <new>
+#include <string>
 
 #include <CLI/CLI.hpp>
 
@@ -42,6 +44,19 @@ int main(int argc, char** argv) {
   } catch (const obscura::app::UsageError& e) {
     std::fprintf(stderr, "obscura: error: %s\n", e.what());
     return 2;
+  } catch (const std::bad_alloc&) {
+    // Anywhere: a scene, image or option asked for more memory than there is. Name the command so
+    // the message is not mistaken for a bug; the options' ranges keep this rare.
+    std::string command = "obscura";
+    for (const CLI::App* sub = &app; !sub->get_subcommands().empty();) {
+      sub = sub->get_subcommands().front();
+      command += " " + sub->get_name();
+    }
+    std::fprintf(stderr,
+                 "obscura: out of memory while running '%s': the scene, the image size or the "
+                 "sample count needs more memory than this machine gives\n",
+                 command.c_str());
+    return 1;
   } catch (const obscura::Error& e) {
     std::fprintf(stderr, "obscura: error: %s\n", e.what());
     return 1;

@@ -5,6 +5,7 @@
 #include "obscura/raster/accumulation.h"
 #include "obscura/raster/depth_of_field_post.h"
 #include "obscura/raster/scene_rasterizer.h"
+#include "option_ranges.h"
 #include "usage_error.h"
 
 namespace obscura::app {
@@ -25,9 +26,11 @@ void add_raster_effects_options(CLI::App& render, RasterEffectsOptions& o) {
                         "raster: depth of field by 'accumulate' (renders through jittered lens "
                         "points; default), 'post' (one render blurred by the z-buffer's circle "
                         "of confusion) or 'off'"),
-      render.add_option("--raster-samples", o.samples,
-                        "raster: frames accumulated for depth of field and motion blur "
-                        "(default 32)")};
+      render
+          .add_option("--raster-samples", o.samples,
+                      "raster: frames accumulated for depth of field and motion blur "
+                      "(default 32)")
+          ->check(integer_in(1, kMaxRasterSamples))};
 }
 
 void validate(const RasterEffectsOptions& o, const std::string& renderer) {

@@ -3,21 +3,25 @@
 #include <chrono>
 
 #include "obscura/io/image_io.h"
+#include "option_ranges.h"
 #include "usage_error.h"
 
 namespace obscura::app {
 
 void add_raster_options(CLI::App& render, RasterOptions& o) {
   o.registered = {
-      render.add_option("--msaa", o.msaa, "raster: multisample anti-aliasing, 1, 4 or 8 samples"),
+      render.add_option("--msaa", o.msaa, "raster: multisample anti-aliasing, 1, 4 or 8 samples")
+          ->check(integer_in(1, 8)),
       render.add_option("--shading", o.shading,
                         "raster: flat, gouraud, phong (per pixel; default) or blinn-phong "
                         "(per pixel, half-vector lobe for Phong materials)"),
       render.add_flag("--cull", o.cull, "raster: cull back faces"),
       render.add_flag("--wireframe", o.wireframe, "raster: draw triangle edges over the image"),
-      render.add_option("--shadow-map", o.shadow_map_size,
-                        "raster: shadow map size (texels per side) for directional and spot "
-                        "lights; 0: no shadows (default 1024)")};
+      render
+          .add_option("--shadow-map", o.shadow_map_size,
+                      "raster: shadow map size (texels per side) for directional and spot "
+                      "lights; 0: no shadows (default 1024)")
+          ->check(integer_in(0, 16384))};
 }
 
 void reject_unless_raster(const std::vector<CLI::Option*>& registered,

@@ -14,6 +14,7 @@
 #include "obscura/io/scene_loader.h"
 #include "obscura/math/error.h"
 #include "obscura/trace/render.h"
+#include "option_ranges.h"
 #include "progress_bar.h"
 #include "raster_effects_options.h"
 #include "raster_options.h"
@@ -61,6 +62,8 @@ void validate(const RenderOptions& o) {
   if (o.spp <= 0)
     throw UsageError("--spp must be a positive number of samples per pixel; got " +
                      std::to_string(o.spp));
+  // The sides were range-checked as they were parsed; their product is checked here.
+  if (o.width_given && o.height_given) check_image_size(o.width, o.height, true);
   if (o.threads < 0)
     throw UsageError("--threads must be 0 (all cores) or positive; got " +
                      std::to_string(o.threads));
@@ -102,6 +105,10 @@ void run_render(RenderOptions options) {
   // Before rendering: the output must not replace the scene file, a model, buffer or texture.
   check_not_an_input(options.output, scene.input_files);
   apply_scene_settings(scene.render, options);
+  check_image_size(options.width, options.height, options.width_given || options.height_given);
+  if (options.spp > kMaxSamplesPerPixel)
+    throw Error("samples per pixel", "the scene asks for " + std::to_string(options.spp) +
+                                         "; at most " + std::to_string(kMaxSamplesPerPixel));
   if (!options.quiet)
     for (const std::string& w : scene.warnings) std::fprintf(stderr, "warning: %s\n", w.c_str());
   scene.camera = resolve_camera(scene, options.camera, options.width, options.height);
@@ -175,13 +182,20 @@ void add_render_command(CLI::App& app) {
       ->add_option("-o,--output", options->output,
                    "Output image; the format follows the extension: .png, .exr, .pfm")
       ->capture_default_str();
-  render->add_option("--width", options->width, "Image width in pixels")->capture_default_str();
-  render->add_option("--height", options->height, "Image height in pixels")->capture_default_str();
-  options->tracer.spp_option =
-      render->add_option("--spp", options->spp, "Samples per pixel")->capture_default_str();
+  render->add_option("--width", options->width, "Image width in pixels")
+      ->check(integer_in(1, kMaxImageSidePx))
+      ->capture_default_str();
+  render->add_option("--height", options->height, "Image height in pixels")
+      ->check(integer_in(1, kMaxImageSidePx))
+      ->capture_default_str();
+  options->tracer.spp_option = render->add_option("--spp", options->spp, "Samples per pixel")
+                                   ->check(integer_in(1, kMaxSamplesPerPixel))
+                                   ->capture_default_str();
   render->add_option("--threads", options->threads, "Worker threads (0 = all cores)")
+      ->check(integer_in(0, kMaxThreads))
       ->capture_default_str();
   render->add_option("--seed", options->seed, "Random seed: same seed, same image")
+      ->check(unsigned_64())
       ->capture_default_str();
   render->add_flag("-q,--quiet", options->quiet, "No progress or summary on stderr");
   render->add_flag("--scene-list", options->list_scenes, "List the built-in scenes and exit");
@@ -194,6 +208,7 @@ void add_render_command(CLI::App& app) {
   render
       ->add_option("--environment-intensity", options->environment_intensity,
                    "Scale of the environment --environment chooses")
+      ->check(number_in(0, 1e6))
       ->capture_default_str();
   add_camera_options(*render, options->camera);
   add_display_options(render, options->display);

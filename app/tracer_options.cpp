@@ -7,6 +7,7 @@
 #include "obscura/trace/direct_lighting.h"
 #include "obscura/trace/path_tracer.h"
 #include "obscura/trace/whitted.h"
+#include "option_ranges.h"
 #include "usage_error.h"
 
 namespace obscura::app {
@@ -23,16 +24,23 @@ extern "C" void on_sigint(int) {
 }  // namespace
 
 void add_tracer_options(CLI::App& render, TracerOptions& o) {
-  render.add_option("--renderer", o.renderer, "path (physically based), whitted, direct, or raster (the rasterizer)")
+  render
+      .add_option("--renderer", o.renderer,
+                  "path (physically based), whitted, direct, or raster (the rasterizer)")
       ->capture_default_str();
   render.add_option("--sampler", o.sampler, "sobol (Owen-scrambled) or independent")
       ->capture_default_str();
-  o.max_depth_option = render.add_option(
-      "--max-depth", o.max_depth,
-      "path: scattering events per path (default 65); whitted: mirror/refraction depth "
-      "(default 8)");
-  render.add_option("--time-limit", o.time_limit_s,
-                    "Stop after about this many seconds (without --spp: as many samples as fit)");
+  o.max_depth_option =
+      render
+          .add_option(
+              "--max-depth", o.max_depth,
+              "path: scattering events per path (default 65); whitted: mirror/refraction depth "
+              "(default 8)")
+          ->check(integer_in(1, kMaxTraceDepth));
+  render
+      .add_option("--time-limit", o.time_limit_s,
+                  "Stop after about this many seconds (without --spp: as many samples as fit)")
+      ->check(number_in(0, kMaxTimeLimitS));
   render.add_flag("--aovs", o.aovs,
                   "Also write albedo, normal, depth and id images beside the output (.exr)");
 }

@@ -62,9 +62,10 @@ TEST(CameraCli, APhysicalSensorFitsAsBlenderWhateverTheSceneFit) {
   EXPECT_TRUE(contains(result.output, "39.5978° horizontal, 39.5978° vertical")) << result.output;
   EXPECT_TRUE(contains(result.output, "image distance  50 mm")) << result.output;
   // With breathing (the default) the sensor sits at v = 50 · 3400 / 3350 = 50.7463 mm.
-  auto breathing = test::run_cli("camera " + test::source_path("data/reference/cornell/cornell.glb") +
-                                 " --focal-length 50 --sensor 36x24 --fstop 0.25"
-                                 " --focus-distance 3.4");
+  auto breathing =
+      test::run_cli("camera " + test::source_path("data/reference/cornell/cornell.glb") +
+                    " --focal-length 50 --sensor 36x24 --fstop 0.25"
+                    " --focus-distance 3.4");
   ASSERT_EQ(breathing.exit_code, 0) << breathing.output;
   EXPECT_TRUE(contains(breathing.output, "image distance  50.7463 mm")) << breathing.output;
 }
@@ -89,7 +90,8 @@ INSTANTIATE_TEST_SUITE_P(
     ::testing::Values(
         BadCall{"camera --fov 0", 2, "vertical_fov_degrees: must be in (0, 180) degrees; got 0"},
         BadCall{"camera --fov 180", 2, "got 180"},
-        BadCall{"camera --focal-length -5", 2, "focal_length_mm: must be positive; got -5"},
+        BadCall{"camera --focal-length -5", 2,
+                "--focal-length: expected a number from 0 to 1e+06; got '-5'"},
         BadCall{"camera --sensor 36x0", 2, "sensor_height_mm: must be positive; got 0"},
         BadCall{"camera --sensor 36", 2, "--sensor expects WxH"},
         BadCall{"camera --near 0", 2, "near_m: must be positive; got 0"},
@@ -97,8 +99,9 @@ INSTANTIATE_TEST_SUITE_P(
         BadCall{"camera --fstop 0", 2, "f_number: must be positive; got 0"},
         BadCall{"camera --fstop 2 --focus-breathing maybe", 2,
                 "--focus-breathing expects on or off; got 'maybe'"},
-        BadCall{"camera --focus-distance -1", 2, "focus_distance_m: must be positive; got -1"},
-        BadCall{"camera --width 0", 2, "--width must be a positive"},
+        BadCall{"camera --focus-distance -1", 2,
+                "--focus-distance: expected a number from 0 to 1e+12; got '-1'"},
+        BadCall{"camera --width 0", 2, "--width: expected an integer from 1 to 65536; got '0'"},
         BadCall{"camera --crop 0,0,1.5,1", 2, "crop: must lie within [0, 1]"},
         BadCall{"camera --crop 0,0,1", 2, "--crop expects x0,y0,x1,y1"},
         BadCall{"camera --shutter 1:0", 2, "close must be at or after open"},

@@ -204,5 +204,21 @@ TEST(ColorCli, RenderTakesDisplayOptions) {
   fs::remove_all(dir);
 }
 
+TEST(ColorCli, HugeValuesAreErrorsNotNaN) {
+  // Finite input whose conversion overflows (1e308 through a matrix) is an error naming the
+  // colour, not "-nan -nan -nan" reported as in gamut.
+  Result huge = run("color convert --from srgb --to hsl 1e308 0 0");
+  EXPECT_EQ(huge.exit_code, 1) << huge.out;
+  EXPECT_NE(huge.out.find("too large to convert to hsl"), std::string::npos) << huge.out;
+  EXPECT_EQ(huge.out.find("nan"), std::string::npos) << huge.out;
+  Result hot = run("color temperature 1e308");
+  EXPECT_EQ(hot.exit_code, 2) << hot.out;
+  EXPECT_NE(hot.out.find("at most 1000000000"), std::string::npos) << hot.out;
+  // sRGB white is a grey in HSL (CSS Color 4): hue 0, saturation 0, lightness 1.
+  Result white = run("color convert --from srgb --to hsl 1 1 1");
+  EXPECT_EQ(white.exit_code, 0) << white.out;
+  EXPECT_EQ(white.out.rfind("0 0 1\n", 0), 0u) << white.out;
+}
+
 }  // namespace
 }  // namespace obscura

@@ -68,7 +68,7 @@ TEST_F(RasterEffectsCli, BadOptionsAreUsageErrors) {
   for (const Case& c : {Case{"--renderer raster --raster-dof blur",
                              "--raster-dof must be off, accumulate or post; got 'blur'"},
                         Case{"--renderer raster --raster-samples 0",
-                             "--raster-samples must be a positive number of frames; got 0"},
+                             "--raster-samples: expected an integer from 1 to 65536; got '0'"},
                         Case{"--renderer path --raster-dof post",
                              "--raster-dof applies to --renderer raster only"}}) {
     auto r = test::run_cli(std::string("render ") + c.arguments + " -o " + path("x.png"));

@@ -66,7 +66,7 @@ TEST_F(RasterCli, BadOptionsAreUsageErrors) {
         Case{"--renderer raster --shading toon",
              "--shading must be flat, gouraud, phong or blinn-phong; got 'toon'"},
         Case{"--renderer raster --shadow-map -1",
-             "--shadow-map must be 0 (no shadows) to 16384 texels; got -1"},
+             "--shadow-map: expected an integer from 0 to 16384; got '-1'"},
         Case{"--renderer path --wireframe", "--wireframe applies to --renderer raster only"}}) {
     auto r = test::run_cli(std::string("render ") + c.arguments + " -o " + path("x.png"));
     EXPECT_EQ(r.exit_code, 2) << c.arguments << ": " << r.output;

@@ -2,6 +2,8 @@
 
 #include <gtest/gtest.h>
 
+#include <cmath>
+
 #include "obscura/trace/fresnel.h"
 #include "obscura/trace/path_tracer.h"
 #include "obscura/trace/render.h"
@@ -68,6 +70,52 @@ TEST(Whitted, GlassSlabTransmitsWhatFresnelLeaves) {
   // The path tracer picks one branch per interface at random; on average the same.
   Rgb path = centre_radiance(trace_scene, {0, 0.5, 0}, {0, 2, 0.0001}, PathTracer(), 4096);
   EXPECT_NEAR(path.g, expected, 0.01f);
+}
+
+TEST(Whitted, DeepMirrorCorridorNeedsNoStack) {
+  // Two facing mirrors and a ray along their normal: every bounce continues, so the ray tree is
+  // one chain, as deep as max_depth allows. Asked for 200,000 levels (recursion overflowed the
+  // stack long before), the chain ends at the ray budget and sees no light (there is none between
+  // the mirrors).
+  Scene scene = sky_over_floor();
+  scene.materials.push_back(diffuse_material("mirror", Rgb(0.f)));
+  scene.add_mesh(testing::make_quad("left", 2, {-1, 0, -5}, {-1, 2, -5}, {-1, 2, 5}, {-1, 0, 5}));
+  scene.add_mesh(testing::make_quad("right", 2, {1, 0, -5}, {1, 0, 5}, {1, 2, 5}, {1, 2, -5}));
+  TraceScene trace_scene(scene, device());
+  trace_scene.set_material(2, TraceMaterial(ConductorBsdf(Rgb(0.2f), Rgb(3.9f), 0)));
+  WhittedIntegrator deep(WhittedSettings{.max_depth = 200000});
+  Camera camera = testing::make_camera({0, 1, 0}, {1, 1, 0}, 1, 0.01);
+  Film film(1, 1);
+  RenderStats stats = render(trace_scene, camera, deep, {.samples_per_pixel = 1}, film);
+  EXPECT_EQ(stats.rays.camera + stats.rays.bounce, uint64_t(WhittedIntegrator::kRayBudget));
+  Rgb seen = film.pixel({0, 0});
+  EXPECT_TRUE(std::isfinite(seen.g));
+  EXPECT_LT(seen.g, 1e-3f);
+}
+
+TEST(Whitted, GlassAtDepth1024StaysWithinTheRayBudget) {
+  // Every glass interface splits the ray in two; at depth 1024 recursion would trace 2^1024 rays.
+  // The budget caps a camera ray's tree at kRayBudget rays, and what it drops is light reflected
+  // back and forth a dozen times (R^12 ~ 1e-17). The slab transmits T = (1 − R)/(1 + R) and
+  // reflects Rs = 2R/(1 + R); the glass floor returns R of what comes down, so the sky arrives as
+  // T (1 + Rs R + (Rs R)^2 + …) = T / (1 − Rs R) = 25/27 for R = 0.04.
+  Scene scene = sky_over_floor();
+  scene.materials.push_back(diffuse_material("glass", Rgb(0.f)));
+  const float s = 100;
+  scene.add_mesh(testing::make_quad("slab top", 2, {-s, 1.2f, -s}, {-s, 1.2f, s}, {s, 1.2f, s},
+                                    {s, 1.2f, -s}));
+  scene.add_mesh(
+      testing::make_quad("slab bottom", 2, {-s, 1, -s}, {s, 1, -s}, {s, 1, s}, {-s, 1, s}));
+  TraceScene trace_scene(scene, device());
+  trace_scene.set_material(2, TraceMaterial(DielectricBsdf(1.5f, 0)));
+  trace_scene.set_material(0, TraceMaterial(DielectricBsdf(1.5f, 0)));  // glass floor too
+  Camera camera = testing::make_camera({0, 0.5, 0}, {0, 2, 0.0001}, 1, 0.01);
+  Film film(1, 1);
+  RenderStats stats = render(trace_scene, camera, WhittedIntegrator({.max_depth = 1024}),
+                             {.samples_per_pixel = 1}, film);
+  EXPECT_LE(stats.rays.camera + stats.rays.bounce, uint64_t(WhittedIntegrator::kRayBudget));
+  float r = fresnel_f0(1.5f), t = (1 - r) / (1 + r), rs = 2 * r / (1 + r);
+  EXPECT_NEAR(film.pixel({0, 0}).g, t / (1 - rs * r), 1e-3f);
 }
 
 TEST(Whitted, DiffuseSurfacesGetDirectLightWithShadows) {

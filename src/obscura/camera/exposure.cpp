@@ -38,8 +38,10 @@ double exposure_scale(const Exposure& e, double f_number, double exposure_time_s
 }
 
 void validate(const Exposure& e, double exposure_time_s) {
-  if (!std::isfinite(e.compensation_ev))
-    throw Error("camera.exposure_ev", "must be finite; got " + number_text(e.compensation_ev));
+  // Beyond ±64 EV (a factor of 2^64) a float film overflows to Inf or flushes to 0.
+  if (!std::isfinite(e.compensation_ev) || std::abs(e.compensation_ev) > 64)
+    throw Error("camera.exposure_ev",
+                "must be a finite EV within ±64; got " + number_text(e.compensation_ev));
   if (!(e.iso > 0) || !std::isfinite(e.iso))
     throw Error("camera.iso", "must be positive; got " + number_text(e.iso));
   if (e.mode == ExposureMode::physical && !(exposure_time_s > 0))

@@ -85,8 +85,9 @@ PixelFilter make_pixel_filter(std::string_view name, double radius_px) {
 
 void validate(const PixelFilter& f) {
   double r = filter_radius_px(f);
-  if (!(r > 0) || !std::isfinite(r))
-    throw Error("camera.filter_radius_px", "must be positive; got " + number_text(r));
+  // A wider filter spreads each sample over (2r)^2 pixels: at r = 16 already a thousand.
+  if (!(r > 0) || !(r <= 16))
+    throw Error("camera.filter_radius_px", "must be above 0 and at most 16; got " + number_text(r));
   if (auto* g = std::get_if<GaussianFilter>(&f); g && !(g->sigma_px > 0))
     throw Error("camera.filter_sigma_px", "must be positive; got " + number_text(g->sigma_px));
 }

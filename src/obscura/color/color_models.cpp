@@ -85,7 +85,15 @@ Vec3d oklab_from_oklch(const Vec3d& lch) {
 
 namespace {
 
-// The hue angle shared by HSV and HSL: which sextant the largest channel puts the colour in.
+// A colour whose channels differ by less than this (relative to its size) is a grey: conversions
+// through XYZ leave (1, 1, 1) as 1 ± 2e-16 per channel, and that noise has no hue or saturation.
+bool achromatic(double max, double min) {
+  double scale = std::max({1.0, std::abs(max), std::abs(min)});
+  return max - min <= 1e-9 * scale;
+}
+
+// The hue angle shared by HSV and HSL: which sextant the largest channel puts the colour in
+// (0 for a grey, whose hue CSS Color 4 calls "powerless").
 double hue_degrees(const Vec3d& c, double max, double chroma) {
   if (chroma == 0) return 0;
   double h;
@@ -130,8 +138,10 @@ Vec3d rgb_from_hue_chroma(double hue, double chroma, double m) {
 
 Vec3d hsv_from_rgb(const Vec3d& c) {
   double max = std::max({c[0], c[1], c[2]}), min = std::min({c[0], c[1], c[2]});
+  if (achromatic(max, min)) return {0, 0, max};
   double chroma = max - min;
-  return {hue_degrees(c, max, chroma), max == 0 ? 0 : chroma / max, max};
+  // At or below black (value ≤ 0) there is no saturation to speak of.
+  return {hue_degrees(c, max, chroma), max <= 0 ? 0 : chroma / max, max};
 }
 
 Vec3d rgb_from_hsv(const Vec3d& hsv) {
@@ -139,13 +149,24 @@ Vec3d rgb_from_hsv(const Vec3d& hsv) {
   return rgb_from_hue_chroma(hsv[0], chroma, hsv[2] - chroma);
 }
 
+// CSS Color 4, §7.1 (rgbToHsl): S = (max − L) / min(L, 1 − L), 0 at L = 0 or 1; a negative S
+// (a colour outside the sRGB cube) becomes positive with the hue turned half way round.
 Vec3d hsl_from_rgb(const Vec3d& c) {
   double max = std::max({c[0], c[1], c[2]}), min = std::min({c[0], c[1], c[2]});
-  double chroma = max - min;
   double lightness = (max + min) / 2;
-  double denominator = 1 - std::abs(2 * lightness - 1);
-  double saturation = chroma == 0 || denominator == 0 ? 0 : chroma / denominator;
-  return {hue_degrees(c, max, chroma), saturation, lightness};
+  if (achromatic(max, min)) return {0, 0, lightness};
+  double chroma = max - min;
+  double hue = hue_degrees(c, max, chroma);
+  // Lightness at white or black (within rounding) leaves no room for saturation: S would be a
+  // quotient of noise.
+  double room = std::min(lightness, 1 - lightness);
+  if (std::abs(room) <= 1e-9) return {hue, 0, lightness};
+  double saturation = (max - lightness) / room;
+  if (saturation < 0) {
+    saturation = -saturation;
+    hue = hue >= 180 ? hue - 180 : hue + 180;
+  }
+  return {hue, saturation, lightness};
 }
 
 Vec3d rgb_from_hsl(const Vec3d& hsl) {

@@ -1,7 +1,12 @@
 #include "obscura/io/json_reader.h"
 
+#include <fcntl.h>
+#include <sys/stat.h>
+#include <unistd.h>
+
+#include <cerrno>
 #include <cmath>
-#include <fstream>
+#include <cstring>
 #include <sstream>
 
 #include "obscura/math/error.h"
@@ -122,7 +127,7 @@ Vector3d JsonReader::vector3(const std::string& key, Vector3d fallback) {
   return has(key) ? vector3(key) : fallback;
 }
 
-Rgb JsonReader::rgb(const std::string& key, Rgb fallback) {
+Rgb JsonReader::rgb(const std::string& key, Rgb fallback, double max) {
   if (!has(key)) return fallback;
   Rgb c;
   if (at(key).is_number()) {
@@ -132,6 +137,11 @@ Rgb JsonReader::rgb(const std::string& key, Rgb fallback) {
     c = Rgb(float(v[0]), float(v[1]), float(v[2]));
   }
   if (c.r < 0 || c.g < 0 || c.b < 0) fail(key, "colour components must be non-negative");
+  if (!(c.r <= max && c.g <= max && c.b <= max)) {
+    std::ostringstream s;
+    s << "colour components must be at most " << max << "; got " << at(key).dump();
+    fail(key, s.str());
+  }
   return c;
 }
 
@@ -146,27 +156,109 @@ void JsonReader::fail(const std::string& key, const std::string& message) const 
   throw Error(file_ + ": " + path_of(key), message);
 }
 
-nlohmann::ordered_json parse_json_file(const std::string& path) {
-  std::ifstream in(path, std::ios::binary);
-  if (!in) throw Error(path, "cannot open the file (does it exist?)");
-  std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+namespace {
+
+// "line:column" of a byte offset, counted as editors count them.
+std::string line_and_column(const std::string& text, size_t offset) {
+  size_t line = 1, column = 1;
+  for (size_t i = 0; i < offset && i < text.size(); ++i) {
+    if (text[i] == '\n')
+      ++line, column = 1;
+    else
+      ++column;
+  }
+  return std::to_string(line) + ":" + std::to_string(column);
+}
+
+// No scene is nested deeply; a file that is (hostile or broken) is refused before the parser
+// and the readers, whose work and stack grow with the depth, see it.
+void check_nesting(const std::string& text, const std::string& name) {
+  int depth = 0;
+  bool in_string = false, escaped = false;
+  for (size_t i = 0; i < text.size(); ++i) {
+    char c = text[i];
+    if (in_string) {
+      if (escaped)
+        escaped = false;
+      else if (c == '\\')
+        escaped = true;
+      else if (c == '"')
+        in_string = false;
+    } else if (c == '"') {
+      in_string = true;
+    } else if (c == '[' || c == '{') {
+      if (++depth > kMaxJsonDepth)
+        throw Error(name + ":" + line_and_column(text, i),
+                    "JSON nested more than " + std::to_string(kMaxJsonDepth) + " levels deep");
+    } else if (c == ']' || c == '}') {
+      --depth;
+    }
+  }
+}
+
+// The whole file, if it is a regular file of at most kMaxJsonFileBytes. Opened without blocking
+// and checked on the open descriptor, so a FIFO, a device (/dev/zero behind a symlink) or a
+// directory is refused at once instead of read forever.
+std::string read_json_file(const std::string& path) {
+  int fd = ::open(path.c_str(), O_RDONLY | O_NONBLOCK | O_CLOEXEC);
+  if (fd < 0) throw Error(path, std::string("cannot open the file: ") + std::strerror(errno));
+  struct FdCloser {
+    int fd;
+    ~FdCloser() { ::close(fd); }
+  } closer{fd};
+  struct stat info {};
+  if (::fstat(fd, &info) != 0)
+    throw Error(path, std::string("cannot read the file: ") + std::strerror(errno));
+  if (!S_ISREG(info.st_mode))
+    throw Error(path,
+                S_ISDIR(info.st_mode)
+                    ? "is a directory; expected a JSON file"
+                    : "is not a regular file (a device, pipe or socket); expected a JSON file");
+  auto too_large = [&](uintmax_t bytes) {
+    return Error(path, "is " + std::to_string(bytes) + " bytes; a JSON file may have at most " +
+                           std::to_string(kMaxJsonFileBytes) + " (64 MiB)");
+  };
+  if (uintmax_t(info.st_size) > kMaxJsonFileBytes) throw too_large(uintmax_t(info.st_size));
+  std::string text;
+  char buffer[65536];
+  for (;;) {
+    ssize_t n = ::read(fd, buffer, sizeof buffer);
+    if (n < 0 && errno == EINTR) continue;
+    if (n < 0) throw Error(path, std::string("cannot read the file: ") + std::strerror(errno));
+    if (n == 0) break;
+    text.append(buffer, size_t(n));
+    if (text.size() > kMaxJsonFileBytes) throw too_large(text.size());  // it grew while read
+  }
+  return text;
+}
+
+}  // namespace
+
+nlohmann::ordered_json parse_json_text(const std::string& text, const std::string& name) {
+  if (text.size() > kMaxJsonFileBytes)
+    throw Error(
+        name, "is " + std::to_string(text.size()) + " bytes; a JSON file may have at most 64 MiB");
+  check_nesting(text, name);
   try {
     return nlohmann::ordered_json::parse(text);
   } catch (const nlohmann::ordered_json::parse_error& e) {
-    // Turn the byte offset into a line and column, as editors show them.
+    // e.byte is one past the offending character.
     size_t offset = std::min<size_t>(e.byte, text.size());
-    size_t line = 1, column = 1;
-    for (size_t i = 0; i + 1 < offset; ++i) {
-      if (text[i] == '\n')
-        ++line, column = 1;
-      else
-        ++column;
-    }
     std::string message = e.what();
     size_t cut = message.find("syntax error");
-    throw Error(path + ":" + std::to_string(line) + ":" + std::to_string(column),
+    throw Error(name + ":" + line_and_column(text, offset > 0 ? offset - 1 : 0),
                 "malformed JSON: " + (cut == std::string::npos ? message : message.substr(cut)));
+  } catch (const nlohmann::ordered_json::exception& e) {
+    // A number too large for a double (1e400) ends here; the message quotes it.
+    std::string message = e.what();
+    size_t cut = message.find("] ");
+    throw Error(
+        name, "malformed JSON: " + (cut == std::string::npos ? message : message.substr(cut + 2)));
   }
+}
+
+nlohmann::ordered_json parse_json_file(const std::string& path) {
+  return parse_json_text(read_json_file(path), path);
 }
 
 }  // namespace obscura

@@ -43,8 +43,9 @@ class JsonReader {
   bool boolean(const std::string& key, bool fallback);
   Vector3d vector3(const std::string& key, Vector3d fallback);
   Vector3d vector3(const std::string& key);  // required
-  // A colour: [r, g, b] with non-negative components, or one number for grey.
-  Rgb rgb(const std::string& key, Rgb fallback);
+  // A colour: [r, g, b] with components in [0, max], or one number for grey. Reflectances and
+  // albedos pass max = 1 (a surface cannot reflect more light than reaches it).
+  Rgb rgb(const std::string& key, Rgb fallback, double max = 1e9);
   std::vector<double> numbers(const std::string& key, size_t count);  // exactly `count`
 
   // Throws naming the first key that was never read. Call after reading everything.
@@ -57,7 +58,14 @@ class JsonReader {
   mutable std::set<std::string> read_;
 };
 
-// Parses a JSON document; a syntax error names the file, line and column.
+// Limits on a JSON document: its size and how deeply its arrays and objects nest.
+inline constexpr uintmax_t kMaxJsonFileBytes = uintmax_t(64) << 20;
+inline constexpr int kMaxJsonDepth = 64;
+
+// Parses a JSON document; a syntax error names the file, line and column. The path must name a
+// regular file (not a directory, device or pipe) within kMaxJsonFileBytes.
 nlohmann::ordered_json parse_json_file(const std::string& path);
+// The same for a document in memory; `name` stands for the file in messages.
+nlohmann::ordered_json parse_json_text(const std::string& text, const std::string& name);
 
 }  // namespace obscura

@@ -1,7 +1,9 @@
 #include "obscura/io/json_scene.h"
 
 #include <algorithm>
+#include <cmath>
 #include <filesystem>
+#include <functional>
 #include <map>
 #include <numbers>
 
@@ -29,8 +31,7 @@ class JsonSceneReader {
   explicit JsonSceneReader(std::string path)
       : path_(std::move(path)), directory_(std::filesystem::path(path_).parent_path()) {}
 
-  Scene read() {
-    nlohmann::ordered_json document = parse_json_file(path_);
+  Scene read(const nlohmann::ordered_json& document) {
     JsonReader root(document, path_, "$");
     scene_.name = root.string("name", std::filesystem::path(path_).stem().string());
     if (root.has("render")) read_render(root.object("render"));
@@ -93,40 +94,40 @@ class JsonSceneReader {
     std::string type = json.string("type");
     if (type == "diffuse") {
       DiffuseMaterial d;
-      d.reflectance = json.rgb("reflectance", d.reflectance);
+      d.reflectance = json.rgb("reflectance", d.reflectance, 1);
       d.reflectance_texture = texture(json, "reflectance_texture", TextureEncoding::kSrgb);
       m.model = d;
     } else if (type == "phong") {
       PhongMaterial p;
-      p.ambient = json.rgb("ambient", p.ambient);
-      p.diffuse = json.rgb("diffuse", p.diffuse);
-      p.specular = json.rgb("specular", p.specular);
+      p.ambient = json.rgb("ambient", p.ambient, 1);
+      p.diffuse = json.rgb("diffuse", p.diffuse, 1);
+      p.specular = json.rgb("specular", p.specular, 1);
       p.shininess = float(json.number_in("shininess", 0, 0, 1e6));
       p.diffuse_texture = texture(json, "diffuse_texture", TextureEncoding::kSrgb);
       p.blinn = json.boolean("blinn", true);
       m.model = p;
     } else if (type == "conductor") {
       ConductorMaterial c;
-      c.eta = json.rgb("eta", c.eta);
-      c.k = json.rgb("k", c.k);
+      c.eta = json.rgb("eta", c.eta, 100);
+      c.k = json.rgb("k", c.k, 100);
       c.roughness = float(json.number_in("roughness", 0, 0, 1));
       m.model = c;
     } else if (type == "dielectric") {
       DielectricMaterial d;
       d.ior = float(json.number_in("ior", 1.5, 1e-3, 10));
       d.roughness = float(json.number_in("roughness", 0, 0, 1));
-      d.transmittance = json.rgb("transmittance", d.transmittance);
+      d.transmittance = json.rgb("transmittance", d.transmittance, 1);
       m.model = d;
     } else if (type == "metallic-roughness") {
       MetallicRoughnessMaterial mr;
-      mr.base_color = json.rgb("base_color", mr.base_color);
+      mr.base_color = json.rgb("base_color", mr.base_color, 1);
       mr.base_color_texture = texture(json, "base_color_texture", TextureEncoding::kSrgb);
       mr.metallic = float(json.number_in("metallic", 1, 0, 1));
       mr.roughness = float(json.number_in("roughness", 1, 0, 1));
       mr.metallic_roughness_texture =
           texture(json, "metallic_roughness_texture", TextureEncoding::kLinear);
       mr.specular = float(json.number_in("specular", 1, 0, 1));
-      mr.specular_color = json.rgb("specular_color", mr.specular_color);
+      mr.specular_color = json.rgb("specular_color", mr.specular_color, 1e3);
       mr.ior = float(json.number_in("ior", 1.5, 1, 10));
       m.model = mr;
     } else if (type == "emissive") {
@@ -182,39 +183,88 @@ class JsonSceneReader {
            Transform::rotate_x(r.x) * Transform::scale(s.x, s.y, s.z);
   }
 
-  Mesh shape(JsonReader& json, const std::string& kind) {
-    if (kind == "sphere")
-      return make_sphere(float(json.number_in("radius", 1, 1e-9, 1e9)),
-                         json.integer("segments", 64, 3, 4096));
-    if (kind == "rectangle") {
-      std::vector<double> size =
-          json.has("size") ? json.numbers("size", 2) : std::vector<double>{1, 1};
-      return make_rectangle(float(size[0]), float(size[1]));
+  // Edge lengths that must be positive and finite (as floats), `count` of them.
+  std::vector<double> sizes(JsonReader& json, const std::string& key, size_t count) {
+    if (!json.has(key)) return std::vector<double>(count, 1.0);
+    std::vector<double> v = json.numbers(key, count);
+    for (double x : v)
+      if (!(x > 0 && x <= 1e9))
+        json.fail(key, "sizes must be positive and at most 1e9; got " + json.at(key).dump());
+    return v;
+  }
+
+  // The index of the one unit mesh of a kind, made on first use.
+  uint32_t unit_mesh(const std::string& key, const std::function<Mesh()>& make) {
+    auto found = unit_meshes_.find(key);
+    if (found != unit_meshes_.end()) return found->second;
+    auto index = uint32_t(scene_.meshes.size());
+    scene_.meshes.push_back(make());
+    unit_meshes_[key] = index;
+    return index;
+  }
+
+  // A generated shape as one shared unit mesh and the scale that gives it the object's size: a
+  // scene of 200,000 spheres holds one sphere mesh and 200,000 instances, not 200,000 meshes.
+  struct Shape {
+    uint32_t mesh = 0;
+    Transform object_from_unit;
+  };
+
+  Shape shape(JsonReader& json, const std::string& kind) {
+    if (kind == "sphere") {
+      double r = json.number_in("radius", 1, 1e-6, 1e9);
+      int segments = json.integer("segments", 64, 3, 4096);
+      return {
+          unit_mesh("sphere/" + std::to_string(segments), [&] { return make_sphere(1, segments); }),
+          Transform::scale(r, r, r)};
     }
-    if (kind == "box") return make_box(Vector3f(json.vector3("size", {1, 1, 1})));
+    if (kind == "rectangle") {
+      std::vector<double> size = sizes(json, "size", 2);
+      return {unit_mesh("rectangle", [] { return make_rectangle(1, 1); }),
+              Transform::scale(size[0], 1, size[1])};
+    }
+    if (kind == "box") {
+      std::vector<double> size = sizes(json, "size", 3);
+      return {unit_mesh("box",
+                        [] {
+                          return make_box({1, 1, 1});
+                        }),
+              Transform::scale(size[0], size[1], size[2])};
+    }
     if (kind == "mesh") {
-      Mesh m;
-      m.name = "mesh";
-      const nlohmann::ordered_json& p = json.at("positions");
-      const nlohmann::ordered_json& i = json.at("indices");
-      if (!p.is_array() || p.size() % 3 != 0 ||
-          !std::all_of(p.begin(), p.end(), [](auto& v) { return v.is_number(); }))
-        json.fail("positions", "expected a flat array of numbers, three per vertex");
-      if (!i.is_array() || i.size() % 3 != 0 ||
-          !std::all_of(i.begin(), i.end(), [](auto& v) { return v.is_number_unsigned(); }))
-        json.fail("indices", "expected a flat array of non-negative integers, three per triangle");
-      for (size_t k = 0; k < p.size(); k += 3)
-        m.positions.emplace_back(p[k].get<float>(), p[k + 1].get<float>(), p[k + 2].get<float>());
-      for (const nlohmann::ordered_json& v : i) {
-        uint64_t index = v.get<uint64_t>();
-        if (index >= m.positions.size())
-          json.fail("indices", "index " + std::to_string(index) + " is past the vertex count " +
-                                   std::to_string(m.positions.size()));
-        m.indices.push_back(uint32_t(index));
-      }
-      return m;
+      scene_.meshes.push_back(triangle_mesh(json));
+      return {uint32_t(scene_.meshes.size() - 1), Transform()};
     }
     json.fail("shape", "unknown shape '" + kind + "'; expected sphere, rectangle, box or mesh");
+  }
+
+  Mesh triangle_mesh(JsonReader& json) {
+    Mesh m;
+    m.name = "mesh";
+    const nlohmann::ordered_json& p = json.at("positions");
+    const nlohmann::ordered_json& i = json.at("indices");
+    if (!p.is_array() || p.size() % 3 != 0 ||
+        !std::all_of(p.begin(), p.end(), [](auto& v) { return v.is_number(); }))
+      json.fail("positions", "expected a flat array of numbers, three per vertex");
+    if (!i.is_array() || i.size() % 3 != 0 ||
+        !std::all_of(i.begin(), i.end(), [](auto& v) { return v.is_number_unsigned(); }))
+      json.fail("indices", "expected a flat array of non-negative integers, three per triangle");
+    for (size_t k = 0; k < p.size(); k += 3) {
+      Point3f position(p[k].get<float>(), p[k + 1].get<float>(), p[k + 2].get<float>());
+      // 1e39 is a JSON number, but no float: it would become Inf.
+      if (!std::isfinite(position.x) || !std::isfinite(position.y) || !std::isfinite(position.z))
+        json.fail("positions", "vertex " + std::to_string(k / 3) +
+                                   " is not finite as a 32-bit float (|x| < 3.4e38)");
+      m.positions.push_back(position);
+    }
+    for (const nlohmann::ordered_json& v : i) {
+      uint64_t index = v.get<uint64_t>();
+      if (index >= m.positions.size())
+        json.fail("indices", "index " + std::to_string(index) + " is past the vertex count " +
+                                 std::to_string(m.positions.size()));
+      m.indices.push_back(uint32_t(index));
+    }
+    return m;
   }
 
   std::vector<TransformKey> motion(JsonReader& json) {
@@ -239,12 +289,19 @@ class JsonSceneReader {
       throw Error(path_ + ": " + json.path(),
                   "an object needs exactly one of \"model\" or \"shape\"");
     if (json.has("shape")) {
-      Mesh mesh = shape(json, json.string("shape"));
-      mesh.material = material(json, "material");
-      if (!name.empty()) mesh.name = name;
-      uint32_t index = scene_.add_mesh(std::move(mesh), world_from_object);
-      scene_.instances.back().motion = keys;
-      (void)index;
+      auto meshes_before = scene_.meshes.size();
+      Shape s = shape(json, json.string("shape"));
+      Instance instance;
+      instance.mesh = s.mesh;
+      // Shared meshes take their material from the instance.
+      instance.material = int32_t(material(json, "material"));
+      if (scene_.meshes.size() > meshes_before)  // a new mesh: its first user's material
+        scene_.meshes[s.mesh].material = uint32_t(instance.material);
+      instance.name = name.empty() ? scene_.meshes[s.mesh].name : name;
+      instance.world_from_object = world_from_object * s.object_from_unit;
+      for (const TransformKey& key : keys)
+        instance.motion.push_back({key.time_seconds, key.world_from_object * s.object_from_unit});
+      scene_.instances.push_back(std::move(instance));
       json.finish();
       return;
     }
@@ -388,12 +445,17 @@ class JsonSceneReader {
   Scene scene_;
   std::map<std::string, uint32_t> material_index_;
   std::map<std::pair<std::string, TextureEncoding>, int32_t> textures_;
+  std::map<std::string, uint32_t> unit_meshes_;  // generated shapes' shared meshes, by kind
 };
 
 }  // namespace
 
 Scene load_json_scene(const std::string& path) {
-  return JsonSceneReader(path).read();
+  return JsonSceneReader(path).read(parse_json_file(path));
+}
+
+Scene load_json_scene_text(const std::string& text, const std::string& path) {
+  return JsonSceneReader(path).read(parse_json_text(text, path));
 }
 
 }  // namespace obscura

@@ -11,5 +11,8 @@
 namespace obscura {
 
 Scene load_json_scene(const std::string& path);
+// The same for a document in memory; `path` names it in messages, and relative file names in it
+// (models, textures) resolve against its directory.
+Scene load_json_scene_text(const std::string& text, const std::string& path);
 
 }  // namespace obscura

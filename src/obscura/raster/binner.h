@@ -7,6 +7,7 @@
 #pragma once
 
 #include <algorithm>
+#include <cmath>
 #include <cstdint>
 #include <span>
 #include <vector>
@@ -126,6 +127,14 @@ class Chunk {
     uint32_t planes = v[0]->outcode | v[1]->outcode | v[2]->outcode;
     int n = clip_polygon(poly, 3, planes, s.guard);
     if (n < 3) return;
+    // Clip coordinates near a float's limit (1e37) overflow in the plane distances, leaving NaN
+    // or Inf vertices: such a triangle has no image to draw, and snapping it would be undefined.
+    for (int i = 0; i < n; ++i) {
+      const Vector4f& c = poly[i].clip;
+      if (!(std::isfinite(c.x) && std::isfinite(c.y) && std::isfinite(c.z) && c.w > 0 &&
+            std::isfinite(c.w)))
+        return;
+    }
     uint32_t base = uint32_t(vertices.size());
     for (int i = 0; i < n; ++i) {
       ShadedVertex<V> sv;
