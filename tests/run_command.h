@@ -18,6 +18,26 @@ CommandResult run_cli(const std::string& arguments);
 // Runs a shell command line (e.g. with `ulimit` before the CLI); stdout and stderr captured.
 CommandResult run_shell(const std::string& command_line);
 
+// Whether this build runs under AddressSanitizer, whose shadow memory needs terabytes of address
+// space: `ulimit -v` cannot be used there (the process could not start).
+#if defined(__SANITIZE_ADDRESS__)
+inline constexpr bool kAddressSanitizer = true;
+#elif defined(__has_feature)
+#if __has_feature(address_sanitizer)
+inline constexpr bool kAddressSanitizer = true;
+#else
+inline constexpr bool kAddressSanitizer = false;
+#endif
+#else
+inline constexpr bool kAddressSanitizer = false;
+#endif
+
+// "ulimit -v KB; " to bound a shell command's address space, or nothing under AddressSanitizer
+// (whose own allocator limits then bound memory instead).
+inline std::string address_space_limit(long kilobytes) {
+  return kAddressSanitizer ? std::string() : "ulimit -v " + std::to_string(kilobytes) + "; ";
+}
+
 // A fresh, empty directory under the system temp directory, removed at process exit.
 std::string make_temp_dir(const std::string& prefix);
 

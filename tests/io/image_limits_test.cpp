@@ -197,8 +197,8 @@ TEST_F(ImageLimits, CliRefusesHugeInputWithBoundedMemory) {
   std::string file = write_file("huge.png", png_declaring(20000, 20000));
   std::string out = path("out.png");
   // Under a 2 GB address-space limit: decoding 20000² RGB as float would need 4.8 GB.
-  auto r = test::run_shell("ulimit -v 2000000; '" + test::cli_path() + "' image convert '" + file +
-                           "' '" + out + "'");
+  auto r = test::run_shell(test::address_space_limit(2000000) + "'" + test::cli_path() +
+                           "' image convert '" + file + "' '" + out + "'");
   EXPECT_EQ(r.exit_code, 1) << r.output;
   EXPECT_EQ(r.output.rfind("obscura: error: " + file + ": ", 0), 0u) << r.output;
   expect_limit_message(r.output, file);
