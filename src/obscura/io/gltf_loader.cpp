@@ -16,6 +16,7 @@
 #include "obscura/io/gltf_animation.h"
 #include "obscura/io/gltf_feature_warnings.h"
 #include "obscura/io/gltf_validation.h"
+#include "obscura/io/input_file.h"
 #include "obscura/io/texture_loader.h"
 #include "obscura/math/error.h"
 
@@ -557,17 +558,7 @@ std::string shorten(const std::string& message) {
 }  // namespace
 
 std::vector<unsigned char> read_gltf_file(const std::string& path) {
-  std::error_code ec;
-  auto status = std::filesystem::status(path, ec);
-  if (ec || !std::filesystem::exists(status)) throw Error(path, "file does not exist");
-  if (std::filesystem::is_directory(status)) throw Error(path, "is a directory, not a file");
-  if (!std::filesystem::is_regular_file(status))
-    throw Error(path, "is not a regular file (a device, FIFO or socket)");
-  uintmax_t size = std::filesystem::file_size(path, ec);
-  if (ec) throw Error(path, "cannot read: " + ec.message());
-  if (size > kMaxGltfFileBytes)
-    throw Error(path, "is " + std::to_string(size >> 20) + " MiB; glTF files and buffers over " +
-                          std::to_string(kMaxGltfFileBytes >> 20) + " MiB are not read");
+  uint64_t size = check_input_file(path, kMaxGltfFileBytes, "glTF files and buffers");
   if (size == 0) throw Error(path, "file is empty");
   std::ifstream in(path, std::ios::binary);
   std::vector<unsigned char> bytes(size);
