@@ -8,21 +8,17 @@
 #include <span>
 #include <string>
 
+#include "empty_folder.h"
 #include "obscura/io/camera_mapping.h"
 #include "obscura/io/gltf_loader.h"
 #include "obscura/math/error.h"
 
 namespace {
 
-// Relative URIs resolve here: an empty folder of this process, so an input cannot read the
-// files around the fuzzer (tinygltf also looks in the working directory; nothing writes).
+// Relative URIs resolve in an empty folder (tinygltf also looks in the working directory;
+// nothing writes there).
 const std::string& base_dir() {
-  static const std::string dir = [] {
-    std::filesystem::path d = std::filesystem::temp_directory_path() / "obscura-gltf-fuzz-empty";
-    std::error_code ec;
-    std::filesystem::create_directories(d, ec);
-    return d.string();
-  }();
+  static const std::string dir = obscura::fuzz::make_empty_folder("obscura-gltf-fuzz-empty");
   return dir;
 }
 

@@ -7,20 +7,16 @@
 #include <filesystem>
 #include <string>
 
+#include "empty_folder.h"
 #include "obscura/io/json_scene.h"
 #include "obscura/math/error.h"
 
 namespace {
 
-// The scene "lives" in an empty folder of this process, so relative model and texture names in
-// an input find nothing around the fuzzer.
+// The scene "lives" in an empty folder, so relative model and texture names find nothing.
 const std::string& scene_path() {
-  static const std::string path = [] {
-    std::filesystem::path d = std::filesystem::temp_directory_path() / "obscura-json-fuzz-empty";
-    std::error_code ec;
-    std::filesystem::create_directories(d, ec);
-    return (d / "fuzz.json").string();
-  }();
+  static const std::string path =
+      obscura::fuzz::make_empty_folder("obscura-json-fuzz-empty") + "/fuzz.json";
   return path;
 }
 

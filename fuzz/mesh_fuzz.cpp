@@ -10,6 +10,7 @@
 #include <string>
 #include <vector>
 
+#include "empty_folder.h"
 #include "obscura/io/camera_mapping.h"
 #include "obscura/io/mtl_reader.h"
 #include "obscura/io/obj_loader.h"
@@ -19,15 +20,9 @@
 
 namespace {
 
-// "mtllib" and texture paths resolve here: an empty folder of this process, so that an input
-// cannot read the files around the fuzzer.
+// "mtllib" and texture paths resolve in an empty folder.
 const std::string& base_dir() {
-  static const std::string dir = [] {
-    std::filesystem::path d = std::filesystem::temp_directory_path() / "obscura-mesh-fuzz-empty";
-    std::error_code ec;
-    std::filesystem::create_directories(d, ec);
-    return d.string();
-  }();
+  static const std::string dir = obscura::fuzz::make_empty_folder("obscura-mesh-fuzz-empty");
   return dir;
 }
 
