@@ -12,6 +12,7 @@
 #include "image_command.h"
 #include "info_command.h"
 #include "obscura/math/error.h"
+#include "partial_render.h"
 #include "raster_clip_command.h"
 #include "render_command.h"
 #include "usage_error.h"
@@ -64,5 +65,6 @@ int main(int argc, char** argv) {
     std::fprintf(stderr, "obscura: internal error: %s\n", e.what());
     return 1;
   }
-  return 0;
+  // 0, or how a render ended early (app/partial_render.h).
+  return obscura::app::exit_status();
 }

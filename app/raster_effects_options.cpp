@@ -51,7 +51,8 @@ bool wants_raster_effects(const RasterEffectsOptions& o, const Scene& scene) {
 RasterRender render_raster_effects(const Scene& scene, const RasterOptions& raster,
                                    const RasterEffectsOptions& effects, bool aovs, uint64_t seed,
                                    Film& film, const std::string& output,
-                                   const ProgressCallback& progress) {
+                                   const ProgressCallback& progress,
+                                   const std::atomic<bool>* cancel, double time_limit_s) {
   auto start = std::chrono::steady_clock::now();
   const Camera& camera = scene.camera;
   const bool post = effects.dof == "post" && camera.lens.depth_of_field;
@@ -64,9 +65,11 @@ RasterRender render_raster_effects(const Scene& scene, const RasterOptions& rast
                                         .seed = seed,
                                         .msaa_samples = raster.msaa,
                                         .aovs = aovs || post,
-                                        .depth_of_field = lens_blur};
+                                        .depth_of_field = lens_blur,
+                                        .cancel = cancel,
+                                        .time_limit_s = time_limit_s};
   raster::RenderTarget middle = rasterizer.make_target(camera);
-  raster::accumulate(
+  raster::AccumulationStats stats = raster::accumulate(
       camera, settings,
       [&](const raster::FrameParameters& frame, raster::RenderTarget& target) {
         rasterizer.render_frame(
@@ -86,7 +89,14 @@ RasterRender render_raster_effects(const Scene& scene, const RasterOptions& rast
   RasterRender result;
   result.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   result.warnings = rasterizer.warnings();
-  if (aovs) result.aov_paths = write_raster_aovs(middle, camera, output);
+  result.progress = {.end = stats.cancelled      ? RenderEnd::kInterrupted
+                            : stats.time_limited ? RenderEnd::kTimeLimit
+                                                 : RenderEnd::kComplete,
+                     .done = stats.frames,
+                     .requested = settings.samples,
+                     .unit = "frames"};
+  if (aovs)
+    result.aov_paths = write_raster_aovs(middle, camera, output, partial_metadata(result.progress));
   return result;
 }
 

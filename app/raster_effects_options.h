@@ -3,6 +3,7 @@
 // shutter is open and something moves (see docs/raster-effects.md).
 #pragma once
 
+#include <atomic>
 #include <cstdint>
 #include <string>
 #include <vector>
@@ -38,6 +39,8 @@ bool wants_raster_effects(const RasterEffectsOptions& options, const Scene& scen
 RasterRender render_raster_effects(const Scene& scene, const RasterOptions& raster,
                                    const RasterEffectsOptions& effects, bool aovs, uint64_t seed,
                                    Film& film, const std::string& output,
-                                   const ProgressCallback& progress = {});
+                                   const ProgressCallback& progress = {},
+                                   const std::atomic<bool>* cancel = nullptr,
+                                   double time_limit_s = 0);
 
 }  // namespace obscura::app

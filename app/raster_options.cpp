@@ -70,17 +70,21 @@ RasterRender render_raster(const Scene& scene, const RasterOptions& options, boo
   RasterRender result;
   result.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   result.warnings = rasterizer.warnings();
+  result.progress = {.end = RenderEnd::kComplete, .done = 1, .requested = 1, .unit = "frames"};
   if (aovs) result.aov_paths = write_raster_aovs(target, scene.camera, output);
   return result;
 }
 
 std::vector<std::string> write_raster_aovs(const raster::RenderTarget& target, const Camera& camera,
-                                           const std::string& output) {
+                                           const std::string& output,
+                                           const ImageMetadata& metadata) {
   std::string stem = output.substr(0, output.find_last_of('.'));
   std::vector<std::string> paths;
   auto write = [&](const char* name, const Image& image) {
     paths.push_back(stem + "." + name + ".exr");
-    write_image(paths.back(), image);
+    ImageWriteOptions write_options;
+    write_options.metadata = metadata;
+    write_image(paths.back(), image, write_options);
   };
   write("normal", raster::normal_image(target));
   write("depth", raster::distance_image(target, camera));

@@ -10,6 +10,7 @@
 #include "obscura/film/film.h"
 #include "obscura/raster/scene_rasterizer.h"
 #include "obscura/scene/scene.h"
+#include "partial_render.h"
 
 namespace obscura::app {
 
@@ -34,6 +35,7 @@ struct RasterRender {
   double seconds = 0;  // compiling the scene and drawing the frame
   std::vector<std::string> aov_paths;
   std::vector<std::string> warnings;
+  RenderProgress progress;  // frames drawn of those asked for, and how the render ended
 };
 // Renders one frame of `scene` with its camera into `film` (the crop's size); with `aovs`,
 // writes <output>.depth.exr, .normal.exr and .id.exr beside `output`, as the tracer does.
@@ -41,6 +43,7 @@ RasterRender render_raster(const Scene& scene, const RasterOptions& options, boo
                            const std::string& output);
 // Writes the target's normal, depth and id images beside `output`; returns their paths.
 std::vector<std::string> write_raster_aovs(const raster::RenderTarget& target, const Camera& camera,
-                                           const std::string& output);
+                                           const std::string& output,
+                                           const ImageMetadata& metadata = {});
 
 }  // namespace obscura::app

@@ -15,6 +15,7 @@
 #include "obscura/math/error.h"
 #include "obscura/trace/render.h"
 #include "option_ranges.h"
+#include "partial_render.h"
 #include "progress_bar.h"
 #include "raster_effects_options.h"
 #include "raster_options.h"
@@ -82,6 +83,16 @@ Scene load_scene(const std::string& name) {
 
 namespace {
 
+// Writes the image (marked partial when it is) and sets the exit status that says how it ended.
+void finish_render(const RenderOptions& options, const Film& film, const RenderProgress& progress) {
+  ImageWriteOptions write_options = image_write_options(options.display);
+  write_options.metadata = partial_metadata(progress);
+  report_write(options.output, write_image(options.output, film.to_image(), write_options),
+               options.quiet);
+  warn_if_unmarked(options.output, progress, options.quiet);
+  set_exit_status(exit_status_for(progress.end));
+}
+
 void run_render(RenderOptions options) {
   if (options.list_scenes) {
     for (const BuiltinScene& b : builtin_scenes())
@@ -102,8 +113,11 @@ void run_render(RenderOptions options) {
   EnvironmentChoice environment = parse_environment_choice(options.environment);
   environment.intensity = float(options.environment_intensity);
   apply_environment(scene, environment);
-  // Before rendering: the output must not replace the scene file, a model, buffer or texture.
+  // Before rendering: no output may replace the scene file, a model, buffer or texture.
   check_not_an_input(options.output, scene.input_files);
+  if (options.tracer.aovs)
+    for (const std::string& aov : aov_paths(options.output, options.tracer.renderer))
+      check_not_an_input(aov, scene.input_files);
   apply_scene_settings(scene.render, options);
   check_image_size(options.width, options.height, options.width_given || options.height_given);
   if (options.spp > kMaxSamplesPerPixel)
@@ -116,22 +130,25 @@ void run_render(RenderOptions options) {
 
   Bounds2i crop = scene.camera.film.crop_pixels();
   Film film(crop.width(), crop.height());
+  // Ctrl-C stops either renderer between passes (samples or frames); the image so far is written.
+  InterruptGuard interrupt;
   if (options.tracer.renderer == "raster") {
     const bool effects = wants_raster_effects(options.raster_effects, scene);
     ProgressBar bar("render", options.quiet || !effects);
     RasterRender r =
-        effects ? render_raster_effects(scene, options.raster, options.raster_effects,
-                                        options.tracer.aovs, options.seed, film, options.output,
-                                        [&](int done, int total) { bar.update(done, total); })
-                : render_raster(scene, options.raster, options.tracer.aovs, film, options.output);
+        effects
+            ? render_raster_effects(
+                  scene, options.raster, options.raster_effects, options.tracer.aovs, options.seed,
+                  film, options.output, [&](int done, int total) { bar.update(done, total); },
+                  &InterruptGuard::requested(), options.tracer.time_limit_s)
+            : render_raster(scene, options.raster, options.tracer.aovs, film, options.output);
     bar.finish();
-    report_write(options.output,
-                 write_image(options.output, film.to_image(), image_write_options(options.display)),
-                 options.quiet);
+    finish_render(options, film, r.progress);
     if (!options.quiet) {
       for (const std::string& w : r.warnings) std::fprintf(stderr, "warning: %s\n", w.c_str());
-      std::fprintf(stderr, "rendered %s: %dx%d (raster) in %s\n", scene.name.c_str(), options.width,
-                   options.height, format_seconds(r.seconds).c_str());
+      std::fprintf(stderr, "rendered %s: %dx%d (raster) in %s%s\n", scene.name.c_str(),
+                   options.width, options.height, format_seconds(r.seconds).c_str(),
+                   partial_note(r.progress).c_str());
     }
     std::printf("%s\n", options.output.c_str());
     for (const std::string& path : r.aov_paths) std::printf("%s\n", path.c_str());
@@ -139,8 +156,8 @@ void run_render(RenderOptions options) {
   }
   auto device = std::make_shared<EmbreeDevice>();
   TraceScene trace_scene(scene, device);
-  InterruptGuard interrupt;
-  RenderSettings settings{.samples_per_pixel = samples_per_pixel(options.tracer, options.spp),
+  const int requested_spp = samples_per_pixel(options.tracer, options.spp);
+  RenderSettings settings{.samples_per_pixel = requested_spp,
                           .seed = options.seed,
                           .sampler = sampler_type(options.tracer),
                           .time_limit_s = options.tracer.time_limit_s,
@@ -153,20 +170,26 @@ void run_render(RenderOptions options) {
       [&](int done, int total) { bar.update(done, total); }, aovs ? &*aovs : nullptr);
   bar.finish();
 
-  report_write(options.output,
-               write_image(options.output, film.to_image(), image_write_options(options.display)),
-               options.quiet);
+  // Without --spp, a time limit asks for as many samples as fit: reaching it completes the render.
+  const bool open_ended = requested_spp != options.spp;
+  RenderProgress progress{.end = stats.cancelled                ? RenderEnd::kInterrupted
+                                 : stats.partial && !open_ended ? RenderEnd::kTimeLimit
+                                                                : RenderEnd::kComplete,
+                          .done = stats.samples_per_pixel,
+                          .requested = requested_spp,
+                          .unit = "samples per pixel"};
+  finish_render(options, film, progress);
   if (!options.quiet)
     std::fprintf(stderr, "rendered %s: %dx%d, %d spp (%s) in %s (%.2f Mrays/s)%s\n",
                  scene.name.c_str(), options.width, options.height, stats.samples_per_pixel,
                  options.tracer.renderer.c_str(), format_seconds(stats.seconds).c_str(),
                  stats.seconds > 0 ? stats.rays.total() / stats.seconds * 1e-6 : 0.0,
-                 stats.cancelled ? " [partial: interrupted]"
-                 : stats.partial ? " [partial: time limit]"
-                                 : "");
+                 progress.partial()            ? partial_note(progress).c_str()
+                 : open_ended && stats.partial ? " [time limit reached]"
+                                               : "");
   std::printf("%s\n", options.output.c_str());
   if (aovs)
-    for (const std::string& path : write_aovs(options.output, *aovs))
+    for (const std::string& path : write_aovs(options.output, *aovs, partial_metadata(progress)))
       std::printf("%s\n", path.c_str());
 }
 

@@ -79,12 +79,24 @@ int samples_per_pixel(const TracerOptions& o, int spp) {
   return o.time_limit_s > 0 && !spp_given ? std::numeric_limits<int>::max() / 2 : spp;
 }
 
-std::vector<std::string> write_aovs(const std::string& output, const AovBuffers& aovs) {
+std::vector<std::string> aov_paths(const std::string& output, const std::string& renderer) {
+  std::string stem = output.substr(0, output.find_last_of('.'));
+  std::vector<std::string> paths;
+  for (const char* name : {"albedo", "normal", "depth", "id"})
+    if (renderer != "raster" || std::string(name) != "albedo")
+      paths.push_back(stem + "." + name + ".exr");
+  return paths;
+}
+
+std::vector<std::string> write_aovs(const std::string& output, const AovBuffers& aovs,
+                                    const ImageMetadata& metadata) {
   std::string stem = output.substr(0, output.find_last_of('.'));
   std::vector<std::string> paths;
   auto write = [&](const char* name, const Image& image) {
     paths.push_back(stem + "." + name + ".exr");
-    write_image(paths.back(), image);
+    ImageWriteOptions write_options;
+    write_options.metadata = metadata;
+    write_image(paths.back(), image, write_options);
   };
   write("albedo", aovs.albedo());
   write("normal", aovs.normal());

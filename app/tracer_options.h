@@ -9,6 +9,7 @@
 #include <CLI/CLI.hpp>
 
 #include "obscura/film/aov_buffers.h"
+#include "obscura/io/image_io.h"
 #include "obscura/math/sampler.h"
 #include "obscura/trace/integrator.h"
 
@@ -32,7 +33,10 @@ std::unique_ptr<Integrator> make_integrator(const TracerOptions& options);
 // With --time-limit and no --spp, samples are unlimited (until the time is up).
 int samples_per_pixel(const TracerOptions& options, int spp);
 // Writes the AOV images beside `output` (render.png → render.albedo.exr, …); returns the paths.
-std::vector<std::string> write_aovs(const std::string& output, const AovBuffers& aovs);
+std::vector<std::string> write_aovs(const std::string& output, const AovBuffers& aovs,
+                                    const ImageMetadata& metadata = {});
+// The files --aovs writes beside `output` for a renderer ("raster" writes no albedo).
+std::vector<std::string> aov_paths(const std::string& output, const std::string& renderer);
 
 // While alive, SIGINT (Ctrl-C) sets `requested()` instead of killing the process, so the
 // render stops and the image rendered so far is still written. A second Ctrl-C kills.

@@ -82,6 +82,19 @@ TEST_F(OutputIsInput, JsonSceneTextureAndEnvironmentMapsAreRefused) {
   expect_refused("", path("sky.exr"), "sky.exr", "--environment " + path("sky.exr"));
 }
 
+TEST_F(OutputIsInput, AovBesideTheOutputIsRefusedWhenItIsAnInput) {
+  // --aovs writes <stem>.albedo/.normal/.depth/.id.exr: an environment map of that name is refused
+  // before anything is rendered, for both renderers.
+  Image sky(8, 4, 3);
+  sky.data.assign(sky.data.size(), 0.5f);
+  write_image(path("out.depth.exr"), sky);
+  for (const char* renderer : {"path", "raster"})
+    expect_refused("", path("out.png"), "out.depth.exr",
+                   std::string("--aovs --renderer ") + renderer + " --environment " +
+                       path("out.depth.exr"));
+  EXPECT_FALSE(fs::exists(path("out.png")));
+}
+
 TEST_F(OutputIsInput, LoadersRecordEveryFileTheyRead) {
   Scene scene = load_scene_file(path("BoxTextured.gltf"));
   auto recorded = [&](const std::string& name) {

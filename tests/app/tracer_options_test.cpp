@@ -41,25 +41,6 @@ TEST_F(TracerCli, UnknownRendererOrSamplerIsAUsageError) {
   EXPECT_EQ(r.exit_code, 2);
 }
 
-TEST_F(TracerCli, TimeLimitStopsAndMarksThePartialImage) {
-  // Without --spp, a time limit renders passes until the time is up.
-  auto r = test::run_cli("render --width 32 --height 32 --time-limit 0.5 -o " + path("t.exr"));
-  ASSERT_EQ(r.exit_code, 0) << r.output;
-  EXPECT_NE(r.output.find("[partial: time limit]"), std::string::npos) << r.output;
-  Image image = read_image(path("t.exr"));
-  EXPECT_GT(image.rgb(16, 16).g, 0.f);
-}
-
-TEST_F(TracerCli, InterruptWritesTheImageRenderedSoFar) {
-  // Ctrl-C (SIGINT) during a long render: the image is still written, the summary says partial.
-  auto r = test::run_cli("render --width 64 --height 64 --spp 100000 -o " + path("i.exr") +
-                         " 2>&1 & sleep 2; kill -INT $!; wait $!");
-  ASSERT_EQ(r.exit_code, 0) << r.output;
-  EXPECT_NE(r.output.find("[partial: interrupted]"), std::string::npos) << r.output;
-  Image image = read_image(path("i.exr"));
-  EXPECT_GT(image.rgb(32, 32).g, 0.f);
-}
-
 TEST_F(TracerCli, AovsAreWrittenBesideTheImage) {
   auto r = test::run_cli("render --width 16 --height 16 --spp 1 --aovs -o " + path("a.png"));
   ASSERT_EQ(r.exit_code, 0) << r.output;

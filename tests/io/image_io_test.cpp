@@ -292,7 +292,9 @@ TEST_F(ImageFormats, Y4mHasHeaderAndPlanes) {
 
   // A sequence through the writer: two frames.
   DisplayImage frame_codes = develop(pixels_of(im), {});
-  Y4mWriter writer(path("seq.y4m"), 4, 2, {.fps_numerator = 30});
+  Y4mSettings thirty_fps;
+  thirty_fps.fps_numerator = 30;
+  Y4mWriter writer(path("seq.y4m"), 4, 2, thirty_fps);
   writer.write_frame(frame_codes);
   writer.write_frame(frame_codes);
   writer.close();

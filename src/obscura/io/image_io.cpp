@@ -77,6 +77,11 @@ std::vector<float> sanitized(const Image& image, float largest, DevelopStats& st
   return data;
 }
 
+void add_metadata(OIIO::ImageSpec& spec, const ImageMetadata& metadata) {
+  if (!metadata.description.empty()) spec.attribute("ImageDescription", metadata.description);
+  for (const auto& [name, value] : metadata.attributes) spec.attribute(name, value);
+}
+
 std::string colorspace_attribute(DisplaySpace d) {
   switch (d) {
     case DisplaySpace::kSrgb:
@@ -131,6 +136,7 @@ WriteReport write_linear(const std::string& path, ImageFormat format, const Imag
     spec.channelnames = image.channel_names;
   spec.attribute("oiio:ColorSpace", "Linear");
   spec.attribute("Software", "Obscura " OBSCURA_VERSION);
+  add_metadata(spec, options.metadata);
   if (format == ImageFormat::kExr) {
     // The film's working space: Rec.709 primaries, D65 white (x, y of R, G, B, white).
     const float chromaticities[8] = {0.64f, 0.33f, 0.30f, 0.60f, 0.15f, 0.06f, 0.3127f, 0.3290f};
@@ -156,6 +162,10 @@ ImageFormat image_format_for_path(const std::string& path) {
   if (ext == ".y4m") return ImageFormat::kY4m;
   throw Error(path, "unsupported image extension '" + ext +
                         "'; expected .png, .jpg, .tif, .exr, .hdr, .pfm or .y4m");
+}
+
+bool format_keeps_metadata(ImageFormat f) {
+  return f != ImageFormat::kHdr && f != ImageFormat::kPfm;
 }
 
 bool is_display_format(ImageFormat f) {
@@ -188,11 +198,15 @@ void check_output_path(const std::string& path) {
     throw Error(path, "output file exists and is not writable");
 }
 
-void write_display_image(const std::string& path, const DisplayImage& image) {
+void write_display_image(const std::string& path, const DisplayImage& image,
+                         const ImageMetadata& metadata) {
   check_output_path(path);
   ImageFormat format = image_format_for_path(path);
   if (format == ImageFormat::kY4m) {
-    Y4mWriter writer(path, image.width, image.height);
+    Y4mSettings settings;
+    for (const auto& [name, value] : metadata.attributes)
+      settings.header_tags.push_back(y4m_tag(name, value));
+    Y4mWriter writer(path, image.width, image.height, settings);
     writer.write_frame(image);
     writer.close();
     return;
@@ -211,6 +225,7 @@ void write_display_image(const std::string& path, const DisplayImage& image) {
   spec.attribute("obscura:bits", image.bits);
   spec.attribute("Software", "Obscura " OBSCURA_VERSION);
   if (format == ImageFormat::kJpeg) spec.attribute("Compression", "jpeg:95");
+  add_metadata(spec, metadata);
   std::vector<uint16_t> codes(image.codes.size());
   for (size_t i = 0; i < codes.size(); ++i)
     codes[i] =
@@ -237,7 +252,7 @@ WriteReport write_image(const std::string& path, const Image& image,
   if (format == ImageFormat::kJpeg || format == ImageFormat::kY4m)
     o.display.bits = std::min(o.display.bits, 8);
   DisplayImage developed = develop(pixels_of(image), o.display);
-  write_display_image(path, developed);
+  write_display_image(path, developed, options.metadata);
   return {developed.stats};
 }
 

@@ -15,6 +15,7 @@
 #pragma once
 
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "obscura/color/develop.h"
@@ -34,9 +35,21 @@ bool is_display_format(ImageFormat f);
 // directory, and a parent directory that exists and is writable. Throws obscura::Error.
 void check_output_path(const std::string& path);
 
+// Text recorded in the file, where its format has room for it: EXR and PNG keep the description
+// and every attribute; TIFF and JPEG the description only; Y4M the attributes, as X tags of its
+// stream header; HDR and PFM nothing (format_keeps_metadata tells which).
+struct ImageMetadata {
+  std::string description;                                      // written as "ImageDescription"
+  std::vector<std::pair<std::string, std::string>> attributes;  // e.g. {"obscura:partial", "…"}
+  bool empty() const { return description.empty() && attributes.empty(); }
+};
+// Whether a file of this format can record ImageMetadata (some of it, as above).
+bool format_keeps_metadata(ImageFormat f);
+
 struct ImageWriteOptions {
   DisplaySettings display;  // for display formats; default: sRGB, clamp, 8 bits
   bool exr_half = false;    // EXR: 16-bit half instead of 32-bit float
+  ImageMetadata metadata;
 };
 
 struct WriteReport {
@@ -53,7 +66,8 @@ WriteReport write_image(const std::string& path, const Image& linear_image,
                         const ImageWriteOptions& options = {});
 
 // Writes already developed codes to a display format (PNG, JPEG, TIFF).
-void write_display_image(const std::string& path, const DisplayImage& image);
+void write_display_image(const std::string& path, const DisplayImage& image,
+                         const ImageMetadata& metadata = {});
 
 // Reads an image as stored: 8/16-bit files give values in [0, 1] still encoded (no decoding is
 // applied), float files their float values. Formats: PNG, JPEG, EXR, HDR, TIFF, PFM, and anything

@@ -1,5 +1,6 @@
 #include "obscura/io/y4m_writer.h"
 
+#include <cctype>
 #include <vector>
 
 #include "obscura/color/quantize.h"
@@ -24,8 +25,22 @@ Y4mWriter::Y4mWriter(const std::string& path, int width, int height, const Y4mSe
                                                                          : "C420jpeg";
   file_->write("YUV4MPEG2 W" + std::to_string(width) + " H" + std::to_string(height) + " F" +
                std::to_string(settings.fps_numerator) + ":" +
-               std::to_string(settings.fps_denominator) + " Ip A1:1 " + chroma + " XCOLORRANGE=" +
-               (settings.range == YcbcrRange::kLimited ? "LIMITED" : "FULL") + "\n");
+               std::to_string(settings.fps_denominator) + " Ip A1:1 " + chroma +
+               " XCOLORRANGE=" + (settings.range == YcbcrRange::kLimited ? "LIMITED" : "FULL"));
+  for (const std::string& tag : settings.header_tags) {
+    if (tag.empty() || tag.find_first_of(" \n") != std::string::npos)
+      throw Error(path, "Y4M header tag '" + tag + "' is empty or holds a space or line break");
+    file_->write(" X" + tag);
+  }
+  file_->write("\n");
+}
+
+std::string y4m_tag(const std::string& name, const std::string& value) {
+  std::string tag;
+  for (char c : name) tag += c == ':' || c == ' ' ? '_' : char(std::toupper((unsigned char)c));
+  tag += '=';
+  for (char c : value) tag += c == ' ' || c == '\n' ? '_' : c;
+  return tag;
 }
 
 Y4mWriter::~Y4mWriter() = default;

@@ -5,6 +5,7 @@
 
 #include <memory>
 #include <string>
+#include <vector>
 
 #include "obscura/color/chroma_subsampling.h"
 #include "obscura/color/develop.h"
@@ -17,7 +18,15 @@ struct Y4mSettings {
   ChromaSubsampling subsampling = ChromaSubsampling::k420;
   YcbcrMatrix matrix = YcbcrMatrix::kBt709;
   YcbcrRange range = YcbcrRange::kLimited;  // what players assume unless told otherwise
+  // Extra X parameters of the stream header (without the X), e.g. "OBSCURA_PARTIAL=interrupted";
+  // readers that do not know a tag skip it.
+  std::vector<std::string> header_tags;
 };
+
+// An X-tag body for a named text value: the name upper-cased with ':' as '_', spaces in the value
+// as '_' (a header parameter cannot hold spaces). {"obscura:partial", "time limit"} gives
+// "OBSCURA_PARTIAL=time_limit".
+std::string y4m_tag(const std::string& name, const std::string& value);
 
 class Y4mWriter {
  public:

@@ -1,6 +1,8 @@
 #include "obscura/raster/accumulation.h"
 
+#include <chrono>
 #include <cmath>
+#include <limits>
 #include <string>
 
 #include "obscura/math/error.h"
@@ -36,26 +38,40 @@ std::vector<LensTimeSample> accumulation_samples(const Camera& camera, int count
   return samples;
 }
 
-void accumulate(const Camera& camera, const AccumulationSettings& settings,
-                const FrameRenderer& render_frame, Film& film, const ProgressCallback& progress,
-                RenderTarget* middle_frame) {
+AccumulationStats accumulate(const Camera& camera, const AccumulationSettings& settings,
+                             const FrameRenderer& render_frame, Film& film,
+                             const ProgressCallback& progress, RenderTarget* middle_frame) {
   camera.validate();
   if (!camera.has_projection_matrix())
     throw Error("accumulation.camera", "the rasterizer needs a perspective or orthographic camera");
+  if (!(settings.time_limit_s >= 0)) throw Error("accumulation.time_limit", "must be ≥ 0 seconds");
   std::vector<LensTimeSample> samples =
       accumulation_samples(camera, settings.samples, settings.seed);
   if (!settings.depth_of_field)
     for (LensTimeSample& s : samples) s.lens_sample = {0.5, 0.5};
-  // The frame kept: the one nearest mid-shutter (the first of equals).
+  // The frame kept: the one nearest mid-shutter (the first of equals) among those drawn, so a
+  // render stopped early still has one.
   const double middle = camera.shutter.time_at(0.5);
-  int kept_frame = 0;
-  for (int i = 1; i < settings.samples; ++i)
-    if (std::abs(samples[size_t(i)].time_s - middle) <
-        std::abs(samples[size_t(kept_frame)].time_s - middle))
-      kept_frame = i;
+  double kept_distance = std::numeric_limits<double>::infinity();
 
+  const auto start = std::chrono::steady_clock::now();
+  auto elapsed = [&] {
+    return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  };
+  AccumulationStats stats;
   RenderTarget target(film.width(), film.height(), settings.msaa_samples, settings.aovs);
   for (int i = 0; i < settings.samples; ++i) {
+    if (i > 0 && settings.cancel && settings.cancel->load()) {
+      stats.cancelled = true;
+      break;
+    }
+    if (i > 0 && settings.time_limit_s > 0) {
+      double now = elapsed();
+      if (now + now / i > settings.time_limit_s) {
+        stats.time_limited = true;
+        break;
+      }
+    }
     FrameParameters frame;
     frame.index = i;
     frame.sample = samples[size_t(i)];
@@ -63,9 +79,15 @@ void accumulate(const Camera& camera, const AccumulationSettings& settings,
     target.clear();
     render_frame(frame, target);
     target.accumulate_into(film);
-    if (middle_frame && i == kept_frame) *middle_frame = target;
+    double distance = std::abs(frame.sample.time_s - middle);
+    if (middle_frame && distance < kept_distance) {
+      *middle_frame = target;
+      kept_distance = distance;
+    }
+    stats.frames = i + 1;
     if (progress) progress(i + 1, settings.samples);
   }
+  return stats;
 }
 
 bool has_motion_blur(const Camera& camera, bool scene_moves) {

@@ -15,6 +15,7 @@
 // bit-identical for any thread count.
 #pragma once
 
+#include <atomic>
 #include <cstdint>
 #include <functional>
 #include <vector>
@@ -50,6 +51,19 @@ struct AccumulationSettings {
   // Off: every frame looks through the lens centre (motion blur only, or a sharp image for a
   // post-process), with the camera's framing unchanged.
   bool depth_of_field = true;
+  // Stopping early (after at least one frame): when *cancel becomes true (Ctrl-C), or before a
+  // frame that would end past time_limit_s seconds (0 = none), predicted from the mean frame time.
+  const std::atomic<bool>* cancel = nullptr;
+  double time_limit_s = 0;
+};
+
+// What accumulate() did: frames drawn (== settings.samples unless it stopped early) and why it
+// stopped early, if it did.
+struct AccumulationStats {
+  int frames = 0;
+  bool cancelled = false;
+  bool time_limited = false;
+  bool partial() const { return cancelled || time_limited; }
 };
 
 // Draws one frame into `target`, which arrives cleared (black, depth 1) and has the film's size.
@@ -63,13 +77,14 @@ std::vector<LensTimeSample> accumulation_samples(const Camera& camera, int count
 
 // Renders settings.samples frames through `render_frame` and adds their mean to `film` (each
 // pixel receives one sample of weight 1 per frame). With `middle_frame` given, it receives a
-// copy of the render target of the frame nearest mid-shutter: its view depth for a
-// depth-of-field post-process, its AOVs for the id/depth/normal outputs. Throws obscura::Error
-// for a camera without a projection matrix or bad settings. `progress` is called after each
-// frame.
-void accumulate(const Camera& camera, const AccumulationSettings& settings,
-                const FrameRenderer& render_frame, Film& film,
-                const ProgressCallback& progress = {}, RenderTarget* middle_frame = nullptr);
+// copy of the render target of the frame nearest mid-shutter among those drawn: its view depth
+// for a depth-of-field post-process, its AOVs for the id/depth/normal outputs. Throws
+// obscura::Error for a camera without a projection matrix or bad settings. `progress` is called
+// after each frame. Stopped early, the film holds the mean of the frames drawn.
+AccumulationStats accumulate(const Camera& camera, const AccumulationSettings& settings,
+                             const FrameRenderer& render_frame, Film& film,
+                             const ProgressCallback& progress = {},
+                             RenderTarget* middle_frame = nullptr);
 
 // Whether anything blurs with motion: the shutter is open for a while and the camera or something
 // in the caller's scene moves.

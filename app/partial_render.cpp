@@ -1,0 +1,59 @@
+#include "partial_render.h"
+
+#include <cstdio>
+
+namespace obscura::app {
+
+namespace {
+
+int status_to_return = 0;
+
+const char* reason(RenderEnd end) {
+  return end == RenderEnd::kInterrupted ? "interrupted" : "time limit";
+}
+
+std::string what_was_done(const RenderProgress& p) {
+  return std::to_string(p.done) + " of " + std::to_string(p.requested) + " " + p.unit;
+}
+
+}  // namespace
+
+ImageMetadata partial_metadata(const RenderProgress& p) {
+  ImageMetadata metadata;
+  if (!p.partial()) return metadata;
+  metadata.attributes.emplace_back("obscura:partial", reason(p.end));
+  metadata.description =
+      std::string("Partial render (") +
+      (p.end == RenderEnd::kInterrupted ? "interrupted" : "stopped by the time limit") +
+      "): " + what_was_done(p);
+  return metadata;
+}
+
+std::string partial_note(const RenderProgress& p) {
+  if (!p.partial()) return "";
+  return std::string(" [partial: ") + reason(p.end) + ", " + what_was_done(p) + "]";
+}
+
+void warn_if_unmarked(const std::string& path, const RenderProgress& p, bool quiet) {
+  if (quiet || !p.partial() || format_keeps_metadata(image_format_for_path(path))) return;
+  std::fprintf(stderr,
+               "warning: %s: this format cannot record that the image is partial; only the exit "
+               "status (%d) says so\n",
+               path.c_str(), exit_status_for(p.end));
+}
+
+void set_exit_status(int status) {
+  status_to_return = status;
+}
+
+int exit_status() {
+  return status_to_return;
+}
+
+int exit_status_for(RenderEnd end) {
+  return end == RenderEnd::kInterrupted ? kExitInterrupted
+         : end == RenderEnd::kTimeLimit ? kExitTimeLimit
+                                        : 0;
+}
+
+}  // namespace obscura::app
