@@ -17,7 +17,6 @@ namespace obscura::app {
 inline constexpr int64_t kMaxImageSidePx = 65536;
 inline constexpr int64_t kMaxImagePixels = int64_t(1) << 28;
 
-inline constexpr int64_t kMaxSamplesPerPixel = int64_t(1) << 20;  // tracer --spp
 inline constexpr int64_t kMaxRasterSamples = int64_t(1) << 16;    // --raster-samples
 inline constexpr int64_t kMaxTraceDepth = 1024;                   // --max-depth
 inline constexpr int64_t kMaxThreads = 4096;

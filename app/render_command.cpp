@@ -120,9 +120,6 @@ void run_render(RenderOptions options) {
       check_not_an_input(aov, scene.input_files);
   apply_scene_settings(scene.render, options);
   check_image_size(options.width, options.height, options.width_given || options.height_given);
-  if (options.spp > kMaxSamplesPerPixel)
-    throw Error("samples per pixel", "the scene asks for " + std::to_string(options.spp) +
-                                         "; at most " + std::to_string(kMaxSamplesPerPixel));
   if (!options.quiet)
     for (const std::string& w : scene.warnings) std::fprintf(stderr, "warning: %s\n", w.c_str());
   scene.camera = resolve_camera(scene, options.camera, options.width, options.height);

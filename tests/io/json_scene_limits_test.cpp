@@ -99,6 +99,12 @@ TEST_F(JsonSceneLimits, SizesMustBePositiveAndFinite) {
                {"number overflow", "1e400"});  // not even a double: malformed JSON
 }
 
+TEST_F(JsonSceneLimits, RenderSettingsStayWithinTheCommandLinesRanges) {
+  // The same range as --spp (2^20): a scene cannot ask for what the command line refuses.
+  expect_error(R"({"render": {"spp": 2000000}})", {"$.render.spp", "1048576"});
+  expect_error(R"({"render": {"spp": 0}})", {"$.render.spp"});
+}
+
 TEST_F(JsonSceneLimits, ReflectancesStayWithinOne) {
   expect_error(R"({"materials": {"m": {"type": "diffuse", "reflectance": 1e30}}})",
                {"$.materials.m.reflectance", "at most 1"});

@@ -57,7 +57,8 @@ class JsonSceneReader {
   void read_render(JsonReader json) {
     if (json.has("width")) scene_.render.width = json.integer("width", 0, 1, 1 << 16);
     if (json.has("height")) scene_.render.height = json.integer("height", 0, 1, 1 << 16);
-    if (json.has("spp")) scene_.render.samples_per_pixel = json.integer("spp", 0, 1, 1 << 24);
+    if (json.has("spp"))
+      scene_.render.samples_per_pixel = json.integer("spp", 0, 1, kMaxSamplesPerPixel);
     if (json.has("seed")) scene_.render.seed = uint64_t(json.integer("seed", 0, 0, 1 << 30));
     json.finish();
   }

@@ -21,6 +21,9 @@
 
 namespace obscura {
 
+// The most samples per pixel a scene file or the command line may ask for (2^20).
+inline constexpr int kMaxSamplesPerPixel = 1 << 20;
+
 // Render settings a scene file may suggest; the command line overrides them.
 struct SceneRenderSettings {
   std::optional<int> width, height;  // pixels
