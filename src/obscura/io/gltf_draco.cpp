@@ -3,7 +3,10 @@
 #include <draco/compression/decode.h>
 #include <tiny_gltf.h>
 
+#include <algorithm>
+#include <cmath>
 #include <cstring>
+#include <limits>
 #include <map>
 #include <memory>
 #include <new>
@@ -34,8 +37,47 @@ bool convert(const draco::PointAttribute& attribute, uint32_t points, int compon
   return true;
 }
 
+// Float values into a normalized integer type: clamped to [0, 1] (unsigned) or [−1, 1] and
+// scaled by the type's maximum, rounded (glTF 2.0 §3.11's inverse).
+template <typename T>
+bool normalize(const draco::PointAttribute& attribute, uint32_t points, int components,
+               unsigned char* out) {
+  std::vector<float> element(static_cast<size_t>(components));
+  constexpr float kMax = float(std::numeric_limits<T>::max());
+  constexpr float kMin = std::numeric_limits<T>::is_signed ? -1.f : 0.f;
+  for (uint32_t i = 0; i < points; ++i) {
+    draco::AttributeValueIndex value = attribute.mapped_index(draco::PointIndex(i));
+    if (value.value() >= attribute.size() ||
+        !attribute.ConvertValue<float>(value, int8_t(components), element.data()))
+      return false;
+    for (int c = 0; c < components; ++c) {
+      float v = element[size_t(c)];
+      if (!std::isfinite(v)) return false;
+      T q = T(std::lround(std::clamp(v, kMin, 1.f) * kMax));
+      std::memcpy(out + (size_t(i) * size_t(components) + size_t(c)) * sizeof(T), &q, sizeof(T));
+    }
+  }
+  return true;
+}
+
 bool convert_attribute(const draco::PointAttribute& attribute, uint32_t points, int components,
-                       int component_type, unsigned char* out) {
+                       int component_type, bool normalized, unsigned char* out) {
+  // Draco dequantizes to floats unless the encoder stored integers; a normalized accessor over
+  // float values wants them quantized back. Integers are copied as they are (range-checked).
+  bool from_float =
+      attribute.data_type() == draco::DT_FLOAT32 || attribute.data_type() == draco::DT_FLOAT64;
+  if (from_float && normalized) switch (component_type) {
+      case TINYGLTF_COMPONENT_TYPE_BYTE:
+        return normalize<int8_t>(attribute, points, components, out);
+      case TINYGLTF_COMPONENT_TYPE_UNSIGNED_BYTE:
+        return normalize<uint8_t>(attribute, points, components, out);
+      case TINYGLTF_COMPONENT_TYPE_SHORT:
+        return normalize<int16_t>(attribute, points, components, out);
+      case TINYGLTF_COMPONENT_TYPE_UNSIGNED_SHORT:
+        return normalize<uint16_t>(attribute, points, components, out);
+      default:
+        return false;
+    }
   switch (component_type) {
     case TINYGLTF_COMPONENT_TYPE_FLOAT:
       return convert<float>(attribute, points, components, out);
@@ -224,7 +266,8 @@ std::vector<unsigned char> DracoDecoder::attribute(const draco::Mesh& mesh, int 
   uint64_t bytes = points * uint64_t(components) * uint64_t(component_size);
   buffers_.charge(bytes, file_ + ": " + where);
   std::vector<unsigned char> out(bytes);
-  if (!convert_attribute(*attribute, uint32_t(points), components, a.componentType, out.data()))
+  if (!convert_attribute(*attribute, uint32_t(points), components, a.componentType, a.normalized,
+                         out.data()))
     fail(where, "the Draco attribute's values do not fit the accessor's component type");
   return out;
 }

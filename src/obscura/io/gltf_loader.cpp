@@ -14,6 +14,7 @@
 #include "obscura/io/camera_mapping.h"
 #include "obscura/io/gltf_accessor.h"
 #include "obscura/io/gltf_animation.h"
+#include "obscura/io/gltf_compression_prepass.h"
 #include "obscura/io/gltf_decompressed_buffers.h"
 #include "obscura/io/gltf_draco.h"
 #include "obscura/io/gltf_feature_warnings.h"
@@ -593,8 +594,8 @@ Scene load_gltf_bytes(std::span<const uint8_t> bytes, const std::string& name,
   std::vector<std::string> files_read;
   loader.SetFsCallbacks({file_exists, keep_path, read_bounded, nullptr, &files_read});
   std::string err, warn;
-  std::optional<std::vector<uint8_t>> stubbed = stub_absent_meshopt_fallbacks(bytes);
-  if (stubbed) bytes = *stubbed;
+  std::optional<std::vector<uint8_t>> prepared = prepare_compressed_gltf(bytes);
+  if (prepared) bytes = *prepared;
   // The content decides, not the extension: binary glTF starts with the magic "glTF".
   bool binary = bytes.size() >= 4 && std::memcmp(bytes.data(), "glTF", 4) == 0;
   bool ok = false;

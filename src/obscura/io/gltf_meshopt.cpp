@@ -5,8 +5,8 @@
 
 #include <cmath>
 #include <cstring>
-#include <nlohmann/json.hpp>
 
+#include "obscura/io/gltf_compression_prepass.h"
 #include "obscura/io/gltf_decompressed_buffers.h"
 #include "obscura/math/error.h"
 
@@ -15,45 +15,6 @@ namespace obscura {
 namespace {
 
 constexpr const char* kExtension = "EXT_meshopt_compression";
-// Three zero bytes: what a stubbed fallback buffer holds (a view that reads it fails its range
-// check, or is named by decode_meshopt_buffer_views).
-constexpr const char* kStubUri = "data:application/octet-stream;base64,AAAA";
-constexpr uint32_t kGlbJson = 0x4E4F534A;  // "JSON", the first chunk's type
-
-bool is_absent_fallback(const nlohmann::json& buffer) {
-  if (!buffer.is_object() || buffer.contains("uri")) return false;
-  auto ext = buffer.find("extensions");
-  if (ext == buffer.end() || !ext->is_object()) return false;
-  auto meshopt = ext->find(kExtension);
-  if (meshopt == ext->end() || !meshopt->is_object()) return false;
-  auto fallback = meshopt->find("fallback");
-  return fallback != meshopt->end() && fallback->is_boolean() && fallback->get<bool>();
-}
-
-// Gives each absent fallback buffer of `doc` the stub; false when there is none.
-bool stub_buffers(nlohmann::json& doc) {
-  if (!doc.is_object()) return false;
-  auto buffers = doc.find("buffers");
-  if (buffers == doc.end() || !buffers->is_array()) return false;
-  bool changed = false;
-  for (nlohmann::json& buffer : *buffers)
-    if (is_absent_fallback(buffer)) {
-      buffer["uri"] = kStubUri;
-      buffer["byteLength"] = 3;
-      changed = true;
-    }
-  return changed;
-}
-
-uint32_t read_u32(const uint8_t* p) {
-  uint32_t v;
-  std::memcpy(&v, p, 4);
-  return v;
-}
-void append_u32(std::vector<uint8_t>& out, uint32_t v) {
-  const auto* p = reinterpret_cast<const uint8_t*>(&v);
-  out.insert(out.end(), p, p + 4);
-}
 
 // The parts of the extension object on one bufferView, range-checked.
 struct Compressed {
@@ -181,43 +142,10 @@ std::vector<unsigned char> decode(const Compressed& c, const std::string& at,
 }
 
 bool is_stub(const tinygltf::Buffer& buffer) {
-  return buffer.uri == kStubUri && buffer.extensions.count(kExtension);
+  return buffer.uri == kAbsentFallbackUri && buffer.extensions.count(kExtension);
 }
 
 }  // namespace
-
-std::optional<std::vector<uint8_t>> stub_absent_meshopt_fallbacks(std::span<const uint8_t> bytes) {
-  static constexpr std::string_view kName = "EXT_meshopt_compression";
-  std::string_view text(reinterpret_cast<const char*>(bytes.data()), bytes.size());
-  if (text.find(kName) == std::string_view::npos) return std::nullopt;  // the common case
-
-  bool binary = bytes.size() >= 4 && std::memcmp(bytes.data(), "glTF", 4) == 0;
-  if (!binary) {
-    nlohmann::json doc = nlohmann::json::parse(text, nullptr, /*allow_exceptions=*/false);
-    if (doc.is_discarded() || !stub_buffers(doc)) return std::nullopt;
-    std::string out = doc.dump();
-    return std::vector<uint8_t>(out.begin(), out.end());
-  }
-  // GLB: a 12-byte header, the JSON chunk, then an optional BIN chunk (glTF 2.0 §4.4).
-  if (bytes.size() < 20) return std::nullopt;
-  uint64_t json_size = read_u32(bytes.data() + 12);
-  if (read_u32(bytes.data() + 16) != kGlbJson || 20 + json_size > bytes.size()) return std::nullopt;
-  nlohmann::json doc = nlohmann::json::parse(text.substr(20, json_size), nullptr, false);
-  if (doc.is_discarded() || !stub_buffers(doc)) return std::nullopt;
-  std::string json_text = doc.dump();
-  json_text.resize((json_text.size() + 3) / 4 * 4, ' ');
-  std::span<const uint8_t> rest = bytes.subspan(20 + json_size);
-  std::vector<uint8_t> out(bytes.begin(), bytes.begin() + 8);
-  append_u32(out, 0);  // total length, filled below
-  append_u32(out, uint32_t(json_text.size()));
-  append_u32(out, kGlbJson);
-  out.insert(out.end(), json_text.begin(), json_text.end());
-  out.insert(out.end(), rest.begin(), rest.end());
-  if (out.size() > UINT32_MAX) return std::nullopt;
-  uint32_t total = uint32_t(out.size());
-  std::memcpy(out.data() + 8, &total, 4);
-  return out;
-}
 
 void decode_meshopt_buffer_views(tinygltf::Model& model, const std::string& file,
                                  GltfDecompressedBuffers& buffers) {

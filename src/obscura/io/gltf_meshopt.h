@@ -1,12 +1,9 @@
 // EXT_meshopt_compression: bufferViews whose bytes are stored compressed by meshoptimizer, in
-// another buffer, with an uncompressed "fallback" buffer that may be absent from the file.
+// another buffer, with an uncompressed "fallback" buffer that may be absent from the file (see
+// gltf_compression_prepass.h for how such a file gets past tinygltf).
 #pragma once
 
-#include <cstdint>
-#include <optional>
-#include <span>
 #include <string>
-#include <vector>
 
 namespace tinygltf {
 class Model;
@@ -15,12 +12,6 @@ class Model;
 namespace obscura {
 
 class GltfDecompressedBuffers;
-
-// tinygltf refuses a buffer without a uri in a .gltf (and hands a GLB's BIN chunk to every such
-// buffer), yet an EXT_meshopt_compression fallback buffer has no uri when its data was left out.
-// Returns the file (JSON or GLB) with each such buffer given a tiny data URI instead, or nothing
-// when the file has none (or is not well-formed enough to tell: tinygltf then says why).
-std::optional<std::vector<uint8_t>> stub_absent_meshopt_fallbacks(std::span<const uint8_t> bytes);
 
 // Decodes every bufferView that carries EXT_meshopt_compression (modes ATTRIBUTES, TRIANGLES,
 // INDICES; filters NONE, OCTAHEDRAL, QUATERNION, EXPONENTIAL) into a new buffer and points the
