@@ -310,7 +310,11 @@ void decode_draco_primitives(tinygltf::Model& model, const std::string& file,
   for (size_t m = 0; m < model.meshes.size(); ++m)
     for (size_t p = 0; p < model.meshes[m].primitives.size(); ++p) {
       tinygltf::Primitive& primitive = model.meshes[m].primitives[p];
-      if (primitive.extensions.count(kExtension))
+      // Draco point clouds (mode POINTS) are not decoded: the loader skips points anyway.
+      bool triangles = primitive.mode == TINYGLTF_MODE_TRIANGLES ||
+                       primitive.mode == TINYGLTF_MODE_TRIANGLE_STRIP ||
+                       primitive.mode == TINYGLTF_MODE_TRIANGLE_FAN;
+      if (triangles && primitive.extensions.count(kExtension))
         decoder.decode_primitive(
             primitive, "meshes[" + std::to_string(m) + "].primitives[" + std::to_string(p) + "]");
     }
