@@ -154,5 +154,71 @@ TEST_F(GltfHostile, QuantizedAndNormalizedAttributesDecodeAsTheSpecSays) {
   EXPECT_FLOAT_EQ(m.normals[2].z, -1.f);  // −127 / 127
 }
 
+TEST_F(GltfHostile, QuantizedTexcoordsAndTangentsDecodeAsTheSpecSays) {
+  // KHR_mesh_quantization also covers TEXCOORD_n (normalized or plain (UNSIGNED_)BYTE/SHORT)
+  // and TANGENT (normalized BYTE/SHORT): normalized UNSIGNED_SHORT u / 65535, plain
+  // UNSIGNED_BYTE kept as integers, normalized SHORT max(c / 32767, −1).
+  json doc = triangle();
+  std::vector<uint8_t> bytes = buffer_bytes();
+  const uint16_t uvs[6] = {0, 65535, 32768, 0, 13107, 65535};  // VEC2, stride 4
+  std::memcpy(bytes.data() + 44, uvs, sizeof uvs);
+  const uint8_t uv_bytes[12] = {0, 1, 0, 0, 2, 3, 0, 0, 255, 0, 0, 0};  // VEC2, stride 4
+  std::memcpy(bytes.data() + 56, uv_bytes, sizeof uv_bytes);
+  const int16_t tangents[12] = {32767, 0, 0, 32767, 0, -32768, 0, -32767, 0, 0, 16384, 32767};
+  std::memcpy(bytes.data() + 68, tangents, sizeof tangents);
+  set_buffer(doc, bytes);
+  doc["extensionsUsed"] = {"KHR_mesh_quantization"};
+  doc["extensionsRequired"] = {"KHR_mesh_quantization"};
+  doc["bufferViews"].push_back({{"buffer", 0}, {"byteOffset", 44}, {"byteLength", 12}});
+  doc["bufferViews"].push_back(
+      {{"buffer", 0}, {"byteOffset", 56}, {"byteLength", 12}, {"byteStride", 4}});
+  doc["bufferViews"].push_back({{"buffer", 0}, {"byteOffset", 68}, {"byteLength", 24}});
+  int uv = add_accessor(doc, {{"bufferView", 3},
+                              {"componentType", 5123},
+                              {"normalized", true},
+                              {"count", 3},
+                              {"type", "VEC2"}});
+  int tangent = add_accessor(doc, {{"bufferView", 5},
+                                   {"componentType", 5122},
+                                   {"normalized", true},
+                                   {"count", 3},
+                                   {"type", "VEC4"}});
+  auto& attributes = doc["meshes"][0]["primitives"][0]["attributes"];
+  attributes["TEXCOORD_0"] = uv;
+  attributes["TANGENT"] = tangent;
+  Scene scene = load_gltf(write("quantized-uv.gltf", doc));
+  ASSERT_EQ(scene.meshes.size(), 1u);
+  const Mesh& m = scene.meshes[0];
+  ASSERT_EQ(m.uvs.size(), 3u);
+  EXPECT_FLOAT_EQ(m.uvs[0].y, 1.f);
+  EXPECT_FLOAT_EQ(m.uvs[1].x, 32768.f / 65535);
+  EXPECT_FLOAT_EQ(m.uvs[2].x, 0.2f);  // 13107 / 65535
+  ASSERT_EQ(m.tangents.size(), 3u);
+  EXPECT_FLOAT_EQ(m.tangents[0].x, 1.f);
+  EXPECT_FLOAT_EQ(m.tangents[0].w, 1.f);
+  EXPECT_FLOAT_EQ(m.tangents[1].y, -1.f);  // −32768 clamps to −1
+  EXPECT_FLOAT_EQ(m.tangents[1].w, -1.f);
+  EXPECT_FLOAT_EQ(m.tangents[2].z, 16384.f / 32767);
+
+  // Plain (not normalized) UNSIGNED_BYTE texture coordinates keep their integer values.
+  attributes["TEXCOORD_0"] = add_accessor(
+      doc, {{"bufferView", 4}, {"componentType", 5121}, {"count", 3}, {"type", "VEC2"}});
+  Scene plain = load_gltf(write("plain-uv.gltf", doc));
+  ASSERT_EQ(plain.meshes.at(0).uvs.size(), 3u);
+  EXPECT_EQ(plain.meshes[0].uvs[1].x, 2.f);
+  EXPECT_EQ(plain.meshes[0].uvs[1].y, 3.f);
+  EXPECT_EQ(plain.meshes[0].uvs[2].x, 255.f);
+}
+
+TEST_F(GltfHostile, AnUnsupportedOptionalExtensionIsOneWarningNamingIt) {
+  json doc = triangle();
+  doc["extensionsUsed"] = {"EXT_obscura_unknown_test"};
+  doc["materials"] = {{{"extensions", {{"EXT_obscura_unknown_test", json::object()}}}}};
+  doc["meshes"][0]["primitives"][0]["material"] = 0;
+  Scene scene = load_gltf(write("optional.gltf", doc));
+  EXPECT_EQ(count_warnings(scene, "EXT_obscura_unknown_test"), 1);
+  EXPECT_TRUE(has_warning(scene, "optional.gltf: extension EXT_obscura_unknown_test"));
+}
+
 }  // namespace
 }  // namespace obscura

@@ -488,13 +488,12 @@ TEST_F(GltfBadInput, NanPositions) {
                {"nan.gltf", "POSITION", "vertex 1", "not finite"});
 }
 
-TEST_F(GltfBadInput, MissingTextureIsOneWarningAndTheFactorAlone) {
-  // BoxTextured.gltf copied without its PNG (and with its .bin): it still loads, its material
-  // keeps its base colour factor without a texture, and one warning names the missing file.
+TEST_F(GltfBadInput, MissingTextureIsOneWarningAndAVisiblePlaceholder) {
+  // BoxTextured.gltf copied without its PNG (and with its .bin): it still loads, its base colour
+  // shows the missing-image checker (gltf_missing_image_test.cpp), and one warning names the file.
   std::filesystem::copy(sample("BoxTextured/glTF/BoxTextured.gltf"), dir + "/BoxTextured.gltf");
   std::filesystem::copy(sample("BoxTextured/glTF/BoxTextured0.bin"), dir + "/BoxTextured0.bin");
   Scene scene = load_gltf(dir + "/BoxTextured.gltf");
-  EXPECT_TRUE(scene.textures.empty());
   int warnings = 0;
   for (const std::string& w : scene.warnings)
     if (w.find("CesiumLogoFlat.png") != std::string::npos) {
@@ -504,7 +503,9 @@ TEST_F(GltfBadInput, MissingTextureIsOneWarningAndTheFactorAlone) {
   EXPECT_EQ(warnings, 1);
   ASSERT_FALSE(scene.materials.empty());
   const auto& mr = std::get<MetallicRoughnessMaterial>(scene.materials[0].model);
-  EXPECT_FALSE(mr.base_color_texture.valid());
+  ASSERT_TRUE(mr.base_color_texture.valid());
+  EXPECT_EQ(scene.textures.at(size_t(mr.base_color_texture.texture)).name,
+            "missing-image placeholder");
 }
 
 TEST_F(GltfBadInput, CliReportsTheErrorAndExitsOne) {

@@ -218,10 +218,10 @@ TEST_F(GltfHostile, VersionsMustBe2) {
 
 TEST_F(GltfHostile, RequiredExtensionsMustBeSupportedUsedOnesWarnOnce) {
   json doc = triangle();
-  doc["extensionsRequired"] = {"KHR_draco_mesh_compression"};
-  doc["extensionsUsed"] = {"KHR_draco_mesh_compression"};
-  expect_error(doc, "draco.gltf",
-               {"draco.gltf", "extensionsRequired[0]", "KHR_draco_mesh_compression"});
+  doc["extensionsRequired"] = {"MSFT_lod"};
+  doc["extensionsUsed"] = {"MSFT_lod"};
+  expect_error(doc, "lod.gltf",
+               {"lod.gltf", "extensionsRequired[0]", "MSFT_lod", "does not support"});
   json used = triangle();
   used["extensionsUsed"] = {"KHR_texture_transform", "KHR_lights_punctual"};
   json transform = {{"KHR_texture_transform", {{"scale", {2, 2}}}}};
@@ -340,9 +340,9 @@ TEST_F(GltfHostile, PunctualLightValuesAreChecked) {
   }
 }
 
-// --- Images: a warning and the factor alone, never an abort ---
+// --- Images: a warning and the missing-image checker for base colour, never an abort ---
 
-TEST_F(GltfHostile, UnreadableImagesWarnOnceAndKeepTheFactor) {
+TEST_F(GltfHostile, UnreadableImagesWarnOnceAndShowThePlaceholder) {
   std::vector<uint8_t> not_png = {0x89, 'P', 'N', 'G', 1, 2, 3};
   struct Case {
     std::string name;
@@ -368,9 +368,11 @@ TEST_F(GltfHostile, UnreadableImagesWarnOnceAndKeepTheFactor) {
     doc["meshes"][0]["primitives"][0]["material"] = 0;
     Scene scene = load_gltf(write(c.name + ".gltf", doc));
     EXPECT_EQ(count_warnings(scene, c.expected), 1) << c.name;
-    EXPECT_TRUE(scene.textures.empty()) << c.name;
     const auto& mr = std::get<MetallicRoughnessMaterial>(scene.materials[0].model);
-    EXPECT_FALSE(mr.base_color_texture.valid()) << c.name;
+    ASSERT_TRUE(mr.base_color_texture.valid()) << c.name;
+    EXPECT_EQ(scene.textures.at(size_t(mr.base_color_texture.texture)).name,
+              "missing-image placeholder")
+        << c.name;
     EXPECT_FLOAT_EQ(mr.base_color.g, 0.25f) << c.name;
   }
 }

@@ -14,7 +14,12 @@
 #include "obscura/io/camera_mapping.h"
 #include "obscura/io/gltf_accessor.h"
 #include "obscura/io/gltf_animation.h"
+#include "obscura/io/gltf_compression_prepass.h"
+#include "obscura/io/gltf_decompressed_buffers.h"
+#include "obscura/io/gltf_draco.h"
 #include "obscura/io/gltf_feature_warnings.h"
+#include "obscura/io/gltf_meshopt.h"
+#include "obscura/io/gltf_missing_image.h"
 #include "obscura/io/gltf_validation.h"
 #include "obscura/io/input_file.h"
 #include "obscura/io/texture_loader.h"
@@ -101,12 +106,15 @@ class GltfImporter {
   [[noreturn]] void fail(const std::string& where, const std::string& message) const {
     throw Error(file_ + ": " + where, message);
   }
+  // An image that cannot be used gives no texture (the material's factor alone), or with
+  // `placeholder_if_missing` (base colour) the visible missing-image checker.
   TextureRef texture(int texture_index, int uv_set, TextureEncoding encoding,
-                     const std::string& where);
+                     const std::string& where, bool placeholder_if_missing = false);
   // The texture with the textureInfo's KHR_texture_transform, when it has one.
   template <class Info>
-  TextureRef texture(const Info& info, TextureEncoding encoding, const std::string& where) {
-    TextureRef ref = texture(info.index, info.texCoord, encoding, where);
+  TextureRef texture(const Info& info, TextureEncoding encoding, const std::string& where,
+                     bool placeholder_if_missing = false) {
+    TextureRef ref = texture(info.index, info.texCoord, encoding, where, placeholder_if_missing);
     auto found = info.extensions.find("KHR_texture_transform");
     if (found == info.extensions.end() || !ref.valid()) return ref;
     const std::string ext_where = where + ".extensions.KHR_texture_transform";
@@ -140,6 +148,7 @@ class GltfImporter {
   // Primitives that read the same accessors share one Mesh (instancing across glTF meshes).
   std::map<std::string, uint32_t> geometry_;
   int default_material_ = -1;
+  int32_t placeholder_texture_ = -1;  // the missing-image checker, added on first use
   NodeAnimations animations_;
   std::set<std::string> ignored_extensions_;  // warned about already
 };
@@ -169,7 +178,7 @@ TextureFilter filter(int min_filter, int mag_filter) {
 }
 
 TextureRef GltfImporter::texture(int texture_index, int uv_set, TextureEncoding encoding,
-                                 const std::string& where) {
+                                 const std::string& where, bool placeholder_if_missing) {
   if (texture_index < 0) return {};
   if (size_t(texture_index) >= model_.textures.size())
     fail(where, "texture index " + std::to_string(texture_index) + " is out of range");
@@ -181,7 +190,14 @@ TextureRef GltfImporter::texture(int texture_index, int uv_set, TextureEncoding 
     fail(element("textures", texture_index),
          "image index " + std::to_string(gt.source) + " is out of range");
   auto image = images_.decoded.find(gt.source);
-  if (image == images_.decoded.end()) return {};  // warned about once, at load: the factor alone
+  if (image == images_.decoded.end()) {  // warned about once, at load
+    if (!placeholder_if_missing) return {};
+    if (placeholder_texture_ < 0) {
+      placeholder_texture_ = int32_t(scene_.textures.size());
+      scene_.textures.push_back(missing_image_placeholder());
+    }
+    return {placeholder_texture_, uint32_t(std::max(uv_set, 0)), {}};
+  }
   Texture t = image->second;  // a copy: one glTF image may be used with two encodings
   t.name = !gt.name.empty() ? gt.name : model_.images[gt.source].name;
   if (t.name.empty()) t.name = model_.images[gt.source].uri;
@@ -231,7 +247,8 @@ void GltfImporter::import_materials() {
     mr.base_color = rgb(pbr.baseColorFactor, Rgb(1.f));
     mr.alpha = pbr.baseColorFactor.size() == 4 ? float(pbr.baseColorFactor[3]) : 1.f;
     mr.base_color_texture =
-        texture(pbr.baseColorTexture, TextureEncoding::kSrgb, where + ".baseColorTexture");
+        texture(pbr.baseColorTexture, TextureEncoding::kSrgb, where + ".baseColorTexture",
+                /*placeholder_if_missing=*/true);
     mr.metallic = float(pbr.metallicFactor);
     mr.roughness = float(pbr.roughnessFactor);
     mr.metallic_roughness_texture = texture(pbr.metallicRoughnessTexture, TextureEncoding::kLinear,
@@ -577,6 +594,8 @@ Scene load_gltf_bytes(std::span<const uint8_t> bytes, const std::string& name,
   std::vector<std::string> files_read;
   loader.SetFsCallbacks({file_exists, keep_path, read_bounded, nullptr, &files_read});
   std::string err, warn;
+  std::optional<std::vector<uint8_t>> prepared = prepare_compressed_gltf(bytes);
+  if (prepared) bytes = *prepared;
   // The content decides, not the extension: binary glTF starts with the magic "glTF".
   bool binary = bytes.size() >= 4 && std::memcmp(bytes.data(), "glTF", 4) == 0;
   bool ok = false;
@@ -601,20 +620,13 @@ Scene load_gltf_bytes(std::span<const uint8_t> bytes, const std::string& name,
   }
   std::vector<std::string> warnings;
   std::set<std::string> unsupported = validate_gltf_model(model, name, warnings);
+  GltfDecompressedBuffers decompressed(model);
+  decode_meshopt_buffer_views(model, name, decompressed);
+  decode_draco_primitives(model, name, decompressed);
   warn_unapplied_gltf_features(model, name, warnings);
   // A texture that cannot be read is not worth failing the render for: warn once per image.
-  for (size_t i = 0; i < model.images.size(); ++i) {
-    if (images.decoded.count(int(i))) continue;
-    auto failed = images.failed.find(int(i));
-    const std::string& uri = model.images[i].uri;
-    bool external = !uri.empty() && uri.rfind("data:", 0) != 0;
-    std::string why = failed != images.failed.end() ? failed->second
-                      : external                    ? "the file does not exist or cannot be read"
-                                                    : "malformed data URI";
-    warnings.push_back(name + ": " + element("images", i) + ": " +
-                       (external ? "'" + uri + "' " : std::string()) + "cannot be used (" +
-                       shorten(why) + "); its materials use their factors alone");
-  }
+  resolve_unusable_gltf_images(model, images.decoded, images.failed, name, base_dir, files_read,
+                               warnings);
   Scene scene =
       GltfImporter(model, name, images, std::move(warnings), std::move(unsupported)).import();
   scene.input_files = std::move(files_read);

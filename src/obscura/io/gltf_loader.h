@@ -4,14 +4,17 @@
 // with POSITION, NORMAL, TEXCOORD_0, TANGENT, COLOR_0; the default scene's node hierarchy,
 // flattened into instances (meshes shared, not copied); metallic-roughness materials and their
 // textures and samplers; KHR_materials_emissive_strength, KHR_materials_specular,
-// KHR_materials_ior; KHR_lights_punctual; KHR_mesh_quantization; perspective and orthographic
+// KHR_materials_ior; KHR_lights_punctual; KHR_mesh_quantization; KHR_draco_mesh_compression and
+// EXT_meshopt_compression (gltf_draco.h, gltf_meshopt.h); perspective and orthographic
 // cameras; the first animation's node translation/rotation/scale channels, as instance keyframes
 // for motion blur.
 //
 // Hostile files are expected: every accessor is checked against its buffer before anything is
 // allocated (gltf_accessor.h), what a file decodes to is bounded, the spec's structural rules are
 // enforced (gltf_validation.h), and files are read only when regular and at most
-// kMaxGltfFileBytes. An image that cannot be read is a warning; its material keeps its factors.
+// kMaxGltfFileBytes. An image that cannot be read is a warning (gltf_missing_image.h): looked for
+// next to the model under its base name, else a visible checker for base colour and the factors
+// alone for other textures.
 #pragma once
 
 #include <cstdint>
