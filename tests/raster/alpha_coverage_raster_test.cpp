@@ -62,12 +62,12 @@ Material emitter(Rgb emission, AlphaMode mode, float alpha = 1, float cutoff = 0
 
 // An n × n texture (linear floats) whose alpha at texel (i, j) is f(u, v) at the texel centre.
 template <class F>
-Texture alpha_texture(int n, F f) {
-  Texture t;
+obscura::Texture alpha_texture(int n, F f) {
+  obscura::Texture t;
   t.width = t.height = n, t.channels = 4;
   t.encoding = TextureEncoding::kLinear;
   t.wrap_u = t.wrap_v = TextureWrap::kClampToEdge;
-  t.filter = TextureFilter::kBilinear;
+  t.filter = obscura::TextureFilter::kBilinear;
   for (int j = 0; j < n; ++j)
     for (int i = 0; i < n; ++i)
       t.texels_float.insert(t.texels_float.end(),
@@ -151,7 +151,9 @@ TEST(RasterAlphaCoverage, MaskIsTestedPerSampleUnderMsaa) {
     scene.materials = {m};
     scene.add_meshes({quad(0, -1, 1, 0)});
     const float exposure = float(scene.camera.exposure_scale());
-    Rendered r = rasterize(scene, {.msaa_samples = 4});
+    RasterSettings settings;
+    settings.msaa_samples = 4;
+    Rendered r = rasterize(scene, settings);
     const float f = covered / 4.f;
     for (int y : {5, 30, 58}) {
       expect_rgb_near(pixel(r.color, 32, y), (Rgb(1.f) * f + kBackground * (1 - f)) * exposure,
@@ -280,7 +282,7 @@ TEST(RasterAlphaCoverage, CutOutsCastCutOutShadows) {
   Mesh ground = quad(1, -2, 2, -1);
   for (Point3f& p : ground.positions) p.y *= 2;
   scene.add_meshes({quad(0, -1, 1, 0), ground});
-  DirectionalLight sun;
+  obscura::DirectionalLight sun;
   sun.direction = {0, 0, -1};
   sun.irradiance = Rgb(3.f);
   scene.lights.push_back(Light{"sun", sun});

@@ -555,8 +555,10 @@ class TriangleRasterizer {
     if (settings_.depth_write) target_.depth()[index] = z;
     if (settings_.wireframe.enabled) color = apply_wireframe(color, x, row);
     if (settings_.blend == BlendMode::kAdd) color = target_.color(index) + color;
-    if (settings_.blend == BlendMode::kOver)
+    if (settings_.blend == BlendMode::kOver) {
+      alpha = clamp_unit(alpha);  // at an MSAA edge pixel's centre, varyings are extrapolated
       color = color * alpha + target_.color(index) * (1 - alpha);
+    }
     target_.set_color(index, color);
     if (target_.has_aovs() && (settings_.blend != BlendMode::kOver || alpha >= 0.5f))
       write_aovs(index, l1, l2, w);
