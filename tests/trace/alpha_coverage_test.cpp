@@ -108,6 +108,17 @@ TEST(AlphaCoverage, TextureAlphaMasksPerTexel) {
   }
 }
 
+TEST(AlphaCoverage, VertexColourAlphaMultipliesTheCoverage) {
+  // Factor 0.8 × COLOR_0 alpha: 0.8 × 0.7 = 0.56 stays above a cutoff of 0.5, 0.8 × 0.6 = 0.48
+  // falls below it.
+  for (auto [vertex_alpha, visible] : {std::pair{0.7f, true}, std::pair{0.6f, false}}) {
+    Scene scene = two_layers(white_with_alpha(AlphaMode::kMask, 0.8f));
+    scene.meshes[0].color_alphas.assign(4, vertex_alpha);
+    TraceScene trace(scene, testing::embree_device());
+    EXPECT_EQ(front_hits(trace, 1000), visible ? 1.0 : 0.0) << vertex_alpha;
+  }
+}
+
 TEST(AlphaCoverage, BlendInTheFurnaceMixesFrontAndBack) {
   // Under a uniform environment of radiance 1 the white diffuse front quad shows 1 and the black
   // back quad 0: a blend with alpha 0.4 shows 0.4, whatever the thread count.

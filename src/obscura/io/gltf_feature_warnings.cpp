@@ -35,11 +35,9 @@ std::string material_name(const tinygltf::Model& model, size_t i) {
 
 void warn_unapplied_gltf_features(const tinygltf::Model& model, const std::string& file,
                                   std::vector<std::string>& warnings) {
-  Uses mask, blend, texcoord, normal_maps;
+  Uses texcoord, normal_maps;
   for (size_t i = 0; i < model.materials.size(); ++i) {
     const tinygltf::Material& m = model.materials[i];
-    if (m.alphaMode == "MASK") mask.add(material_name(model, i));
-    if (m.alphaMode == "BLEND") blend.add(material_name(model, i));
     if (m.normalTexture.index >= 0) normal_maps.add(material_name(model, i));
     const tinygltf::PbrMetallicRoughness& pbr = m.pbrMetallicRoughness;
     for (int set :
@@ -50,10 +48,6 @@ void warn_unapplied_gltf_features(const tinygltf::Model& model, const std::strin
         break;
       }
   }
-  mask.warn(file, "alphaMode MASK in the rasterizer",
-            "it draws them opaque (the tracer cuts them out)", warnings);
-  blend.warn(file, "alphaMode BLEND in the rasterizer",
-             "it draws them opaque (the tracer lets 1 − alpha of the light through)", warnings);
   normal_maps.warn(file, "normalTexture (normal mapping)",
                    "shaded with the interpolated vertex normals", warnings);
   texcoord.warn(file, "a texture on TEXCOORD_1 or above", "sampled with TEXCOORD_0 instead",

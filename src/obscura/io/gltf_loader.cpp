@@ -371,6 +371,12 @@ Mesh GltfImporter::import_primitive(const tinygltf::Primitive& p, const std::str
   v = read("COLOR_0", {3, 4}, AccessorNumbers::kFloatOrNormalized, &c);
   for (size_t i = 0; c > 0 && i < v.size() / size_t(c); ++i)
     mesh.colors.emplace_back(v[c * i], v[c * i + 1], v[c * i + 2]);
+  // RGBA colours: their alpha multiplies the material's coverage. Kept only where some vertex is
+  // not fully opaque, so that opaque RGBA colours cost the renderers nothing.
+  bool translucent = false;
+  for (size_t i = 0; c == 4 && i < v.size() / 4; ++i) translucent |= v[4 * i + 3] < 1;
+  if (translucent)
+    for (size_t i = 0; i < v.size() / 4; ++i) mesh.color_alphas.push_back(v[4 * i + 3]);
   v = {};
   std::vector<uint32_t> indices;
   if (p.indices >= 0) {

@@ -165,6 +165,7 @@ void drop_unused_vertices(Mesh& mesh) {
   compact(mesh.normals);
   compact(mesh.uvs);
   compact(mesh.colors);
+  compact(mesh.color_alphas);
 }
 
 }  // namespace obscura

@@ -43,6 +43,7 @@ enum class FrontFace { kCounterClockwise, kClockwise };
 enum class BlendMode {
   kReplace,  // the fragment's colour replaces the stored one
   kAdd,      // added to it (accumulation, overdraw counts)
+  kOver,     // "over": colour·α + stored·(1 − α), α the program's coverage (1 without one)
 };
 
 }  // namespace obscura::raster

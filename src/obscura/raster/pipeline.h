@@ -37,6 +37,10 @@ struct DrawState {
   CullMode cull = CullMode::kNone;
   FrontFace front_face = FrontFace::kCounterClockwise;
   BlendMode blend = BlendMode::kReplace;
+  // Alpha test: fragments whose coverage (see CoverageProgram) is below the cutoff are discarded,
+  // per sample under MSAA. Programs without coverage have coverage 1.
+  bool alpha_test = false;
+  float alpha_cutoff = 0.5f;
   uint32_t object_id = 1;  // written to the id output; 0 (kNoObject) is the background
   Wireframe wireframe;
 };
@@ -139,12 +143,13 @@ struct DrawScratch {
 
 }  // namespace detail
 
-// Draws triangles: with `indices` empty, vertices 3t, 3t+1, 3t+2 form triangle t; otherwise
-// indices 3t..3t+2 do. Throws obscura::Error for an index out of range or a count not a multiple
-// of three.
-template <Program P>
-void draw(RenderTarget& target, const DrawState& state, const P& program,
-          std::span<const typename P::Vertex> vertices, std::span<const uint32_t> indices = {}) {
+namespace detail {
+
+// Stages 1 and 2 of a draw, then `rasterize(job)` for stage 3.
+template <Program P, class Rasterize>
+void draw_with(RenderTarget& target, const DrawState& state, const P& program,
+               std::span<const typename P::Vertex> vertices, std::span<const uint32_t> indices,
+               Rasterize&& rasterize) {
   using V = typename P::Varyings;
   const bool indexed = !indices.empty();
   const size_t corner_count = indexed ? indices.size() : vertices.size();
@@ -199,26 +204,51 @@ void draw(RenderTarget& target, const DrawState& state, const P& program,
   FragmentSettings settings;
   settings.depth_write = state.depth_write;
   settings.blend = state.blend;
+  settings.alpha_test = state.alpha_test;
+  settings.alpha_cutoff = state.alpha_cutoff;
   settings.front_face = state.front_face;
   settings.object_id = state.object_id;
   settings.wireframe = state.wireframe;
-  const detail::TileJob<P> job{program, target, settings, chunks, shared, grid};
-  switch (state.depth_func) {
+  rasterize(detail::TileJob<P>{program, target, settings, chunks, shared, grid});
+  detail::DrawScratch<V>::give_back(std::move(scratch));
+}
+
+}  // namespace detail
+
+// Draws triangles: with `indices` empty, vertices 3t, 3t+1, 3t+2 form triangle t; otherwise
+// indices 3t..3t+2 do. Throws obscura::Error for an index out of range or a count not a multiple
+// of three.
+template <Program P>
+void draw(RenderTarget& target, const DrawState& state, const P& program,
+          std::span<const typename P::Vertex> vertices, std::span<const uint32_t> indices = {}) {
+  detail::draw_with(target, state, program, vertices, indices, [&](const detail::TileJob<P>& job) {
+    switch (state.depth_func) {
 #define OBSCURA_RASTER_CASE(F)          \
   case F:                               \
     detail::rasterize_tiles<P, F>(job); \
     break;
-    OBSCURA_RASTER_CASE(DepthFunc::kNever)
-    OBSCURA_RASTER_CASE(DepthFunc::kLess)
-    OBSCURA_RASTER_CASE(DepthFunc::kEqual)
-    OBSCURA_RASTER_CASE(DepthFunc::kLessEqual)
-    OBSCURA_RASTER_CASE(DepthFunc::kGreater)
-    OBSCURA_RASTER_CASE(DepthFunc::kNotEqual)
-    OBSCURA_RASTER_CASE(DepthFunc::kGreaterEqual)
-    OBSCURA_RASTER_CASE(DepthFunc::kAlways)
+      OBSCURA_RASTER_CASE(DepthFunc::kNever)
+      OBSCURA_RASTER_CASE(DepthFunc::kLess)
+      OBSCURA_RASTER_CASE(DepthFunc::kEqual)
+      OBSCURA_RASTER_CASE(DepthFunc::kLessEqual)
+      OBSCURA_RASTER_CASE(DepthFunc::kGreater)
+      OBSCURA_RASTER_CASE(DepthFunc::kNotEqual)
+      OBSCURA_RASTER_CASE(DepthFunc::kGreaterEqual)
+      OBSCURA_RASTER_CASE(DepthFunc::kAlways)
 #undef OBSCURA_RASTER_CASE
-  }
-  detail::DrawScratch<V>::give_back(std::move(scratch));
+    }
+  });
+}
+
+// The same for callers that only ever draw with depth function F (state.depth_func must be F):
+// the tile loop is compiled for F alone instead of all eight functions.
+template <DepthFunc F, Program P>
+void draw_with_depth_func(RenderTarget& target, const DrawState& state, const P& program,
+                          std::span<const typename P::Vertex> vertices,
+                          std::span<const uint32_t> indices = {}) {
+  if (state.depth_func != F) throw Error("draw", "the draw state's depth function is not F");
+  detail::draw_with(target, state, program, vertices, indices,
+                    [](const detail::TileJob<P>& job) { detail::rasterize_tiles<P, F>(job); });
 }
 
 // The same for a std::vector or any contiguous range.

@@ -5,6 +5,8 @@
 //                        (flat); the geometric normal comes from the screen-space derivatives of
 //                        the world position, so no per-face data is needed
 //   SceneGouraudProgram  lighting at the vertices, interpolated; textures modulate it per pixel
+//   WithCoverage<P>      P for a material with glTF alpha (MASK, BLEND): adds its coverage
+//   DepthCoverageProgram depth only, with coverage (cut-out shadows)
 #pragma once
 
 #include <span>
@@ -169,6 +171,49 @@ struct SceneGouraudProgram {
   Vector3f normal(const Varyings& a) const {
     float i2 = dot(a.normal, a.normal);
     return i2 > 0 ? a.normal / std::sqrt(i2) : Vector3f();
+  }
+};
+
+// One of the programs above for a material with alpha coverage: the same shading, plus the
+// coverage the rasterizer tests (MASK) or blends with (BLEND), the vertex colour's alpha
+// interpolated alongside. A separate type, so that opaque materials carry no extra varying.
+template <class Inner>
+struct WithCoverage {
+  using Vertex = MeshVertex;
+  struct Varyings {
+    typename Inner::Varyings inner;
+    float alpha;
+  };
+  Inner program;
+
+  VertexOutput<Varyings> vertex(const MeshVertex& m) const {
+    VertexOutput<typename Inner::Varyings> out = program.vertex(m);
+    return {out.clip, {out.varyings, m.alpha}};
+  }
+  Rgb fragment(const Varyings& a, const Varyings& dx, const Varyings& dy, FragmentInfo info) const {
+    return program.fragment(a.inner, dx.inner, dy.inner, info);
+  }
+  float coverage(const Varyings& a, const Varyings& dx, const Varyings& dy) const {
+    TextureCoordinates tc{a.inner.u, a.inner.v, dx.inner.u, dx.inner.v, dy.inner.u, dy.inner.v};
+    return coverage_alpha(*program.uniforms.material, tc, a.alpha);
+  }
+  Vector3f normal(const Varyings& a) const { return program.normal(a.inner); }
+};
+
+struct DepthCoverageProgram {
+  using Vertex = MeshVertex;
+  struct Varyings {
+    float u, v, alpha;
+  };
+  Matrix4f clip_from_object;
+  const SurfaceMaterial* material = nullptr;
+
+  VertexOutput<Varyings> vertex(const MeshVertex& m) const {
+    return {clip_from_object(m.position), {m.uv.x, m.uv.y, m.alpha}};
+  }
+  Rgb fragment(const Varyings&, FragmentInfo) const { return {}; }
+  float coverage(const Varyings& a, const Varyings& dx, const Varyings& dy) const {
+    return coverage_alpha(*material, {a.u, a.v, dx.u, dx.v, dy.u, dy.v}, a.alpha);
   }
 };
 

@@ -1,8 +1,10 @@
 #include "obscura/raster/scene_rasterizer.h"
 
+#include <algorithm>
 #include <cmath>
 #include <limits>
 #include <numbers>
+#include <numeric>
 #include <variant>
 
 #include "obscura/math/error.h"
@@ -16,13 +18,22 @@ namespace {
 
 constexpr float kPi = std::numbers::pi_v<float>;
 
+// Every scene draw tests depth with LESS: compiling the tile loop for that function alone keeps
+// this file's build time down (draw() compiles it for all eight).
+template <class P>
+void draw_less(RenderTarget& target, const DrawState& state, const P& program,
+               std::span<const MeshVertex> vertices, std::span<const uint32_t> indices) {
+  draw_with_depth_func<DepthFunc::kLess>(target, state, program, vertices, indices);
+}
+
 // Object-space vertices of a mesh. Meshes without normals get one vertex per corner carrying the
 // face normal (what the tracer shades them with), drawn unindexed.
 void compile_mesh(const Mesh& mesh, std::vector<MeshVertex>& vertices,
                   std::vector<uint32_t>& indices) {
   auto vertex = [&](uint32_t i, Vector3f n) {
     return MeshVertex{mesh.positions[i], n, mesh.uvs.empty() ? Point2f() : mesh.uvs[i],
-                      mesh.colors.empty() ? Rgb(1.f) : mesh.colors[i]};
+                      mesh.colors.empty() ? Rgb(1.f) : mesh.colors[i],
+                      mesh.color_alphas.empty() ? 1.f : mesh.color_alphas[i]};
   };
   if (!mesh.normals.empty()) {
     vertices.reserve(mesh.positions.size());
@@ -55,6 +66,31 @@ Texture compile_texture(const obscura::Texture& t) {
 
 void mark_used(const TextureRef& ref, std::vector<bool>& used) {
   if (ref.valid() && size_t(ref.texture) < used.size()) used[ref.texture] = true;
+}
+
+// A scene texture's alpha channel as a grey raster texture, or nothing where it is opaque.
+std::optional<Texture> compile_alpha_texture(const obscura::Texture& t) {
+  Image image(t.width, t.height, 3);
+  bool translucent = false;
+  for (int y = 0; y < t.height; ++y)
+    for (int x = 0; x < t.width; ++x) {
+      float a = sample_texture(t, {(x + 0.5f) / t.width, (y + 0.5f) / t.height}).w;
+      translucent |= a < 1;
+      image.set_rgb(x, y, Rgb(a));
+    }
+  if (!translucent) return std::nullopt;
+  return Texture(image, t.wrap_u, t.wrap_v);
+}
+
+// The scene textures whose alpha gives some material its coverage (glTF base colour textures of
+// materials with alphaMode MASK or BLEND).
+std::vector<bool> coverage_textures(const Scene& scene) {
+  std::vector<bool> used(scene.textures.size(), false);
+  for (const Material& m : scene.materials)
+    if (const auto* mr = std::get_if<MetallicRoughnessMaterial>(&m.model);
+        mr && m.alpha_mode != AlphaMode::kOpaque)
+      mark_used(mr->base_color_texture, used);
+  return used;
 }
 
 std::vector<bool> used_textures(const Scene& scene) {
@@ -170,7 +206,20 @@ SceneRasterizer::SceneRasterizer(const Scene& scene, RasterSettings settings)
   for (size_t t = 0, k = 0; t < scene.textures.size(); ++t)
     if (used[t] && scene.textures[t].width > 0 && scene.textures[t].height > 0)
       texture_of[t] = &textures_[k++];
-  for (const Material& m : scene.materials) materials_.push_back(compile_material(m, texture_of));
+  // Coverage textures, built first and pointed to after: the vector no longer reallocates.
+  std::vector<bool> coverage = coverage_textures(scene);
+  std::vector<const Texture*> alpha_of(scene.textures.size(), nullptr);
+  std::vector<int> alpha_index(scene.textures.size(), -1);
+  for (size_t t = 0; t < scene.textures.size(); ++t)
+    if (coverage[t] && scene.textures[t].width > 0 && scene.textures[t].height > 0)
+      if (std::optional<Texture> alpha = compile_alpha_texture(scene.textures[t])) {
+        alpha_index[t] = int(alpha_textures_.size());
+        alpha_textures_.push_back(std::move(*alpha));
+      }
+  for (size_t t = 0; t < scene.textures.size(); ++t)
+    if (alpha_index[t] >= 0) alpha_of[t] = &alpha_textures_[size_t(alpha_index[t])];
+  for (const Material& m : scene.materials)
+    materials_.push_back(compile_material(m, texture_of, alpha_of));
 
   compile_lights(scene, lights_);
   for (const Instance& instance : scene.instances) {
@@ -268,9 +317,20 @@ ShadowMap SceneRasterizer::render_shadow_map(const Matrix4& clip_from_world, flo
                                              bool perspective, double time_s) const {
   ShadowMap map(clip_from_world, settings_.shadow_map_size, texel_world, perspective);
   for (const CompiledInstance& instance : instances_) {
-    DepthOnlyProgram<MeshVertex> program{
-        Matrix4f(clip_from_world * world_from_object(instance, time_s).matrix())};
-    draw(map.depth, DrawState{}, program, vertices_[instance.mesh], indices_[instance.mesh]);
+    const Matrix4f clip_from_object(clip_from_world * world_from_object(instance, time_s).matrix());
+    const SurfaceMaterial& material = materials_[instance.material];
+    if (material.alpha_mode == AlphaMode::kOpaque) {
+      DepthOnlyProgram<MeshVertex> program{clip_from_object};
+      draw_less(map.depth, DrawState{}, program, vertices_[instance.mesh], indices_[instance.mesh]);
+      continue;
+    }
+    // Cut-outs cast cut-out shadows. A depth map cannot hold a partial shadow, so a blended
+    // surface shadows where it covers at least half (the tracer's shadow is 1 − α there).
+    DrawState state;
+    state.alpha_test = true;
+    state.alpha_cutoff = material.alpha_mode == AlphaMode::kMask ? material.alpha_cutoff : 0.5f;
+    draw_less(map.depth, state, DepthCoverageProgram{clip_from_object, &material},
+              vertices_[instance.mesh], indices_[instance.mesh]);
   }
   return map;
 }
@@ -324,29 +384,103 @@ void SceneRasterizer::render_frame(const Camera& camera, const RasterFrame& fram
   base.flat = settings_.shading == ShadingMode::kFlat;
   base.force_blinn = settings_.shading == ShadingMode::kBlinnPhong;
 
+  // Opaque and cut-out surfaces first; blended ones over them.
+  std::vector<size_t> blended;
   for (size_t i = 0; i < instances_.size(); ++i) {
-    const CompiledInstance& instance = instances_[i];
-    const Transform world_from_object = this->world_from_object(instance, frame.time_s);
-    InstanceUniforms u = base;
-    u.clip_from_object = Matrix4f(clip_from_world * to_matrix(world_from_object));
-    u.world_from_object = Matrix4f(world_from_object.matrix());
-    u.normal_from_object = Matrix4f(transpose(world_from_object.inverse_matrix()));
-    u.material = &materials_[instance.material];
-    DrawState state;
-    state.object_id = uint32_t(i + 1);
-    state.cull = settings_.cull_back_faces ? CullMode::kBack : CullMode::kNone;
-    // A mirroring transform turns counter-clockwise faces clockwise.
-    state.front_face =
-        world_from_object.swaps_handedness() ? FrontFace::kClockwise : FrontFace::kCounterClockwise;
-    state.wireframe = settings_.wireframe;
-    const std::vector<MeshVertex>& vertices = vertices_[instance.mesh];
-    const std::vector<uint32_t>& indices = indices_[instance.mesh];
-    if (settings_.shading == ShadingMode::kGouraud) {
-      draw(target, state, SceneGouraudProgram{u}, vertices, indices);
+    if (materials_[instances_[i].material].alpha_mode == AlphaMode::kBlend) {
+      blended.push_back(i);
     } else {
-      draw(target, state, ScenePixelProgram{u}, vertices, indices);
+      draw_instance(target, base, clip_from_world, i, frame.time_s);
     }
   }
+  if (!blended.empty()) draw_blended(target, base, clip_from_world, view, blended, frame.time_s);
+}
+
+void SceneRasterizer::draw_instance(RenderTarget& target, const InstanceUniforms& base,
+                                    const Matrix4& clip_from_world, size_t i, double time_s,
+                                    std::span<const uint32_t> sorted) const {
+  const CompiledInstance& instance = instances_[i];
+  const Transform world_from_object = this->world_from_object(instance, time_s);
+  const SurfaceMaterial& material = materials_[instance.material];
+  InstanceUniforms u = base;
+  u.clip_from_object = Matrix4f(clip_from_world * to_matrix(world_from_object));
+  u.world_from_object = Matrix4f(world_from_object.matrix());
+  u.normal_from_object = Matrix4f(transpose(world_from_object.inverse_matrix()));
+  u.material = &material;
+  DrawState state;
+  state.object_id = uint32_t(i + 1);
+  state.cull = settings_.cull_back_faces ? CullMode::kBack : CullMode::kNone;
+  // A mirroring transform turns counter-clockwise faces clockwise.
+  state.front_face =
+      world_from_object.swaps_handedness() ? FrontFace::kClockwise : FrontFace::kCounterClockwise;
+  state.wireframe = settings_.wireframe;
+  state.alpha_test = material.alpha_mode == AlphaMode::kMask;
+  state.alpha_cutoff = material.alpha_cutoff;
+  if (material.alpha_mode == AlphaMode::kBlend) {
+    // Depth-tested against what is drawn, but not hiding what is drawn after it.
+    state.depth_write = false;
+    state.blend = BlendMode::kOver;
+  }
+  const std::span<const MeshVertex> vertices = vertices_[instance.mesh];
+  const std::span<const uint32_t> indices = sorted.empty() ? indices_[instance.mesh] : sorted;
+  const bool gouraud = settings_.shading == ShadingMode::kGouraud;
+  if (material.alpha_mode == AlphaMode::kOpaque) {
+    if (gouraud) return draw_less(target, state, SceneGouraudProgram{u}, vertices, indices);
+    return draw_less(target, state, ScenePixelProgram{u}, vertices, indices);
+  }
+  if (gouraud)
+    return draw_less(target, state, WithCoverage<SceneGouraudProgram>{{u}}, vertices, indices);
+  draw_less(target, state, WithCoverage<ScenePixelProgram>{{u}}, vertices, indices);
+}
+
+void SceneRasterizer::draw_blended(RenderTarget& target, const InstanceUniforms& base,
+                                   const Matrix4& clip_from_world, const Matrix4& camera_from_world,
+                                   const std::vector<size_t>& blended, double time_s) const {
+  // "Over" composes correctly only back to front. Instances are sorted by the view depth of
+  // their bounds' centre, and each one's triangles by the view depth of their centroids.
+  struct Sorted {
+    double depth;
+    size_t instance;
+    std::vector<uint32_t> indices;
+  };
+  std::vector<Sorted> order;
+  for (size_t i : blended) {
+    const CompiledInstance& instance = instances_[i];
+    if (vertices_[instance.mesh].empty()) continue;
+    const Matrix4 camera_from_object =
+        camera_from_world * world_from_object(instance, time_s).matrix();
+    const std::vector<MeshVertex>& vertices = vertices_[instance.mesh];
+    const std::vector<uint32_t>& indices = indices_[instance.mesh];
+    std::vector<double> depth(vertices.size());  // along the view direction (camera −z)
+    double nearest = std::numeric_limits<double>::infinity(), farthest = -nearest;
+    for (size_t v = 0; v < vertices.size(); ++v) {
+      Point3f p = vertices[v].position;
+      depth[v] = -(camera_from_object[2][0] * p.x + camera_from_object[2][1] * p.y +
+                   camera_from_object[2][2] * p.z + camera_from_object[2][3]);
+      nearest = std::min(nearest, depth[v]), farthest = std::max(farthest, depth[v]);
+    }
+    const size_t triangles = (indices.empty() ? vertices.size() : indices.size()) / 3;
+    auto corner = [&](size_t t, int k) {
+      return indices.empty() ? uint32_t(3 * t + k) : indices[3 * t + k];
+    };
+    std::vector<double> key(triangles);  // three times the centroid's depth
+    for (size_t t = 0; t < triangles; ++t)
+      key[t] = depth[corner(t, 0)] + depth[corner(t, 1)] + depth[corner(t, 2)];
+    std::vector<uint32_t> by_depth(triangles);
+    std::iota(by_depth.begin(), by_depth.end(), 0u);
+    // Stable: equally deep triangles keep the file's order, so the image is deterministic.
+    std::stable_sort(by_depth.begin(), by_depth.end(),
+                     [&](uint32_t a, uint32_t b) { return key[a] > key[b]; });
+    Sorted s{(nearest + farthest) / 2, i, {}};
+    s.indices.reserve(3 * triangles);
+    for (uint32_t t : by_depth)
+      for (int k = 0; k < 3; ++k) s.indices.push_back(corner(t, k));
+    order.push_back(std::move(s));
+  }
+  std::stable_sort(order.begin(), order.end(),
+                   [](const Sorted& a, const Sorted& b) { return a.depth > b.depth; });
+  for (const Sorted& s : order)
+    draw_instance(target, base, clip_from_world, s.instance, time_s, s.indices);
 }
 
 void SceneRasterizer::render(const Camera& camera, Film& film, RenderTarget* target) const {

@@ -12,6 +12,7 @@
 #pragma once
 
 #include <optional>
+#include <span>
 #include <string>
 #include <vector>
 
@@ -30,6 +31,8 @@
 #include "obscura/scene/scene.h"
 
 namespace obscura::raster {
+
+struct InstanceUniforms;  // scene_program.h
 
 enum class ShadingMode {
   kFlat,        // per-pixel lighting with each triangle's own (face) normal
@@ -87,11 +90,20 @@ class SceneRasterizer {
   void draw_background(const Matrix4& world_from_clip, RenderTarget& target, float exposure) const;
   ShadowMap render_shadow_map(const Matrix4& clip_from_world, float texel_world, bool perspective,
                               double time_s) const;
+  // Draws instance i; `sorted`, where not empty, replaces the mesh's triangle order.
+  void draw_instance(RenderTarget& target, const InstanceUniforms& base,
+                     const Matrix4& clip_from_world, size_t i, double time_s,
+                     std::span<const uint32_t> sorted = {}) const;
+  // Draws the instances with alphaMode BLEND after everything else, back to front.
+  void draw_blended(RenderTarget& target, const InstanceUniforms& base,
+                    const Matrix4& clip_from_world, const Matrix4& camera_from_world,
+                    const std::vector<size_t>& blended, double time_s) const;
 
   RasterSettings settings_;
   std::vector<std::vector<MeshVertex>> vertices_;  // per mesh, object space
   std::vector<std::vector<uint32_t>> indices_;     // per mesh (empty: unindexed)
   std::vector<Texture> textures_;                  // the used scene textures
+  std::vector<Texture> alpha_textures_;            // the alpha channels of those that give coverage
   std::vector<SurfaceMaterial> materials_;
   std::vector<CompiledInstance> instances_;
   LightSet lights_;

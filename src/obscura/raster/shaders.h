@@ -25,6 +25,7 @@ struct MeshVertex {
   Vector3f normal;     // world space, unit length
   Point2f uv;          // texture coordinates (glTF convention)
   Rgb color{1, 1, 1};  // vertex colour, multiplies the material's colours
+  float alpha = 1;     // vertex colour alpha, multiplies the material's coverage
 };
 
 struct SceneUniforms {

@@ -23,7 +23,8 @@ Rgb min(Rgb a, float b) {
 }  // namespace
 
 SurfaceMaterial compile_material(const Material& material,
-                                 const std::vector<const Texture*>& textures) {
+                                 const std::vector<const Texture*>& textures,
+                                 const std::vector<const Texture*>& alpha_textures) {
   SurfaceMaterial s;
   s.emission = material.emission;
   s.emission_texture = texture_of(material.emission_texture, textures);
@@ -82,6 +83,12 @@ SurfaceMaterial compile_material(const Material& material,
     void operator()(const EmissiveMaterial&) const { s.model = SurfaceModel::kBlack; }
   };
   std::visit(Visitor{s, textures}, material.model);
+  if (const auto* mr = std::get_if<MetallicRoughnessMaterial>(&material.model)) {
+    s.alpha_mode = material.alpha_mode;
+    s.alpha_cutoff = material.alpha_cutoff;
+    s.base_alpha = mr->alpha;
+    s.alpha_texture = texture_of(mr->base_color_texture, alpha_textures);
+  }
   return s;
 }
 

@@ -60,11 +60,19 @@ struct SurfaceMaterial {
   UvTransform base_transform, metallic_roughness_transform, occlusion_transform, emission_transform;
   TextureFilter filter = TextureFilter::kTrilinear;
   bool double_sided = true;
+  // glTF alpha coverage, for metallic-roughness materials as in the tracer: the base colour
+  // factor's alpha × the base colour texture's alpha (`alpha_texture` holds it as grey; null
+  // where the texture has no alpha) × the vertex colour's alpha.
+  AlphaMode alpha_mode = AlphaMode::kOpaque;
+  float base_alpha = 1, alpha_cutoff = 0.5f;
+  const Texture* alpha_texture = nullptr;
 };
 
-// `textures[i]` is the raster form of Scene::textures[i] (null where unused).
+// `textures[i]` is the raster form of Scene::textures[i] (null where unused); `alpha_textures[i]`
+// its alpha channel as grey (null where unused or without alpha).
 SurfaceMaterial compile_material(const Material& material,
-                                 const std::vector<const Texture*>& textures);
+                                 const std::vector<const Texture*>& textures,
+                                 const std::vector<const Texture*>& alpha_textures = {});
 
 // Texture coordinates and their screen-space derivatives at a fragment.
 struct TextureCoordinates {
@@ -92,6 +100,14 @@ OBSCURA_RASTER_INLINE Rgb sample_or_one(const Texture* t, const UvTransform& m,
   return t->sample(filter, m.m00 * c.u + m.m01 * c.v + m.m02, m.m10 * c.u + m.m11 * c.v + m.m12,
                    m.m00 * c.du_dx + m.m01 * c.dv_dx, m.m10 * c.du_dx + m.m11 * c.dv_dx,
                    m.m00 * c.du_dy + m.m01 * c.dv_dy, m.m10 * c.du_dy + m.m11 * c.dv_dy);
+}
+
+// The coverage α at a point (see SurfaceMaterial::alpha_mode).
+OBSCURA_RASTER_INLINE float coverage_alpha(const SurfaceMaterial& m, const TextureCoordinates& tc,
+                                           float vertex_alpha) {
+  float a = m.base_alpha * vertex_alpha;
+  if (m.alpha_texture) a *= sample_or_one(m.alpha_texture, m.base_transform, m.filter, tc).r;
+  return a;
 }
 
 SurfacePoint surface_point(const SurfaceMaterial& m, const TextureCoordinates& tc,

@@ -56,6 +56,14 @@ concept HasNormalOutput = requires(const P& p, const typename P::Varyings& var) 
   { p.normal(var) } -> std::convertible_to<Vector3f>;
 };
 
+// Programs may also give a fragment a coverage α in [0, 1] (glTF alpha: the alpha test discards
+// below a cutoff, "over" blending weighs by it), from varyings at any point of the pixel and
+// their screen-space derivatives. Only programs that have one pay for it.
+template <class P>
+concept CoverageProgram = requires(const P& p, const typename P::Varyings& var) {
+  { p.coverage(var, var, var) } -> std::convertible_to<float>;
+};
+
 // Edges drawn over the shaded surface, measured in pixels from each triangle's edges.
 struct Wireframe {
   bool enabled = false;
@@ -66,6 +74,8 @@ struct Wireframe {
 struct FragmentSettings {
   bool depth_write = true;
   BlendMode blend = BlendMode::kReplace;
+  bool alpha_test = false;  // discard fragments whose coverage is below alpha_cutoff
+  float alpha_cutoff = 0.5f;
   FrontFace front_face = FrontFace::kCounterClockwise;
   uint32_t object_id = 1;
   Wireframe wireframe;
@@ -221,22 +231,44 @@ class TriangleRasterizer {
     *l1 = f1 * *w, *l2 = f2 * *w;
   }
 
+  // The varyings' differences to the neighbouring pixel centres (weights l1, l2 at (dx, dy)).
+  OBSCURA_RASTER_INLINE void derivatives(float l1, float l2, float dx, float dy, V* d_dx,
+                                         V* d_dy) const {
+    float a1, a2, b1, b2, w;
+    weights(dx + 1, dy, &a1, &a2, &w);
+    weights(dx, dy + 1, &b1, &b2, &w);
+    VaryingArray<V> x, y;
+    for (int k = 0; k < kN; ++k) {
+      x[k] = p_.d1[k] * (a1 - l1) + p_.d2[k] * (a2 - l2);
+      y[k] = p_.d1[k] * (b1 - l1) + p_.d2[k] * (b2 - l2);
+    }
+    *d_dx = from_floats<V>(x), *d_dy = from_floats<V>(y);
+  }
+
   OBSCURA_RASTER_INLINE Rgb shade(float l1, float l2, float dx, float dy, int x, int row) const {
     FragmentInfo info{x, row, primitive_, front_facing_};
     if constexpr (PlainFragmentShader<P>) {
       return program_.fragment(interpolate(l1, l2), info);
     } else {
-      float a1, a2, b1, b2, w;
-      weights(dx + 1, dy, &a1, &a2, &w);
-      weights(dx, dy + 1, &b1, &b2, &w);
-      VaryingArray<V> d_dx, d_dy;
-      for (int k = 0; k < kN; ++k) {
-        d_dx[k] = p_.d1[k] * (a1 - l1) + p_.d2[k] * (a2 - l2);
-        d_dy[k] = p_.d1[k] * (b1 - l1) + p_.d2[k] * (b2 - l2);
-      }
-      return program_.fragment(interpolate(l1, l2), from_floats<V>(d_dx), from_floats<V>(d_dy),
-                               info);
+      V d_dx, d_dy;
+      derivatives(l1, l2, dx, dy, &d_dx, &d_dy);
+      return program_.fragment(interpolate(l1, l2), d_dx, d_dy, info);
     }
+  }
+
+  // The program's coverage at (dx, dy) pixels from the box origin (any point, not only a centre).
+  float coverage_at(float dx, float dy) const {
+    if constexpr (CoverageProgram<P>) {
+      float l1, l2, w;
+      weights(dx, dy, &l1, &l2, &w);
+      V d_dx, d_dy;
+      derivatives(l1, l2, dx, dy, &d_dx, &d_dy);
+      return program_.coverage(interpolate(l1, l2), d_dx, d_dy);
+    }
+    return 1.f;
+  }
+  bool discarded(float alpha) const {
+    return settings_.alpha_test && !(alpha >= settings_.alpha_cutoff);
   }
 
   // Single sample per pixel. The box is walked in 8×8 blocks aligned to the tile, a block row
@@ -372,6 +404,22 @@ class TriangleRasterizer {
     const uint32_t live = simd::bits<Isa>(m);
     *all_written &= live == 0xFF;
     if (live == 0) return;  // early depth rejection of the whole run
+    if constexpr (CoverageProgram<P>) {
+      // Materials with alpha, pixel by pixel: test, shade and blend each live lane.
+      for (uint32_t rest = live; rest; rest &= rest - 1) {
+        const int i = std::countr_zero(rest);
+        const float dx = float(k0 + i), alpha = coverage_at(dx, float(dy));
+        if (discarded(alpha)) {
+          *all_written = false;
+          continue;
+        }
+        float l1, l2, w;
+        weights(dx, float(dy), &l1, &l2, &w);
+        write(index + size_t(i), z[i], shade(l1, l2, dx, float(dy), x0 + i, row), l1, l2, w, x0 + i,
+              row, alpha);
+      }
+      return;
+    }
     // Shaders that need derivatives run per pixel: for small triangles only the live ones.
     if (DerivativeFragmentShader<P> && std::popcount(live) <= 2) {
       for (uint32_t rest = live; rest; rest &= rest - 1) {
@@ -478,30 +526,42 @@ class TriangleRasterizer {
       const float dx = float(x - cols_.first);
       bool shaded = false;
       Rgb color;
-      float l1 = 0, l2 = 0, w = 0;
+      float l1 = 0, l2 = 0, w = 0, alpha = 1;
       for (int s = 0; s < samples; ++s) {
         if (x < first[s] || x > last[s]) continue;
-        float z = std::clamp(p_.z0 + p_.zx * (dx + offsets_[s].x / float(kSubpixelScale)) +
-                                 p_.zy * (float(dy) + offsets_[s].y / float(kSubpixelScale)),
-                             0.f, 1.f);
+        const float sx = dx + offsets_[s].x / float(kSubpixelScale),
+                    sy = float(dy) + offsets_[s].y / float(kSubpixelScale);
+        float z = std::clamp(p_.z0 + p_.zx * sx + p_.zy * sy, 0.f, 1.f);
         size_t index = target_.sample_index(x, row, s);
         if (!depth_passes<F>(z, target_.depth()[index])) continue;
+        // The alpha test per sample, so that cut-outs get anti-aliased edges.
+        if (CoverageProgram<P> && settings_.alpha_test && discarded(coverage_at(sx, sy))) continue;
         if (!shaded) {
           weights(dx, float(dy), &l1, &l2, &w);
           color = shade(l1, l2, dx, float(dy), x, row);
+          if (CoverageProgram<P> && settings_.blend == BlendMode::kOver)
+            alpha = coverage_at(dx, float(dy));
           shaded = true;
         }
-        write(index, z, color, l1, l2, w, x, row);
+        write(index, z, color, l1, l2, w, x, row, alpha);
       }
     }
   }
 
-  void write(size_t index, float z, Rgb color, float l1, float l2, float w, int x, int row) {
+  // `alpha`: the coverage "over" blending weighs the colour by. A blended fragment names the
+  // surface in the aovs only where it covers at least half of what lies behind.
+  void write(size_t index, float z, Rgb color, float l1, float l2, float w, int x, int row,
+             float alpha = 1) {
     if (settings_.depth_write) target_.depth()[index] = z;
     if (settings_.wireframe.enabled) color = apply_wireframe(color, x, row);
-    target_.set_color(index,
-                      settings_.blend == BlendMode::kAdd ? target_.color(index) + color : color);
-    if (target_.has_aovs()) write_aovs(index, l1, l2, w);
+    if (settings_.blend == BlendMode::kAdd) color = target_.color(index) + color;
+    if (settings_.blend == BlendMode::kOver) {
+      alpha = clamp_unit(alpha);  // at an MSAA edge pixel's centre, varyings are extrapolated
+      color = color * alpha + target_.color(index) * (1 - alpha);
+    }
+    target_.set_color(index, color);
+    if (target_.has_aovs() && (settings_.blend != BlendMode::kOver || alpha >= 0.5f))
+      write_aovs(index, l1, l2, w);
   }
 
   void write_aovs(size_t index, float l1, float l2, float w) {

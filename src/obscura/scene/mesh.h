@@ -21,8 +21,11 @@ struct Mesh {
   std::vector<Point2f> uvs;        // texture coordinates; (0, 0) is the image's top-left (glTF)
   std::vector<Vector4f> tangents;  // xyz unit tangent along +u, w = ±1 bitangent sign (glTF)
   std::vector<Rgb> colors;         // linear vertex colours, multiplied into the base colour
-  std::vector<uint32_t> indices;   // three per triangle
-  uint32_t material = 0;           // index into Scene::materials; an Instance may override it
+  // The alpha of 4-component vertex colours (glTF COLOR_0): it multiplies the material's alpha
+  // coverage. Kept apart from `colors` so that the many users of RGB colours stay as they are.
+  std::vector<float> color_alphas;
+  std::vector<uint32_t> indices;  // three per triangle
+  uint32_t material = 0;          // index into Scene::materials; an Instance may override it
 
   size_t triangle_count() const { return indices.size() / 3; }
   size_t vertex_count() const { return positions.size(); }

@@ -36,6 +36,7 @@ void validate_mesh(const Mesh& m, const std::string& where, size_t material_coun
   check_attribute_size(where, "uvs", m.uvs, m.positions.size());
   check_attribute_size(where, "tangents", m.tangents, m.positions.size());
   check_attribute_size(where, "colors", m.colors, m.positions.size());
+  check_attribute_size(where, "color_alphas", m.color_alphas, m.positions.size());
   if (m.material >= material_count)
     throw Error(where, "material index " + std::to_string(m.material) +
                            " is past the material count " + std::to_string(material_count));

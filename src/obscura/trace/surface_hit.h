@@ -15,6 +15,7 @@ struct SurfaceHit {
   Normal3f shading_normal;    // unit, on the same side as geometric_normal
   Point2f uv;                 // texture coordinates (0 where the mesh has none)
   Rgb vertex_color{1.f};      // interpolated COLOR_0 (white where the mesh has none)
+  float vertex_alpha = 1;     // interpolated COLOR_0 alpha: multiplies the alpha coverage
   uint32_t material = 0;
   uint32_t mesh = 0;       // the Embree geometry id: which mesh (instance) was hit
   uint32_t primitive = 0;  // triangle index within it

@@ -20,7 +20,7 @@ TraceMaterial::TraceMaterial(const Material& material, const std::vector<Texture
 
 bool TraceMaterial::passes_through(const SurfaceHit& hit, float u) const {
   if (alpha_mode_ == AlphaMode::kOpaque) return false;
-  float alpha = alpha_;
+  float alpha = alpha_ * hit.vertex_alpha;
   if (alpha_texture_.valid() && textures_)
     alpha *=
         sample_texture((*textures_)[alpha_texture_.texture], alpha_texture_.transform(hit.uv)).w;

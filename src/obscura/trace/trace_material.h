@@ -30,7 +30,8 @@ class TraceMaterial {
 
   // glTF alpha coverage. Whether the material can let a ray through at all (alphaMode MASK or
   // BLEND), and whether it does at `hit`: MASK below the cutoff always, BLEND with probability
-  // 1 − alpha, decided by `u` (uniform in [0, 1)).
+  // 1 − alpha, decided by `u` (uniform in [0, 1)). Alpha is the base colour factor's × the base
+  // colour texture's × the vertex colour's (hit.vertex_alpha).
   bool has_alpha() const { return alpha_mode_ != AlphaMode::kOpaque; }
   bool passes_through(const SurfaceHit& hit, float u) const;
 

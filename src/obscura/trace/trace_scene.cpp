@@ -22,6 +22,7 @@ Mesh flatten(const Mesh& mesh, const Transform& world_from_object) {
   world.indices = mesh.indices;
   world.uvs = mesh.uvs;
   world.colors = mesh.colors;
+  world.color_alphas = mesh.color_alphas;
   world.positions.reserve(mesh.positions.size());
   for (Point3f p : mesh.positions) world.positions.push_back(world_from_object(p));
   for (Normal3f n : mesh.normals) world.normals.push_back(normalize(world_from_object(n)));
@@ -327,7 +328,8 @@ SurfaceHit TraceScene::surface_hit(const Ray& ray, const RayHit& hit) const {
   s.primitive = hit.primitive_id;
   s.material = place.material;
   const Mesh& mesh = *place.attributes;
-  if (!mesh.normals.empty() || !mesh.uvs.empty() || !mesh.colors.empty()) {
+  if (!mesh.normals.empty() || !mesh.uvs.empty() || !mesh.colors.empty() ||
+      !mesh.color_alphas.empty()) {
     // Interpolated attributes: only meshes that carry them pay for the vertex reads.
     const uint32_t* tri = &mesh.indices[3 * size_t(hit.primitive_id)];
     float b1 = hit.barycentric.x, b2 = hit.barycentric.y, b0 = 1 - b1 - b2;
@@ -345,6 +347,9 @@ SurfaceHit TraceScene::surface_hit(const Ray& ray, const RayHit& hit) const {
     if (!mesh.colors.empty())
       s.vertex_color =
           mesh.colors[tri[0]] * b0 + mesh.colors[tri[1]] * b1 + mesh.colors[tri[2]] * b2;
+    if (!mesh.color_alphas.empty())
+      s.vertex_alpha = mesh.color_alphas[tri[0]] * b0 + mesh.color_alphas[tri[1]] * b1 +
+                       mesh.color_alphas[tri[2]] * b2;
   }
   return s;
 }
