@@ -286,3 +286,32 @@ TEST_F(ImageLimits, ExrDataWindowWiderThanARowIsRefused) {
 
 }  // namespace
 }  // namespace obscura
+
+namespace obscura {
+namespace {
+
+// Every format a glTF may embed decodes from memory: OpenImageIO 2.4's JPEG reader accepts only
+// a "memreader" proxy, and a reader of another type left every embedded JPEG (DamagedHelmet's
+// five textures) undecoded.
+TEST(EmbeddedImages, EveryFormatDecodesFromMemory) {
+  std::string dir = test::make_temp_dir("obscura-embedded");
+  Image grey(6, 4, 3);
+  grey.data.assign(grey.data.size(), 0.2140f);  // sRGB code 128 in 8 bits
+  for (const char* ext : {"png", "jpg", "tif", "exr", "hdr"}) {
+    std::string file = dir + "/grey." + ext;
+    write_image(file, grey);
+    std::ifstream in(file, std::ios::binary);
+    std::vector<uint8_t> bytes{std::istreambuf_iterator<char>(in),
+                               std::istreambuf_iterator<char>()};
+    Texture t =
+        decode_texture(bytes, std::string("model.glb: ") + ext, ext, TextureEncoding::kSrgb);
+    EXPECT_EQ(t.width, 6) << ext;
+    EXPECT_EQ(t.height, 4) << ext;
+    bool linear_file = std::string(ext) == "exr" || std::string(ext) == "hdr";
+    EXPECT_NEAR(t.texel(3, 2, 0), linear_file ? 0.2140f : 128 / 255.f, 0.01f) << ext;
+  }
+  std::filesystem::remove_all(dir);
+}
+
+}  // namespace
+}  // namespace obscura

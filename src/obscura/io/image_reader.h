@@ -17,10 +17,14 @@ namespace obscura {
 // Reads from bytes in memory for OpenImageIO. (OpenImageIO 2.4's IOMemReader copies past its
 // buffer when a reader asks for an offset beyond the end, which a corrupt file makes OpenEXR
 // do: found by fuzz/image_fuzz.cpp.) Reads past the end return fewer bytes, never more.
-class BoundedMemoryReader final : public OIIO::Filesystem::IOProxy {
+//
+// It is an IOMemReader (proxy type "memreader") because some OpenImageIO 2.4 readers — JPEG —
+// accept no other proxy: they take the whole buffer from it (libjpeg's bounded memory source)
+// instead of calling read().
+class BoundedMemoryReader final : public OIIO::Filesystem::IOMemReader {
  public:
-  explicit BoundedMemoryReader(std::span<const uint8_t> bytes) : IOProxy("", Read), bytes_(bytes) {}
-  const char* proxytype() const override { return "obscura-memreader"; }
+  explicit BoundedMemoryReader(std::span<const uint8_t> bytes)
+      : IOMemReader(bytes.data(), bytes.size()), bytes_(bytes) {}
   size_t read(void* buffer, size_t size) override;
   size_t pread(void* buffer, size_t size, int64_t offset) override;
   size_t size() const override { return bytes_.size(); }
