@@ -70,14 +70,16 @@ Rgb PathTracer::radiance(const TraceScene& scene, const Ray& camera_ray, Sampler
     Vector3f wo = -ray.direction;
 
     // 2. Hit an emitter's front face: its light, MIS-weighted against light sampling.
-    if (!material.emission.is_black() && dot(hit->geometric_normal, wo) > 0) {
-      if (specular_bounce) {
-        L += beta * material.emitted(*hit);
+    if (material.emits()) {
+      Rgb le = material.emitted_towards(*hit, wo);
+      if (le.is_black()) {
+      } else if (specular_bounce) {
+        L += beta * le;
       } else if (use_bsdf_hits) {
         float light_pdf = use_light_sampling ? lights.pdf_area_light(previous, hit->mesh,
                                                                      hit->primitive, hit->position)
                                              : 0.f;
-        L += beta * material.emitted(*hit) * power_heuristic(bsdf_pdf, light_pdf);
+        L += beta * le * power_heuristic(bsdf_pdf, light_pdf);
       }
     }
     if (depth + 1 >= settings_.max_depth) break;

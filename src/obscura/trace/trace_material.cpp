@@ -15,7 +15,16 @@ TraceMaterial::TraceMaterial(const Material& material, const std::vector<Texture
     alpha_cutoff_ = material.alpha_cutoff;
     alpha_ = mr->alpha;
     alpha_texture_ = mr->base_color_texture;
+    unlit_ = mr->unlit;
   }
+}
+
+Rgb TraceMaterial::emitted_towards(const SurfaceHit& hit, Vector3f wo) const {
+  if (unlit_) {
+    const auto& mr = std::get<MetallicRoughnessMaterial>(model_);
+    return mr.base_color * texture_rgb(mr.base_color_texture, hit) * hit.vertex_color;
+  }
+  return dot(hit.geometric_normal, wo) > 0 ? emitted(hit) : Rgb();
 }
 
 bool TraceMaterial::passes_through(const SurfaceHit& hit, float u) const {
@@ -54,6 +63,7 @@ AnyBsdf TraceMaterial::bsdf_at(const SurfaceHit& hit) const {
       return DielectricBsdf(m.ior, Ggx::alpha_from_roughness(m.roughness), m.transmittance);
     }
     AnyBsdf operator()(const MetallicRoughnessMaterial& m) const {
+      if (m.unlit) return LambertianBsdf{Rgb(0.f)};  // its colour is emitted_towards()
       // KHR_materials_specular with a zero specular: no specular layer at all, so nothing of
       // the incoming light is held back for one (Blender exports its Diffuse BSDF this way).
       if (m.purely_diffuse())

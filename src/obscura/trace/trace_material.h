@@ -25,6 +25,14 @@ class TraceMaterial {
   Rgb emitted(const SurfaceHit& hit) const {
     return emission_texture_.valid() ? emission * texture_rgb(emission_texture_, hit) : emission;
   }
+  // Whether any light leaves the surface by itself (emission, or an unlit surface's colour).
+  bool emits() const { return unlit_ || !emission.is_black(); }
+  // Light leaving the surface by itself towards wo (unit, world, away from the surface): the
+  // emission from the front face; for KHR_materials_unlit, its base colour (× texture × vertex
+  // colour) from either face, to every ray — an unlit surface reflects nothing, so to the rest
+  // of the scene it is a glowing surface (found by paths, not sampled as a light).
+  Rgb emitted_towards(const SurfaceHit& hit, Vector3f wo) const;
+  bool unlit() const { return unlit_; }
   // The emission factor (strength included): black for a material that never emits.
   Rgb emission;
 
@@ -38,6 +46,7 @@ class TraceMaterial {
   Rgb texture_rgb(const TextureRef& ref, const SurfaceHit& hit) const;
 
   TextureRef emission_texture_;
+  bool unlit_ = false;
   AlphaMode alpha_mode_ = AlphaMode::kOpaque;
   float alpha_cutoff_ = 0.5f;
   float alpha_ = 1;           // the base colour factor's alpha

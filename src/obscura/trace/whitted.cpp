@@ -49,7 +49,7 @@ Vertex shade(const TraceScene& scene, const Ray& ray, Sampler& sampler, RayCount
   if (depth == 0) record_first_hit(scene, *hit, ray.direction, first_hit);
   const TraceMaterial& material = scene.material(hit->material);
   Vector3f wo = -ray.direction;
-  v.L = dot(hit->geometric_normal, wo) > 0 ? material.emitted(*hit) : Rgb();
+  v.L = material.emitted_towards(*hit, wo);
 
   AnyBsdf bsdf = material.bsdf_at(*hit);
   Normal3f n = bsdf.is_transmissive() ? hit->shading_normal : reflection_normal(*hit, wo);
