@@ -12,6 +12,9 @@
 //                       refraction shows only as ambient light passing through
 //   emissive            reflects nothing
 //   unlit (glTF)        KHR_materials_unlit: base colour × texture × vertex colour, as it is
+//   transmission (glTF) KHR_materials_transmission is not refracted nor blended: its share is
+//                       shaded as the diffuse lobe, which is what a uniform surround seen through
+//                       glass tinted by the base colour looks like
 // Every material adds its emission (× emission texture) on its front face.
 #pragma once
 

@@ -68,6 +68,9 @@ Rgb PathTracer::radiance(const TraceScene& scene, const Ray& camera_ray, Sampler
     if (depth == 0) record_first_hit(scene, *hit, ray.direction, first_hit);
     const TraceMaterial& material = scene.material(hit->material);
     Vector3f wo = -ray.direction;
+    // Reaching a closed volume's boundary from inside: what its medium absorbed on the way.
+    if (material.absorbs_inside() && dot(hit->geometric_normal, wo) < 0)
+      beta *= material.transmittance_inside(hit->t);
 
     // 2. Hit an emitter's front face: its light, MIS-weighted against light sampling.
     if (material.emits()) {

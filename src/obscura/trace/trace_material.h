@@ -33,6 +33,12 @@ class TraceMaterial {
   // of the scene it is a glowing surface (found by paths, not sampled as a light).
   Rgb emitted_towards(const SurfaceHit& hit, Vector3f wo) const;
   bool unlit() const { return unlit_; }
+
+  // KHR_materials_volume: whether the surface bounds an absorbing volume, and the fraction of
+  // light left after travelling `distance` inside it (Beer–Lambert: attenuation_color raised to
+  // distance / attenuation_distance).
+  bool absorbs_inside() const { return !absorption_.is_black(); }
+  Rgb transmittance_inside(float distance) const;
   // The emission factor (strength included): black for a material that never emits.
   Rgb emission;
 
@@ -47,6 +53,7 @@ class TraceMaterial {
 
   TextureRef emission_texture_;
   bool unlit_ = false;
+  Rgb absorption_;  // σ_a per metre: −ln(attenuation_color) / attenuation_distance
   AlphaMode alpha_mode_ = AlphaMode::kOpaque;
   float alpha_cutoff_ = 0.5f;
   float alpha_ = 1;           // the base colour factor's alpha

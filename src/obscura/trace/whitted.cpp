@@ -84,6 +84,12 @@ Vertex shade(const TraceScene& scene, const Ray& ray, Sampler& sampler, RayCount
       if (bs->pdf >= 1) break;  // a single lobe (mirror, total internal reflection)
     }
   }
+  // Reached a closed volume's boundary from inside: everything seen from here crossed its medium.
+  if (material.absorbs_inside() && dot(hit->geometric_normal, wo) < 0) {
+    Rgb kept = material.transmittance_inside(hit->t);
+    v.L *= kept;
+    for (int b = 0; b < v.branch_count; ++b) v.branches[b].weight *= kept;
+  }
   return v;
 }
 
