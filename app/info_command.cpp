@@ -9,6 +9,7 @@
 
 #include "image_limit_option.h"
 #include "obscura/io/scene_loader.h"
+#include "obscura/scene/material_variants.h"
 
 namespace obscura::app {
 
@@ -35,9 +36,10 @@ const char* light_type(const LightModel& model) {
   return "directional";
 }
 
-void run_info(const std::string& name, bool verbose) {
+void run_info(const std::string& name, bool verbose, const std::string& variant) {
   auto start = std::chrono::steady_clock::now();
   Scene scene = load_scene(name);
+  if (!variant.empty()) select_material_variant(scene, variant);
   double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   rusage usage{};
   getrusage(RUSAGE_SELF, &usage);  // ru_maxrss is in kilobytes on Linux
@@ -57,6 +59,12 @@ void run_info(const std::string& name, bool verbose) {
   std::printf("lights       %zu point/spot/directional, %zu emissive instances%s\n", s.lights,
               s.emissive_meshes, scene.environment ? ", an environment" : "");
   std::printf("cameras      %zu\n", s.cameras);
+  if (!scene.material_variants.empty()) {
+    std::string names;
+    for (const std::string& v : scene.material_variants)
+      names.append(names.empty() ? "" : ", ").append(v).append(v == variant ? " (selected)" : "");
+    std::printf("variants     %s\n", names.c_str());
+  }
   if (b.empty())
     std::printf("bounds       empty\n");
   else
@@ -92,13 +100,16 @@ void run_info(const std::string& name, bool verbose) {
 void add_info_command(CLI::App& app) {
   auto scene = std::make_shared<std::string>();
   auto verbose = std::make_shared<bool>(false);
+  auto variant = std::make_shared<std::string>();
   CLI::App* info =
       app.add_subcommand("info", "Print what a scene holds: counts, bounds, load time, memory");
   info->add_option("scene", *scene,
                    "A scene file or a built-in scene name; default: the Cornell box");
   info->add_flag("-v,--verbose", *verbose, "Also list materials, textures, lights and cameras");
+  info->add_option("--gltf-variant", *variant,
+                   "Select a glTF material variant (KHR_materials_variants) by name");
   add_max_image_pixels_option(info);
-  info->callback([scene, verbose] { run_info(*scene, *verbose); });
+  info->callback([scene, verbose, variant] { run_info(*scene, *verbose, *variant); });
 }
 
 }  // namespace obscura::app

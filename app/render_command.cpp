@@ -13,6 +13,7 @@
 #include "obscura/io/image_io.h"
 #include "obscura/io/scene_loader.h"
 #include "obscura/math/error.h"
+#include "obscura/scene/material_variants.h"
 #include "obscura/trace/render.h"
 #include "option_ranges.h"
 #include "partial_render.h"
@@ -37,6 +38,7 @@ struct RenderOptions {
   bool list_scenes = false;
   std::string environment = "auto";
   double environment_intensity = 1;
+  std::string gltf_variant;  // KHR_materials_variants: a variant's name; empty = the defaults
   CameraOverrides camera;
   DisplayOptions display;
   TracerOptions tracer;
@@ -110,6 +112,7 @@ void run_render(RenderOptions options) {
     thread_limit.emplace(tbb::global_control::max_allowed_parallelism, size_t(options.threads));
 
   Scene scene = load_scene(options.scene);
+  if (!options.gltf_variant.empty()) select_material_variant(scene, options.gltf_variant);
   EnvironmentChoice environment = parse_environment_choice(options.environment);
   environment.intensity = float(options.environment_intensity);
   apply_environment(scene, environment);
@@ -230,6 +233,9 @@ void add_render_command(CLI::App& app) {
                    "Scale of the environment --environment chooses")
       ->check(number_in(0, 1e6))
       ->capture_default_str();
+  render->add_option("--gltf-variant", options->gltf_variant,
+                     "Render a glTF file's material variant (KHR_materials_variants) by name; "
+                     "`obscura info` lists them");
   add_camera_options(*render, options->camera);
   add_display_options(render, options->display);
   add_max_image_pixels_option(render);

@@ -18,6 +18,7 @@
 #include "obscura/io/gltf_decompressed_buffers.h"
 #include "obscura/io/gltf_draco.h"
 #include "obscura/io/gltf_feature_warnings.h"
+#include "obscura/io/gltf_material_extensions.h"
 #include "obscura/io/gltf_meshopt.h"
 #include "obscura/io/gltf_missing_image.h"
 #include "obscura/io/gltf_validation.h"
@@ -128,6 +129,9 @@ class GltfImporter {
     }
     return ref;
   }
+  // A textureInfo given as a JSON value (inside a material extension).
+  TextureRef texture(const tinygltf::Value& info, TextureEncoding encoding,
+                     const std::string& where);
   UvTransform uv_transform(const tinygltf::Value& value, const std::string& where) const;
   void import_materials();
   uint32_t default_material();
@@ -151,6 +155,9 @@ class GltfImporter {
   int32_t placeholder_texture_ = -1;  // the missing-image checker, added on first use
   NodeAnimations animations_;
   std::set<std::string> ignored_extensions_;  // warned about already
+  // KHR_materials_variants: per (our mesh, default material), its (variant, material) pairs.
+  std::map<std::pair<uint32_t, uint32_t>, std::vector<std::pair<uint32_t, uint32_t>>>
+      variant_materials_;
 };
 
 double number(const tinygltf::Value& v, const char* key, double fallback) {
@@ -215,6 +222,25 @@ TextureRef GltfImporter::texture(int texture_index, int uv_set, TextureEncoding 
   return {index, uint32_t(std::max(uv_set, 0)), {}};
 }
 
+TextureRef GltfImporter::texture(const tinygltf::Value& info, TextureEncoding encoding,
+                                 const std::string& where) {
+  tinygltf::TextureInfo ti;
+  if (!info.Has("index") || !info.Get("index").IsInt())
+    fail(where + ".index", "expected a texture index");
+  ti.index = info.Get("index").GetNumberAsInt();
+  if (info.Has("texCoord")) {
+    const tinygltf::Value& set = info.Get("texCoord");
+    if (!set.IsInt() || set.GetNumberAsInt() < 0)
+      fail(where + ".texCoord", "expected a non-negative integer");
+    ti.texCoord = set.GetNumberAsInt();
+  }
+  if (info.Has("extensions") && info.Get("extensions").IsObject()) {
+    const tinygltf::Value& extensions = info.Get("extensions");
+    for (const std::string& key : extensions.Keys()) ti.extensions[key] = extensions.Get(key);
+  }
+  return texture(ti, encoding, where);
+}
+
 UvTransform GltfImporter::uv_transform(const tinygltf::Value& value,
                                        const std::string& where) const {
   // KHR_texture_transform: offset [0, 0], rotation 0 (radians), scale [1, 1].
@@ -270,6 +296,11 @@ void GltfImporter::import_materials() {
         }
       } else if (name == "KHR_materials_ior") {
         mr.ior = float(number(value, "ior", 1.5));
+      } else if (read_gltf_material_extension(
+                     name, value, file_, where,
+                     [this](const tinygltf::Value& info, TextureEncoding encoding,
+                            const std::string& at) { return texture(info, encoding, at); },
+                     mr)) {
       } else if (ignored_extensions_.insert(name).second) {
         scene_.warnings.push_back(file_ + ": " + where + ": extension " + name +
                                   " is not supported; it is ignored");
@@ -285,6 +316,11 @@ void GltfImporter::import_materials() {
         texture(gm.normalTexture, TextureEncoding::kLinear, where + ".normalTexture");
     m.normal_scale = float(gm.normalTexture.scale);
     m.double_sided = gm.doubleSided;
+    if (mr.unlit) {  // KHR_materials_unlit: only the base colour (and its alpha) counts
+      m.emission = {};
+      m.emission_texture = {};
+      m.normal_texture = {};
+    }
     if (gm.alphaMode == "MASK") {
       m.alpha_mode = AlphaMode::kMask;
       if (!std::isfinite(gm.alphaCutoff) || gm.alphaCutoff < 0)
@@ -425,6 +461,10 @@ std::vector<std::pair<uint32_t, uint32_t>> GltfImporter::import_mesh(int mesh_in
       fail(where + ".material",
            "material index " + std::to_string(p.material) + " is out of range");
     ours.emplace_back(shared->second, p.material >= 0 ? uint32_t(p.material) : default_material());
+    auto variants = p.extensions.find("KHR_materials_variants");
+    if (variants != p.extensions.end())
+      variant_materials_[ours.back()] = read_gltf_variant_mappings(
+          variants->second, scene_.material_variants.size(), model_.materials.size(), file_, where);
   }
   return ours;
 }
@@ -520,6 +560,9 @@ void GltfImporter::visit_node(int node_index, const Matrix4& world_from_parent, 
 Scene GltfImporter::import() {
   scene_.name = std::filesystem::path(file_).stem().string();
   import_materials();
+  auto variants = model_.extensions.find("KHR_materials_variants");
+  scene_.material_variants = read_gltf_material_variants(
+      variants != model_.extensions.end() ? &variants->second : nullptr, file_);
   animations_ = NodeAnimations(model_, file_, accessors_, scene_.warnings);
   int scene_index = model_.defaultScene >= 0 ? model_.defaultScene : 0;
   if (!model_.scenes.empty()) {
@@ -535,6 +578,10 @@ Scene GltfImporter::import() {
         instance.material = int32_t(material);
         scene_.instances.push_back(instance);
       }
+  }
+  for (Instance& instance : scene_.instances) {
+    auto found = variant_materials_.find({instance.mesh, uint32_t(instance.material)});
+    if (found != variant_materials_.end()) instance.variant_materials = found->second;
   }
   return std::move(scene_);
 }

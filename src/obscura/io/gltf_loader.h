@@ -4,10 +4,11 @@
 // with POSITION, NORMAL, TEXCOORD_0, TANGENT, COLOR_0; the default scene's node hierarchy,
 // flattened into instances (meshes shared, not copied); metallic-roughness materials and their
 // textures and samplers; KHR_materials_emissive_strength, KHR_materials_specular,
-// KHR_materials_ior; KHR_lights_punctual; KHR_mesh_quantization; KHR_draco_mesh_compression and
-// EXT_meshopt_compression (gltf_draco.h, gltf_meshopt.h); perspective and orthographic
-// cameras; the first animation's node translation/rotation/scale channels, as instance keyframes
-// for motion blur.
+// KHR_materials_ior; KHR_materials_unlit, _transmission, _volume and _variants
+// (gltf_material_extensions.h); KHR_lights_punctual; KHR_mesh_quantization;
+// KHR_draco_mesh_compression and EXT_meshopt_compression (gltf_draco.h, gltf_meshopt.h);
+// perspective and orthographic cameras; the first animation's node translation/rotation/scale
+// channels, as instance keyframes for motion blur.
 //
 // Hostile files are expected: every accessor is checked against its buffer before anything is
 // allocated (gltf_accessor.h), what a file decodes to is bounded, the spec's structural rules are

@@ -120,7 +120,9 @@ struct ScenePixelProgram {
       s.model = SurfaceModel::kBlinnPhong;
       s.lobe_normalization = blinn_phong_lobe_normalization(s.shininess);
     }
-    Rgb c = shade_surface(s, *uniforms.lights, uniforms.shadows, a.position, n, geometric, v);
+    Rgb c = s.model == SurfaceModel::kUnlit
+                ? s.base
+                : shade_surface(s, *uniforms.lights, uniforms.shadows, a.position, n, geometric, v);
     if (info.front_facing)
       c += m.emission * sample_or_one(m.emission_texture, m.emission_transform, m.filter, tc);
     return c * uniforms.exposure;
@@ -154,7 +156,9 @@ struct SceneGouraudProgram {
       s.model = SurfaceModel::kBlinnPhong;
       s.lobe_normalization = blinn_phong_lobe_normalization(s.shininess);
     }
-    Rgb lit = shade_surface(s, *uniforms.lights, uniforms.shadows, p, n, n, v);
+    Rgb lit = s.model == SurfaceModel::kUnlit
+                  ? s.base
+                  : shade_surface(s, *uniforms.lights, uniforms.shadows, p, n, n, v);
     return {uniforms.clip_from_object(m.position), {p, n, m.uv.x, m.uv.y, lit}};
   }
 

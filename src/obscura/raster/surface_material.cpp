@@ -69,6 +69,10 @@ SurfaceMaterial compile_material(const Material& material,
       s.base_transform = m.base_color_texture.transform;
       s.occlusion_texture = texture_of(m.occlusion_texture, textures);
       s.occlusion_transform = m.occlusion_texture.transform;
+      if (m.unlit) {
+        s.model = SurfaceModel::kUnlit;
+        return;
+      }
       // KHR_materials_specular with a zero specular: a plain Lambertian surface (as the tracer).
       if (m.purely_diffuse()) {
         s.model = SurfaceModel::kLambert;
@@ -150,6 +154,7 @@ Rgb ambient_reflectance(const SurfacePoint& s, float n_dot_v) {
   Rgb r;
   switch (s.model) {
     case SurfaceModel::kBlack:
+    case SurfaceModel::kUnlit:
       return {};
     case SurfaceModel::kLambert:
       r = s.base;

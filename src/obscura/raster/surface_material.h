@@ -11,6 +11,10 @@
 //   dielectric          its GGX reflection lobe with the dielectric Fresnel (widened likewise);
 //                       refraction shows only as ambient light passing through
 //   emissive            reflects nothing
+//   unlit (glTF)        KHR_materials_unlit: base colour × texture × vertex colour, as it is
+//   transmission (glTF) KHR_materials_transmission is not refracted nor blended: its share is
+//                       shaded as the diffuse lobe, which is what a uniform surround seen through
+//                       glass tinted by the base colour looks like
 // Every material adds its emission (× emission texture) on its front face.
 #pragma once
 
@@ -33,7 +37,8 @@ enum class SurfaceModel : uint8_t {
   kBlinnPhong,
   kMetallicRoughness,
   kConductor,
-  kDielectric
+  kDielectric,
+  kUnlit  // shows its base colour, lit by nothing
 };
 
 // Perfectly smooth conductors and glass reflect a punctual light in one direction only; the
@@ -122,6 +127,7 @@ OBSCURA_RASTER_INLINE Rgb reflected_cosine(const SurfacePoint& s, Vector3f n, Ve
   if (n_dot_l <= 0 || n_dot_v <= 0) return {};
   switch (s.model) {
     case SurfaceModel::kBlack:
+    case SurfaceModel::kUnlit:
       return {};
     case SurfaceModel::kLambert:
       return s.base * (kBrdfInvPi * n_dot_l);

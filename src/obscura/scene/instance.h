@@ -4,6 +4,7 @@
 
 #include <cstdint>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "obscura/math/transform.h"
@@ -22,6 +23,9 @@ struct Instance {
   // Index into Scene::materials to draw this instance with, or −1 for the mesh's own material
   // (glTF shares one geometry between meshes that differ only in material).
   int32_t material = -1;
+  // KHR_materials_variants: (index into Scene::material_variants, material) pairs; selecting a
+  // variant (scene/material_variants.h) draws the instance with its material for that variant.
+  std::vector<std::pair<uint32_t, uint32_t>> variant_materials;
   Transform world_from_object;
   // Keyframes for motion blur, sorted by time; empty for a static instance. Between keys the
   // transform is interpolated (translation and scale linearly, rotation by slerp); before the

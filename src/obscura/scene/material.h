@@ -4,6 +4,7 @@
 // Colours are linear RGB; a texture, where given, multiplies its factor (as glTF does).
 #pragma once
 
+#include <limits>
 #include <string>
 #include <string_view>
 #include <variant>
@@ -57,10 +58,24 @@ struct MetallicRoughnessMaterial {
   float specular = 1;
   Rgb specular_color{1.f};
   float ior = 1.5f;  // KHR_materials_ior; glTF's default 1.5 gives F0 = 0.04
+  // KHR_materials_unlit: the surface shows its base colour (× texture × COLOR_0) as it is, lit
+  // by nothing and lighting nothing (docs/scene-format.md says what the tracer does with it).
+  bool unlit = false;
+  // KHR_materials_transmission: the fraction of the dielectric's non-reflected light that passes
+  // through the surface instead of being diffused (× the texture's R).
+  float transmission = 0;
+  TextureRef transmission_texture;
+  // KHR_materials_volume: a thickness > 0 makes the mesh the boundary of a closed volume that
+  // refracts; 0 is a thin wall that refracts nothing. Inside, light keeps
+  // attenuation_color^(distance / attenuation_distance) (Beer–Lambert; infinity: clear).
+  float thickness = 0;
+  Rgb attenuation_color{1.f};
+  float attenuation_distance = std::numeric_limits<float>::infinity();
 
   bool purely_diffuse() const {
-    return metallic == 0 && (specular == 0 || specular_color.is_black());
+    return metallic == 0 && transmission == 0 && (specular == 0 || specular_color.is_black());
   }
+  bool has_volume() const { return transmission > 0 && thickness > 0; }
 };
 
 // Emits Material::emission and reflects nothing (a light's surface, a black body).

@@ -54,6 +54,9 @@ struct Scene {
   std::vector<Camera> cameras;  // every camera the file names (Camera::name), in file order
   Camera camera;                // the camera to render with (by default cameras.front())
   SceneRenderSettings render;
+  // KHR_materials_variants: the names of the file's material variants (Instance says which
+  // material each uses); the materials rendered until one is selected are the file's defaults.
+  std::vector<std::string> material_variants;
   std::vector<std::string> warnings;  // what the loader skipped or approximated, for the user
   // Every file the scene was read from (scene, models, buffers, textures, environment map), so
   // that a command can refuse to write its output over one of them.

@@ -10,13 +10,14 @@
 #include "obscura/trace/lambertian_bsdf.h"
 #include "obscura/trace/metallic_roughness_bsdf.h"
 #include "obscura/trace/phong_bsdf.h"
+#include "obscura/trace/transmissive_metallic_roughness_bsdf.h"
 
 namespace obscura {
 
 class AnyBsdf {
  public:
-  using Model =
-      std::variant<LambertianBsdf, PhongBsdf, ConductorBsdf, DielectricBsdf, MetallicRoughnessBsdf>;
+  using Model = std::variant<LambertianBsdf, PhongBsdf, ConductorBsdf, DielectricBsdf,
+                             MetallicRoughnessBsdf, TransmissiveMetallicRoughnessBsdf>;
   template <class B>
   AnyBsdf(B bsdf) : model_(std::move(bsdf)) {}
 
@@ -39,7 +40,10 @@ class AnyBsdf {
         model_);
   }
   // Transmits light to the other side, so the frame must not be flipped towards the viewer.
-  bool is_transmissive() const { return std::holds_alternative<DielectricBsdf>(model_); }
+  bool is_transmissive() const {
+    return std::holds_alternative<DielectricBsdf>(model_) ||
+           std::holds_alternative<TransmissiveMetallicRoughnessBsdf>(model_);
+  }
   // The surface's colour for the albedo AOV (what a denoiser wants): reflectance at normal
   // incidence, roughly.
   Rgb albedo() const;
@@ -56,6 +60,7 @@ inline Rgb AnyBsdf::albedo() const {
     Rgb operator()(const ConductorBsdf& b) const { return fresnel_conductor(1, b.eta, b.k); }
     Rgb operator()(const DielectricBsdf& b) const { return b.transmittance; }
     Rgb operator()(const MetallicRoughnessBsdf& b) const { return b.params.base_color; }
+    Rgb operator()(const TransmissiveMetallicRoughnessBsdf& b) const { return b.base_color(); }
   };
   return std::visit(Visitor{}, model_);
 }

@@ -20,7 +20,7 @@ Rgb DirectLightingIntegrator::radiance(const TraceScene& scene, const Ray& ray, 
   Vector3f wo = normalize(-ray.direction);
 
   // Light emitted by the surface itself (one-sided: the front face emits).
-  Rgb result = dot(hit->geometric_normal, wo) > 0 ? material.emitted(*hit) : Rgb();
+  Rgb result = material.emitted_towards(*hit, wo);
   AnyBsdf bsdf = material.bsdf_at(*hit);
   if (bsdf.is_delta()) return result;
 

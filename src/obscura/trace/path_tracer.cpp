@@ -68,16 +68,21 @@ Rgb PathTracer::radiance(const TraceScene& scene, const Ray& camera_ray, Sampler
     if (depth == 0) record_first_hit(scene, *hit, ray.direction, first_hit);
     const TraceMaterial& material = scene.material(hit->material);
     Vector3f wo = -ray.direction;
+    // Reaching a closed volume's boundary from inside: what its medium absorbed on the way.
+    if (material.absorbs_inside() && dot(hit->geometric_normal, wo) < 0)
+      beta *= material.transmittance_inside(hit->t);
 
     // 2. Hit an emitter's front face: its light, MIS-weighted against light sampling.
-    if (!material.emission.is_black() && dot(hit->geometric_normal, wo) > 0) {
-      if (specular_bounce) {
-        L += beta * material.emitted(*hit);
+    if (material.emits()) {
+      Rgb le = material.emitted_towards(*hit, wo);
+      if (le.is_black()) {
+      } else if (specular_bounce) {
+        L += beta * le;
       } else if (use_bsdf_hits) {
         float light_pdf = use_light_sampling ? lights.pdf_area_light(previous, hit->mesh,
                                                                      hit->primitive, hit->position)
                                              : 0.f;
-        L += beta * material.emitted(*hit) * power_heuristic(bsdf_pdf, light_pdf);
+        L += beta * le * power_heuristic(bsdf_pdf, light_pdf);
       }
     }
     if (depth + 1 >= settings_.max_depth) break;

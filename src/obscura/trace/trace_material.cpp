@@ -1,5 +1,7 @@
 #include "obscura/trace/trace_material.h"
 
+#include <algorithm>
+#include <cmath>
 #include <variant>
 
 namespace obscura {
@@ -15,7 +17,25 @@ TraceMaterial::TraceMaterial(const Material& material, const std::vector<Texture
     alpha_cutoff_ = material.alpha_cutoff;
     alpha_ = mr->alpha;
     alpha_texture_ = mr->base_color_texture;
+    unlit_ = mr->unlit;
+    if (mr->has_volume() && std::isfinite(mr->attenuation_distance))
+      for (int c = 0; c < 3; ++c)  // a black attenuation colour absorbs everything
+        absorption_[c] =
+            -std::log(std::max(mr->attenuation_color[c], 1e-30f)) / mr->attenuation_distance;
   }
+}
+
+Rgb TraceMaterial::transmittance_inside(float distance) const {
+  return {std::exp(-absorption_.r * distance), std::exp(-absorption_.g * distance),
+          std::exp(-absorption_.b * distance)};
+}
+
+Rgb TraceMaterial::emitted_towards(const SurfaceHit& hit, Vector3f wo) const {
+  if (unlit_) {
+    const auto& mr = std::get<MetallicRoughnessMaterial>(model_);
+    return mr.base_color * texture_rgb(mr.base_color_texture, hit) * hit.vertex_color;
+  }
+  return dot(hit.geometric_normal, wo) > 0 ? emitted(hit) : Rgb();
 }
 
 bool TraceMaterial::passes_through(const SurfaceHit& hit, float u) const {
@@ -54,6 +74,7 @@ AnyBsdf TraceMaterial::bsdf_at(const SurfaceHit& hit) const {
       return DielectricBsdf(m.ior, Ggx::alpha_from_roughness(m.roughness), m.transmittance);
     }
     AnyBsdf operator()(const MetallicRoughnessMaterial& m) const {
+      if (m.unlit) return LambertianBsdf{Rgb(0.f)};  // its colour is emitted_towards()
       // KHR_materials_specular with a zero specular: no specular layer at all, so nothing of
       // the incoming light is held back for one (Blender exports its Diffuse BSDF this way).
       if (m.purely_diffuse())
@@ -70,6 +91,10 @@ AnyBsdf TraceMaterial::bsdf_at(const SurfaceHit& hit) const {
         Rgb mr = self.texture_rgb(m.metallic_roughness_texture, hit);  // G roughness, B metal
         p.roughness *= mr.g;
         p.metallic *= mr.b;
+      }
+      if (m.transmission > 0) {
+        float t = m.transmission * self.texture_rgb(m.transmission_texture, hit).r;
+        if (t > 0) return TransmissiveMetallicRoughnessBsdf(p, t, m.has_volume());
       }
       return MetallicRoughnessBsdf(p);
     }

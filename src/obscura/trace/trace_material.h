@@ -25,6 +25,20 @@ class TraceMaterial {
   Rgb emitted(const SurfaceHit& hit) const {
     return emission_texture_.valid() ? emission * texture_rgb(emission_texture_, hit) : emission;
   }
+  // Whether any light leaves the surface by itself (emission, or an unlit surface's colour).
+  bool emits() const { return unlit_ || !emission.is_black(); }
+  // Light leaving the surface by itself towards wo (unit, world, away from the surface): the
+  // emission from the front face; for KHR_materials_unlit, its base colour (× texture × vertex
+  // colour) from either face, to every ray — an unlit surface reflects nothing, so to the rest
+  // of the scene it is a glowing surface (found by paths, not sampled as a light).
+  Rgb emitted_towards(const SurfaceHit& hit, Vector3f wo) const;
+  bool unlit() const { return unlit_; }
+
+  // KHR_materials_volume: whether the surface bounds an absorbing volume, and the fraction of
+  // light left after travelling `distance` inside it (Beer–Lambert: attenuation_color raised to
+  // distance / attenuation_distance).
+  bool absorbs_inside() const { return !absorption_.is_black(); }
+  Rgb transmittance_inside(float distance) const;
   // The emission factor (strength included): black for a material that never emits.
   Rgb emission;
 
@@ -39,6 +53,8 @@ class TraceMaterial {
   Rgb texture_rgb(const TextureRef& ref, const SurfaceHit& hit) const;
 
   TextureRef emission_texture_;
+  bool unlit_ = false;
+  Rgb absorption_;  // σ_a per metre: −ln(attenuation_color) / attenuation_distance
   AlphaMode alpha_mode_ = AlphaMode::kOpaque;
   float alpha_cutoff_ = 0.5f;
   float alpha_ = 1;           // the base colour factor's alpha

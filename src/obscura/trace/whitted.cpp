@@ -49,7 +49,7 @@ Vertex shade(const TraceScene& scene, const Ray& ray, Sampler& sampler, RayCount
   if (depth == 0) record_first_hit(scene, *hit, ray.direction, first_hit);
   const TraceMaterial& material = scene.material(hit->material);
   Vector3f wo = -ray.direction;
-  v.L = dot(hit->geometric_normal, wo) > 0 ? material.emitted(*hit) : Rgb();
+  v.L = material.emitted_towards(*hit, wo);
 
   AnyBsdf bsdf = material.bsdf_at(*hit);
   Normal3f n = bsdf.is_transmissive() ? hit->shading_normal : reflection_normal(*hit, wo);
@@ -83,6 +83,12 @@ Vertex shade(const TraceScene& scene, const Ray& ray, Sampler& sampler, RayCount
       v.branches[v.branch_count++] = {spawn_ray(scene, *hit, wi), bs->f * std::abs(bs->wi.z)};
       if (bs->pdf >= 1) break;  // a single lobe (mirror, total internal reflection)
     }
+  }
+  // Reached a closed volume's boundary from inside: everything seen from here crossed its medium.
+  if (material.absorbs_inside() && dot(hit->geometric_normal, wo) < 0) {
+    Rgb kept = material.transmittance_inside(hit->t);
+    v.L *= kept;
+    for (int b = 0; b < v.branch_count; ++b) v.branches[b].weight *= kept;
   }
   return v;
 }
