@@ -9,6 +9,7 @@
 
 #include "image_limit_option.h"
 #include "obscura/io/scene_loader.h"
+#include "scene_choice_options.h"
 
 namespace obscura::app {
 
@@ -35,9 +36,9 @@ const char* light_type(const LightModel& model) {
   return "directional";
 }
 
-void run_info(const std::string& name, bool verbose) {
+void run_info(const std::string& name, bool verbose, const SceneChoiceOptions& choice) {
   auto start = std::chrono::steady_clock::now();
-  Scene scene = load_scene(name);
+  Scene scene = load_scene(name, gltf_load_options(choice, Shutter{}));
   double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   rusage usage{};
   getrusage(RUSAGE_SELF, &usage);  // ru_maxrss is in kilobytes on Linux
@@ -92,13 +93,15 @@ void run_info(const std::string& name, bool verbose) {
 void add_info_command(CLI::App& app) {
   auto scene = std::make_shared<std::string>();
   auto verbose = std::make_shared<bool>(false);
+  auto choice = std::make_shared<SceneChoiceOptions>();
   CLI::App* info =
       app.add_subcommand("info", "Print what a scene holds: counts, bounds, load time, memory");
   info->add_option("scene", *scene,
                    "A scene file or a built-in scene name; default: the Cornell box");
   info->add_flag("-v,--verbose", *verbose, "Also list materials, textures, lights and cameras");
+  add_scene_choice_options(*info, *choice);
   add_max_image_pixels_option(info);
-  info->callback([scene, verbose] { run_info(*scene, *verbose); });
+  info->callback([scene, verbose, choice] { run_info(*scene, *verbose, *choice); });
 }
 
 }  // namespace obscura::app

@@ -18,6 +18,7 @@
 #include "progress_bar.h"
 #include "raster_effects_options.h"
 #include "raster_options.h"
+#include "scene_choice_options.h"
 #include "tracer_options.h"
 #include "usage_error.h"
 
@@ -37,6 +38,7 @@ struct RenderOptions {
   std::string environment = "auto";
   double environment_intensity = 1;
   CameraOverrides camera;
+  SceneChoiceOptions choice;
   DisplayOptions display;
   TracerOptions tracer;
   RasterOptions raster;
@@ -98,7 +100,9 @@ void run_render(RenderOptions options) {
   if (options.threads > 0)
     thread_limit.emplace(tbb::global_control::max_allowed_parallelism, size_t(options.threads));
 
-  Scene scene = load_scene(options.scene);
+  // Skins and morph targets are posed when the file is read, at the shutter's middle.
+  const Shutter shutter = shutter_option(options.camera);
+  Scene scene = obscura::load_scene(options.scene, gltf_load_options(options.choice, shutter));
   EnvironmentChoice environment = parse_environment_choice(options.environment);
   environment.intensity = float(options.environment_intensity);
   apply_environment(scene, environment);
@@ -112,6 +116,7 @@ void run_render(RenderOptions options) {
   if (!options.quiet)
     for (const std::string& w : scene.warnings) std::fprintf(stderr, "warning: %s\n", w.c_str());
   scene.camera = resolve_camera(scene, options.camera, options.width, options.height);
+  scene.camera.shutter = shutter_at_time(options.choice, scene.camera.shutter);
   scene.validate();
 
   Bounds2i crop = scene.camera.film.crop_pixels();
@@ -211,6 +216,7 @@ void add_render_command(CLI::App& app) {
       ->check(number_in(0, 1e6))
       ->capture_default_str();
   add_camera_options(*render, options->camera);
+  add_scene_choice_options(*render, options->choice);
   add_display_options(render, options->display);
   add_max_image_pixels_option(render);
   add_tracer_options(*render, options->tracer);

@@ -180,7 +180,7 @@ void check_lights(const tinygltf::Model& model, const std::string& file) {
 }  // namespace
 
 const std::set<std::string>& supported_gltf_extensions() {
-  static const std::set<std::string> names = {"KHR_lights_punctual",
+  static const std::set<std::string> names = {"EXT_mesh_gpu_instancing", "KHR_lights_punctual",
                                               "KHR_materials_emissive_strength",
                                               "KHR_materials_ior", "KHR_materials_specular",
                                               // Quantized attributes (integer POSITION, TEXCOORD,
