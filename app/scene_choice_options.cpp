@@ -29,7 +29,8 @@ Shutter shutter_at_time(const SceneChoiceOptions& options, const Shutter& shutte
 }
 
 GltfLoadOptions gltf_load_options(const SceneChoiceOptions& options, const Shutter& shutter) {
-  return {.scene = options.gltf_scene, .time_s = shutter_at_time(options, shutter).time_at(0.5)};
+  const Shutter at = shutter_at_time(options, shutter);
+  return {.scene = options.gltf_scene, .time_s = at.time_at(0.5), .exposure_s = at.duration_s()};
 }
 
 }  // namespace obscura::app

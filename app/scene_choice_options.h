@@ -23,7 +23,8 @@ void add_scene_choice_options(CLI::App& command, SceneChoiceOptions& options);
 Shutter shutter_at_time(const SceneChoiceOptions& options, const Shutter& shutter);
 
 // What the glTF loader needs: the scene, and the time skins and morph targets are posed at —
-// the middle of the shutter the render will use, where the rasterizer draws a still frame.
+// the middle of the shutter the render will use, where the rasterizer draws a still frame —
+// with the shutter's length, across which animated ones are posed again for motion blur.
 GltfLoadOptions gltf_load_options(const SceneChoiceOptions& options, const Shutter& shutter);
 
 }  // namespace obscura::app

@@ -156,6 +156,31 @@ TEST(GltfSkin, TheSkinnedNodesOwnTransformIsIgnored) {
   expect_world_positions(scene, simple_skin_reference(reference, 2.0), 1e-5, "moved mesh node");
 }
 
+TEST(GltfSkin, AnOpenShutterPosesTheSkinAtEvenTimesAcrossIt) {
+  // The still pose at t = 1 s, and for motion blur the poses at 9 times from 0.95 to 1.05 s.
+  const std::string path = data_path("gltf/SimpleSkin/SimpleSkin.gltf");
+  ReferenceGltf reference(path);
+  GltfLoadOptions options = at_time(1.0);
+  options.exposure_s = 0.1;
+  Scene scene = load_gltf(path, options);
+  expect_world_positions(scene, simple_skin_reference(reference, 1.0), 1e-5, "still");
+  const Mesh& mesh = scene.meshes[scene.instances[0].mesh];
+  const MeshDeformation& d = mesh.deformation;
+  EXPECT_DOUBLE_EQ(d.open_s, 0.95);
+  EXPECT_DOUBLE_EQ(d.close_s, 1.05);
+  ASSERT_EQ(d.positions.size(), 9u);
+  for (size_t k = 0; k < d.positions.size(); ++k) {
+    Scene step = scene;
+    step.meshes[step.instances[0].mesh].positions = d.positions[k];
+    expect_world_positions(step, simple_skin_reference(reference, 0.95 + 0.1 * double(k) / 8), 1e-5,
+                           "step " + std::to_string(k));
+  }
+  // Past the animation's end (5.5 s) nothing moves: no deformation to blur.
+  options.time_s = 8;
+  Scene still = load_gltf(path, options);
+  EXPECT_FALSE(still.meshes[still.instances[0].mesh].deforms());
+}
+
 TEST(GltfMorph, AnimatedMorphCubeBlendsTheTargetsByTheAnimatedWeights) {
   const std::string path = data_path("gltf/AnimatedMorphCube/AnimatedMorphCube.glb");
   ReferenceGltf f(path);
@@ -212,6 +237,15 @@ TEST_F(GltfMorphWeights, NodeWeightsOverrideMeshWeightsWhichDefaultToZero) {
   EXPECT_FLOAT_EQ(second_vertex(doc).x, 1.5);
   doc["nodes"][0]["weights"] = {2.0};
   EXPECT_FLOAT_EQ(second_vertex(doc).x, 3);
+}
+
+TEST_F(GltfMorphWeights, StaticWeightsDoNotMotionBlur) {
+  json doc = morphing_triangle();
+  doc["meshes"][0]["weights"] = {0.5};
+  GltfLoadOptions options;
+  options.exposure_s = 1.0 / 60;
+  Scene scene = load_gltf(write("static-morph.gltf", doc), options);
+  EXPECT_FALSE(scene.meshes[scene.instances.at(0).mesh].deforms());
 }
 
 TEST_F(GltfMorphWeights, MismatchedTargetCountIsAnError) {

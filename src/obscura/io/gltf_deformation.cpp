@@ -108,16 +108,11 @@ void apply_skin(Mesh& mesh, const PrimitiveDeformation& d, std::span<const Matri
 }
 
 GltfDeformer::GltfDeformer(const tinygltf::Model& model, std::string file,
-                           GltfAccessorReader& accessors, const NodeAnimations& animations,
-                           double time_s)
-    : model_(model),
-      file_(std::move(file)),
-      accessors_(accessors),
-      animations_(animations),
-      time_s_(time_s) {}
+                           GltfAccessorReader& accessors, const NodeAnimations& animations)
+    : model_(model), file_(std::move(file)), accessors_(accessors), animations_(animations) {}
 
-std::vector<double> GltfDeformer::morph_weights(int node) const {
-  if (std::optional<std::vector<double>> animated = animations_.weights_at(node, time_s_))
+std::vector<double> GltfDeformer::morph_weights(int node, double time_s) const {
+  if (std::optional<std::vector<double>> animated = animations_.weights_at(node, time_s))
     return *animated;
   const tinygltf::Node& n = model_.nodes[size_t(node)];
   if (!n.weights.empty()) return n.weights;
@@ -129,8 +124,29 @@ bool GltfDeformer::deforms(int node) {
   if (n.mesh < 0 || size_t(n.mesh) >= model_.meshes.size()) return false;
   if (n.skin >= 0) return true;
   if (morph_target_count(model_, node) == 0) return false;
-  std::vector<double> w = morph_weights(node);
+  if (animations_.weights_at(node, 0)) return true;
+  std::vector<double> w = morph_weights(node, 0);
   return std::any_of(w.begin(), w.end(), [](double x) { return x != 0; });
+}
+
+bool GltfDeformer::animated(int node) const {
+  const tinygltf::Node& n = model_.nodes[size_t(node)];
+  return (n.skin >= 0 && !model_.animations.empty()) || animations_.weights_at(node, 0).has_value();
+}
+
+MeshDeformation GltfDeformer::deformation(const Mesh& base, int node, size_t primitive,
+                                          const Matrix4& world_from_node, const std::string& where,
+                                          double open_s, double close_s) {
+  MeshDeformation d{.open_s = open_s, .close_s = close_s, .positions = {}, .normals = {}};
+  bool changes = false;
+  for (int k = 0; k < kDeformationSteps; ++k) {
+    double t = open_s + (close_s - open_s) * k / (kDeformationSteps - 1);
+    Mesh posed = deform(base, node, primitive, world_from_node, where, t);
+    changes = changes || (k > 0 && posed.positions != d.positions.front());
+    d.positions.push_back(std::move(posed.positions));
+    if (!posed.normals.empty()) d.normals.push_back(std::move(posed.normals));
+  }
+  return changes ? d : MeshDeformation{};
 }
 
 const PrimitiveDeformation& GltfDeformer::primitive_data(int mesh, size_t primitive,
@@ -235,10 +251,10 @@ const std::vector<Matrix4>& GltfDeformer::inverse_binds(int skin) {
 }
 
 Mesh GltfDeformer::deform(Mesh base, int node, size_t primitive, const Matrix4& world_from_node,
-                          const std::string& where) {
+                          const std::string& where, double time_s) {
   const tinygltf::Node& n = model_.nodes[size_t(node)];
   const PrimitiveDeformation& d = primitive_data(n.mesh, primitive, base.positions.size(), where);
-  if (!d.targets.empty()) apply_morph_targets(base, d, morph_weights(node));
+  if (!d.targets.empty()) apply_morph_targets(base, d, morph_weights(node, time_s));
   if (n.skin < 0) return base;
   const std::string skin_at = "nodes[" + std::to_string(node) + "].skin";
   if (size_t(n.skin) >= model_.skins.size())
@@ -258,7 +274,7 @@ Mesh GltfDeformer::deform(Mesh base, int node, size_t primitive, const Matrix4& 
       throw Error(
           file_ + ": skins[" + std::to_string(n.skin) + "].joints[" + std::to_string(j) + "]",
           "node index " + std::to_string(joint) + " is out of range");
-    joints[j] = *node_from_world * animations_.world_at(joint, time_s_) * binds[j];
+    joints[j] = *node_from_world * animations_.world_at(joint, time_s) * binds[j];
   }
   // Exporters fill unused influences with joint 0 and weight 0: only weighted ones must exist.
   for (size_t i = 0; i < d.joints.size(); ++i)

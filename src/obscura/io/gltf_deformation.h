@@ -1,6 +1,7 @@
 // Skins and morph targets (glTF 2.0 §3.7.2.2 and §3.7.3): a primitive's vertices deformed at one
-// time. The loader poses each deformed mesh once, at the render time; both renderers then see an
-// ordinary mesh.
+// time. The loader poses each deformed mesh at the render time (its positions, what a still
+// shows) and, when the deformation is animated and the shutter open, at kDeformationSteps times
+// across the shutter (Mesh::deformation), which both renderers interpolate for motion blur.
 //
 // Morph targets first: attribute = base + Σ weightᵢ · deltaᵢ (POSITION, NORMAL, TANGENT), with
 // the node's weights, else the mesh's, else zeros, or the 'weights' animation channel at the time.
@@ -46,21 +47,34 @@ void apply_morph_targets(Mesh& mesh, const PrimitiveDeformation& d,
 // Applies the skin with one matrix per joint of the skin (mesh node space ← bind space).
 void apply_skin(Mesh& mesh, const PrimitiveDeformation& d, std::span<const Matrix4> joint_matrices);
 
+// Poses across a shutter: 8 segments, each interpolated linearly (as Embree does between its
+// time steps); a 1/60 s shutter over a walk cycle bends no joint visibly within one segment.
+inline constexpr int kDeformationSteps = 9;
+
 class GltfDeformer {
  public:
-  // Poses everything at `time_s` (seconds on the file's animation clock).
+  // Times are seconds on the file's animation clock.
   GltfDeformer(const tinygltf::Model& model, std::string file, GltfAccessorReader& accessors,
-               const NodeAnimations& animations, double time_s);
+               const NodeAnimations& animations);
 
-  // Whether the node's mesh changes shape: a skin, or morph targets with a weight ≠ 0.
+  // Whether the node's mesh changes shape: a skin, or morph targets with a weight ≠ 0 at some
+  // time.
   bool deforms(int node);
-  // `base` (primitive `primitive` of the node's mesh) deformed for node `node`, whose world
-  // transform (the instance's) is `world_from_node`. `where` names the primitive in messages.
+  // Whether that shape changes with time: a skin in a file with an animation, or a 'weights'
+  // channel on the node.
+  bool animated(int node) const;
+  // `base` (primitive `primitive` of the node's mesh) deformed for node `node` at `time_s`; the
+  // node's world transform (the instance's) is `world_from_node`. `where` names the primitive.
   Mesh deform(Mesh base, int node, size_t primitive, const Matrix4& world_from_node,
-              const std::string& where);
+              const std::string& where, double time_s);
+  // The same at kDeformationSteps times from open_s to close_s, as a Mesh::deformation; empty
+  // when the shape does not change over them.
+  MeshDeformation deformation(const Mesh& base, int node, size_t primitive,
+                              const Matrix4& world_from_node, const std::string& where,
+                              double open_s, double close_s);
 
  private:
-  std::vector<double> morph_weights(int node) const;
+  std::vector<double> morph_weights(int node, double time_s) const;
   const PrimitiveDeformation& primitive_data(int mesh, size_t primitive, size_t vertex_count,
                                              const std::string& where);
   const std::vector<Matrix4>& inverse_binds(int skin);
@@ -69,7 +83,6 @@ class GltfDeformer {
   std::string file_;
   GltfAccessorReader& accessors_;
   const NodeAnimations& animations_;
-  double time_s_;
   std::map<std::pair<int, size_t>, PrimitiveDeformation> primitives_;
   std::map<int, std::vector<Matrix4>> inverse_binds_;
 };

@@ -59,18 +59,6 @@ void warn_unapplied_gltf_features(const tinygltf::Model& model, const std::strin
   texcoord.warn(file, "a texture on TEXCOORD_1 or above", "sampled with TEXCOORD_0 instead",
                 warnings);
 
-  // Skins and morph targets are posed once, at the render time: the renderers move only whole
-  // instances over the shutter, so an animated deformation is sharp, not motion-blurred.
-  bool animated_deformation = false;
-  for (const tinygltf::Animation& a : model.animations)
-    for (const tinygltf::AnimationChannel& c : a.channels)
-      if (c.target_path == "weights") animated_deformation = true;
-  if (!model.skins.empty() && !model.animations.empty()) animated_deformation = true;
-  if (animated_deformation)
-    warnings.push_back(file +
-                       ": skinned and morphed meshes are posed at the render time (--time) "
-                       "and not motion-blurred over the shutter (rigid node motion is)");
-
   Uses other_targets;
   for (size_t i = 0; i < model.meshes.size(); ++i)
     for (const tinygltf::Primitive& p : model.meshes[i].primitives) {

@@ -463,8 +463,13 @@ void GltfImporter::add_mesh_instances(int node_index, const Matrix4& world_from_
     uint32_t mesh = p.mesh;
     if (deformed) {  // a shape of its own, for this node at the pose time
       std::string at = element("meshes", node.mesh) + "." + element("primitives", p.primitive);
+      const Mesh& base = scene_.meshes[p.mesh];
       Mesh posed =
-          deformer_->deform(scene_.meshes[p.mesh], node_index, p.primitive, world_from_node, at);
+          deformer_->deform(base, node_index, p.primitive, world_from_node, at, options_.time_s);
+      if (options_.exposure_s > 0 && deformer_->animated(node_index))
+        posed.deformation = deformer_->deformation(base, node_index, p.primitive, world_from_node,
+                                                   at, options_.time_s - options_.exposure_s / 2,
+                                                   options_.time_s + options_.exposure_s / 2);
       posed.name.append(" (").append(node.name.empty() ? where : node.name).append(")");
       mesh = uint32_t(scene_.meshes.size());
       scene_.meshes.push_back(std::move(posed));
@@ -545,7 +550,7 @@ Scene GltfImporter::import() {
   scene_.name = std::filesystem::path(file_).stem().string();
   import_materials();
   animations_ = NodeAnimations(model_, file_, accessors_, scene_.warnings);
-  deformer_.emplace(model_, file_, accessors_, animations_, options_.time_s);
+  deformer_.emplace(model_, file_, accessors_, animations_);
   int scene_index = choose_gltf_scene(model_, options_.scene, file_);
   if (!model_.scenes.empty()) {
     for (int root : model_.scenes[scene_index].nodes) visit_node(root, Matrix4::identity(), 0);

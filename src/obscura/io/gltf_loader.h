@@ -34,6 +34,9 @@ struct GltfLoadOptions {
   // When skins and morph targets are posed (seconds on the animation's clock); rigid node
   // animation is kept whole as keyframes for the renderers to sample over the shutter.
   double time_s = 0;
+  // The shutter's length around time_s: animated skins and morphs are also posed across it
+  // (Mesh::deformation) so that they motion-blur; 0 poses them once.
+  double exposure_s = 0;
 };
 
 // Throws obscura::Error naming the file and the glTF element (e.g. "meshes[2].primitives[0]")

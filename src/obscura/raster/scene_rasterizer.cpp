@@ -158,8 +158,10 @@ SceneRasterizer::SceneRasterizer(const Scene& scene, RasterSettings settings)
   scene.validate();
   vertices_.resize(scene.meshes.size());
   indices_.resize(scene.meshes.size());
-  for (size_t m = 0; m < scene.meshes.size(); ++m)
+  for (size_t m = 0; m < scene.meshes.size(); ++m) {
     compile_mesh(scene.meshes[m], vertices_[m], indices_[m]);
+    if (scene.meshes[m].deforms()) deforming_.emplace(uint32_t(m), scene.meshes[m]);
+  }
 
   std::vector<bool> used = used_textures(scene);
   std::vector<const Texture*> texture_of(scene.textures.size(), nullptr);
@@ -187,11 +189,15 @@ SceneRasterizer::SceneRasterizer(const Scene& scene, RasterSettings settings)
                             "); drawn at its time-0 pose");
       }
     }
-    for (Point3f p : scene.meshes[instance.mesh].positions) {
+    const Mesh& mesh = scene.meshes[instance.mesh];
+    auto cover = [&](Point3f p) {
       bounds_ = unite(bounds_, instance.world_from_object(p));
       for (const TransformKey& k : instance.motion)
         bounds_ = unite(bounds_, k.world_from_object(p));
-    }
+    };
+    for (Point3f p : mesh.positions) cover(p);
+    for (const std::vector<Point3f>& step : mesh.deformation.positions)
+      for (Point3f p : step) cover(p);
     instances_.push_back(std::move(c));
     const Material& material = scene.materials[scene.material_of(instance)];
     if (settings.surface_lights && !material.emission.is_black())
@@ -224,6 +230,15 @@ SceneRasterizer::SceneRasterizer(const Scene& scene, RasterSettings settings)
     }
     lights_.ambient = mean;
   }
+}
+
+std::pair<const std::vector<MeshVertex>*, const std::vector<uint32_t>*> SceneRasterizer::mesh_at(
+    uint32_t mesh, double time_s, std::vector<MeshVertex>& scratch,
+    std::vector<uint32_t>& scratch_indices) const {
+  auto found = deforming_.find(mesh);
+  if (found == deforming_.end()) return {&vertices_[mesh], &indices_[mesh]};
+  compile_mesh(found->second.posed_at(time_s), scratch, scratch_indices);
+  return {&scratch, &scratch_indices};
 }
 
 Transform SceneRasterizer::world_from_object(const CompiledInstance& instance,
@@ -270,7 +285,10 @@ ShadowMap SceneRasterizer::render_shadow_map(const Matrix4& clip_from_world, flo
   for (const CompiledInstance& instance : instances_) {
     DepthOnlyProgram<MeshVertex> program{
         Matrix4f(clip_from_world * world_from_object(instance, time_s).matrix())};
-    draw(map.depth, DrawState{}, program, vertices_[instance.mesh], indices_[instance.mesh]);
+    std::vector<MeshVertex> scratch;
+    std::vector<uint32_t> scratch_indices;
+    auto [vertices, indices] = mesh_at(instance.mesh, time_s, scratch, scratch_indices);
+    draw(map.depth, DrawState{}, program, *vertices, *indices);
   }
   return map;
 }
@@ -339,8 +357,12 @@ void SceneRasterizer::render_frame(const Camera& camera, const RasterFrame& fram
     state.front_face =
         world_from_object.swaps_handedness() ? FrontFace::kClockwise : FrontFace::kCounterClockwise;
     state.wireframe = settings_.wireframe;
-    const std::vector<MeshVertex>& vertices = vertices_[instance.mesh];
-    const std::vector<uint32_t>& indices = indices_[instance.mesh];
+    std::vector<MeshVertex> scratch;
+    std::vector<uint32_t> scratch_indices;
+    auto [posed_vertices, posed_indices] =
+        mesh_at(instance.mesh, frame.time_s, scratch, scratch_indices);
+    const std::vector<MeshVertex>& vertices = *posed_vertices;
+    const std::vector<uint32_t>& indices = *posed_indices;
     if (settings_.shading == ShadingMode::kGouraud) {
       draw(target, state, SceneGouraudProgram{u}, vertices, indices);
     } else {
