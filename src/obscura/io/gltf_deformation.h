@@ -11,6 +11,7 @@
 // asks). Normals go by the inverse transpose of the blended matrix, tangents by the matrix.
 #pragma once
 
+#include <cstddef>
 #include <map>
 #include <span>
 #include <string>
@@ -50,6 +51,9 @@ void apply_skin(Mesh& mesh, const PrimitiveDeformation& d, std::span<const Matri
 // Poses across a shutter: 8 segments, each interpolated linearly (as Embree does between its
 // time steps); a 1/60 s shutter over a walk cycle bends no joint visibly within one segment.
 inline constexpr int kDeformationSteps = 9;
+// Vertices posed in all (each deformed node's copy and its steps, ~28 bytes each: ~1.9 GB), so
+// that many nodes skinning one large mesh cannot multiply it without limit.
+inline constexpr size_t kMaxPosedVertices = size_t(1) << 26;
 
 class GltfDeformer {
  public:

@@ -157,6 +157,8 @@ class GltfImporter {
   GltfLoadOptions options_;
   std::optional<GltfDeformer> deformer_;
   size_t gpu_instance_budget_ = kMaxGpuInstances;
+  size_t placed_copies_ = 0;
+  size_t posed_vertices_ = 0;
 };
 
 double number(const tinygltf::Value& v, const char* key, double fallback) {
@@ -459,11 +461,24 @@ void GltfImporter::add_mesh_instances(int node_index, const Matrix4& world_from_
   const bool instanced = !copies.empty();
   if (!instanced) copies.push_back(Matrix4::identity());
   const bool deformed = deformer_->deforms(node_index);
-  for (const PrimitiveMesh& p : import_mesh(node.mesh)) {
+  const std::vector<PrimitiveMesh> primitives = import_mesh(node.mesh);
+  // Copies × primitives instances, against the same bound as the copies alone.
+  if (instanced && copies.size() * primitives.size() > kMaxGpuInstances - placed_copies_)
+    fail(where + ".extensions.EXT_mesh_gpu_instancing",
+         std::to_string(copies.size()) + " copies of " + std::to_string(primitives.size()) +
+             " primitives; a file may place at most " + std::to_string(kMaxGpuInstances) +
+             " instanced copies in all");
+  if (instanced) placed_copies_ += copies.size() * primitives.size();
+  for (const PrimitiveMesh& p : primitives) {
     uint32_t mesh = p.mesh;
     if (deformed) {  // a shape of its own, for this node at the pose time
       std::string at = element("meshes", node.mesh) + "." + element("primitives", p.primitive);
       const Mesh& base = scene_.meshes[p.mesh];
+      // Each posed node holds its own copy (and poses across the shutter): bounded in all.
+      posed_vertices_ += base.positions.size() * size_t(1 + kDeformationSteps);
+      if (posed_vertices_ > kMaxPosedVertices)
+        fail(where, "skinned or morphed meshes need more than " +
+                        std::to_string(kMaxPosedVertices) + " posed vertices in all");
       Mesh posed =
           deformer_->deform(base, node_index, p.primitive, world_from_node, at, options_.time_s);
       if (options_.exposure_s > 0 && deformer_->animated(node_index))
