@@ -168,6 +168,17 @@ void apply_lens_overrides(Camera& camera, const CameraOverrides& o) {
     camera.lens.aperture.rotation_degrees = *o.aperture_rotation_degrees;
 }
 
+}  // namespace
+
+Shutter shutter_option(const CameraOverrides& o) {
+  if (!o.shutter) return Shutter{};
+  std::vector<double> times =
+      parse_list(*o.shutter, ':', 2, "--shutter", "OPEN:CLOSE in seconds (0:1/60)");
+  return {.open_s = times[0], .close_s = times[1]};
+}
+
+namespace {
+
 void apply_film_overrides(Camera& camera, const CameraOverrides& o) {
   if (o.shutter) {
     std::vector<double> times =

@@ -35,6 +35,9 @@ struct CameraOverrides {
 
 void add_camera_options(CLI::App& command, CameraOverrides& overrides);
 
+// The shutter --shutter gives, else the default one (a malformed value throws UsageError).
+Shutter shutter_option(const CameraOverrides& overrides);
+
 // The scene's camera named by --camera (or its only camera), with the overrides applied, at
 // width × height pixels when given, validated. A malformed option value throws UsageError;
 // an unknown camera or an invalid result throws obscura::Error.

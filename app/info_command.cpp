@@ -10,6 +10,7 @@
 #include "image_limit_option.h"
 #include "obscura/io/scene_loader.h"
 #include "obscura/scene/material_variants.h"
+#include "scene_choice_options.h"
 
 namespace obscura::app {
 
@@ -36,9 +37,10 @@ const char* light_type(const LightModel& model) {
   return "directional";
 }
 
-void run_info(const std::string& name, bool verbose, const std::string& variant) {
+void run_info(const std::string& name, bool verbose, const SceneChoiceOptions& choice,
+              const std::string& variant) {
   auto start = std::chrono::steady_clock::now();
-  Scene scene = load_scene(name);
+  Scene scene = load_scene(name, gltf_load_options(choice, Shutter{}));
   if (!variant.empty()) select_material_variant(scene, variant);
   double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   rusage usage{};
@@ -101,6 +103,7 @@ void add_info_command(CLI::App& app) {
   auto scene = std::make_shared<std::string>();
   auto verbose = std::make_shared<bool>(false);
   auto variant = std::make_shared<std::string>();
+  auto choice = std::make_shared<SceneChoiceOptions>();
   CLI::App* info =
       app.add_subcommand("info", "Print what a scene holds: counts, bounds, load time, memory");
   info->add_option("scene", *scene,
@@ -108,8 +111,10 @@ void add_info_command(CLI::App& app) {
   info->add_flag("-v,--verbose", *verbose, "Also list materials, textures, lights and cameras");
   info->add_option("--gltf-variant", *variant,
                    "Select a glTF material variant (KHR_materials_variants) by name");
+  add_scene_choice_options(*info, *choice);
   add_max_image_pixels_option(info);
-  info->callback([scene, verbose, variant] { run_info(*scene, *verbose, *variant); });
+  info->callback(
+      [scene, verbose, choice, variant] { run_info(*scene, *verbose, *choice, *variant); });
 }
 
 }  // namespace obscura::app

@@ -14,7 +14,7 @@ namespace {
 
 bool scene_moves(const Scene& scene) {
   for (const Instance& instance : scene.instances)
-    if (instance.animated()) return true;
+    if (instance.animated() || scene.meshes[instance.mesh].deforms()) return true;
   return false;
 }
 

@@ -20,6 +20,7 @@
 #include "progress_bar.h"
 #include "raster_effects_options.h"
 #include "raster_options.h"
+#include "scene_choice_options.h"
 #include "tracer_options.h"
 #include "usage_error.h"
 
@@ -40,6 +41,7 @@ struct RenderOptions {
   double environment_intensity = 1;
   std::string gltf_variant;  // KHR_materials_variants: a variant's name; empty = the defaults
   CameraOverrides camera;
+  SceneChoiceOptions choice;
   DisplayOptions display;
   TracerOptions tracer;
   RasterOptions raster;
@@ -111,7 +113,9 @@ void run_render(RenderOptions options) {
   if (options.threads > 0)
     thread_limit.emplace(tbb::global_control::max_allowed_parallelism, size_t(options.threads));
 
-  Scene scene = load_scene(options.scene);
+  // Skins and morph targets are posed when the file is read, at the shutter's middle.
+  const Shutter shutter = shutter_option(options.camera);
+  Scene scene = obscura::load_scene(options.scene, gltf_load_options(options.choice, shutter));
   if (!options.gltf_variant.empty()) select_material_variant(scene, options.gltf_variant);
   EnvironmentChoice environment = parse_environment_choice(options.environment);
   environment.intensity = float(options.environment_intensity);
@@ -126,6 +130,7 @@ void run_render(RenderOptions options) {
   if (!options.quiet)
     for (const std::string& w : scene.warnings) std::fprintf(stderr, "warning: %s\n", w.c_str());
   scene.camera = resolve_camera(scene, options.camera, options.width, options.height);
+  scene.camera.shutter = shutter_at_time(options.choice, scene.camera.shutter);
   scene.validate();
 
   Bounds2i crop = scene.camera.film.crop_pixels();
@@ -237,6 +242,7 @@ void add_render_command(CLI::App& app) {
                      "Render a glTF file's material variant (KHR_materials_variants) by name; "
                      "`obscura info` lists them");
   add_camera_options(*render, options->camera);
+  add_scene_choice_options(*render, options->choice);
   add_display_options(render, options->display);
   add_max_image_pixels_option(render);
   add_tracer_options(*render, options->tracer);

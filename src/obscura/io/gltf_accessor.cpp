@@ -60,6 +60,7 @@ std::string component_type_name(int component_type) {
 }
 
 std::string vector_type_name(int components) {
+  if (components == 16) return "MAT4";
   return components == 1 ? "SCALAR" : "VEC" + std::to_string(components);
 }
 
@@ -241,7 +242,9 @@ std::vector<float> GltfAccessorReader::floats(int index,
   }
   const std::string at = file_ + ": " + where + " (accessor " + std::to_string(index) + ")";
   bool vector = l.type == TINYGLTF_TYPE_SCALAR || l.type == TINYGLTF_TYPE_VEC2 ||
-                l.type == TINYGLTF_TYPE_VEC3 || l.type == TINYGLTF_TYPE_VEC4;
+                l.type == TINYGLTF_TYPE_VEC3 || l.type == TINYGLTF_TYPE_VEC4 ||
+                // Float MAT4 (inverse bind matrices): columns need no padding, read as 16 floats.
+                (l.type == TINYGLTF_TYPE_MAT4 && l.component_type == TINYGLTF_COMPONENT_TYPE_FLOAT);
   if (!vector || std::find(allowed_components.begin(), allowed_components.end(), l.components) ==
                      allowed_components.end()) {
     std::string expected;

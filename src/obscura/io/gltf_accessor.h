@@ -42,7 +42,8 @@ class GltfAccessorReader {
   // Number of elements of accessor `index`.
   uint64_t count(int index, const std::string& where) const;
 
-  // Elements of `components` numbers each (one of `allowed_components`), flattened; normalized
+  // Elements of `components` numbers each (one of `allowed_components`; 16 means a FLOAT MAT4,
+  // column-major as stored), flattened; normalized
   // integers map to [0, 1] or [−1, 1] as the spec says, other integers keep their value.
   // Sparse substitutions (§3.6.2.5) are applied, validated like the dense data.
   std::vector<float> floats(int index, std::initializer_list<int> allowed_components,

@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstring>
+#include <limits>
 #include <set>
 
 #include "obscura/io/gltf_accessor.h"
@@ -75,6 +76,16 @@ Transform without_scale(const Matrix4& m) {
   return Transform(r);
 }
 
+int morph_target_count(const tinygltf::Model& model, int node) {
+  if (node < 0 || size_t(node) >= model.nodes.size()) return 0;
+  int mesh = model.nodes[size_t(node)].mesh;
+  if (mesh < 0 || size_t(mesh) >= model.meshes.size()) return 0;
+  size_t count = 0;
+  for (const tinygltf::Primitive& p : model.meshes[size_t(mesh)].primitives)
+    count = std::max(count, p.targets.size());
+  return int(std::min<size_t>(count, 1 << 16));
+}
+
 NodeAnimations::NodeAnimations(const tinygltf::Model& model, const std::string& file,
                                GltfAccessorReader& accessors, std::vector<std::string>& warnings)
     : model_(&model), file_(file), parent_(model.nodes.size(), -1) {
@@ -98,15 +109,24 @@ NodeAnimations::NodeAnimations(const tinygltf::Model& model, const std::string& 
       throw Error(where + ".sampler", "sampler index " + std::to_string(ch.sampler) +
                                           " is out of range (the animation has " +
                                           std::to_string(animation.samplers.size()) + ")");
+    const bool weights = ch.target_path == "weights";
     if (ch.target_path != "translation" && ch.target_path != "rotation" &&
-        ch.target_path != "scale") {
+        ch.target_path != "scale" && !weights) {
       warnings.push_back(where + ": '" + ch.target_path + "' animation is not supported");
       continue;
     }
-    if (model.nodes[size_t(ch.target_node)].matrix.size() != 0)
+    if (!weights && model.nodes[size_t(ch.target_node)].matrix.size() != 0)
       throw Error(where + ".target.node", "node " + std::to_string(ch.target_node) +
                                               " has a matrix; an animated node must use TRS");
-    const int width = ch.target_path == "rotation" ? 4 : 3;
+    // Morph weights: one number per morph target of the node's mesh, per key.
+    const int width = weights                        ? morph_target_count(model, ch.target_node)
+                      : ch.target_path == "rotation" ? 4
+                                                     : 3;
+    if (width == 0) {
+      warnings.push_back(where + ": 'weights' animation of node " + std::to_string(ch.target_node) +
+                         ", which has no mesh with morph targets; ignored");
+      continue;
+    }
     const tinygltf::AnimationSampler& s = animation.samplers[size_t(ch.sampler)];
     std::string sampler_path = "animations[0].samplers[" + std::to_string(ch.sampler) + "]";
     if (s.interpolation != "LINEAR" && s.interpolation != "STEP" &&
@@ -118,11 +138,14 @@ NodeAnimations::NodeAnimations(const tinygltf::Model& model, const std::string& 
     // Counts first, so that a mismatch is reported before either array is decoded.
     uint64_t keys = accessors.count(s.input, sampler_path + ".input");
     uint64_t outputs = accessors.count(s.output, sampler_path + ".output");
-    if (outputs != keys * (cubic ? 3 : 1))
+    // Weights are SCALAR outputs, `width` per key; the other paths are one VEC3/VEC4 per key.
+    const uint64_t per_key = (cubic ? 3 : 1) * uint64_t(weights ? width : 1);
+    if (keys > std::numeric_limits<uint32_t>::max() || outputs != keys * per_key)
       throw Error(file + ": " + sampler_path,
                   "input has " + std::to_string(keys) + " key times but output has " +
                       std::to_string(outputs) + " values (expected " +
-                      std::to_string(keys * (cubic ? 3 : 1)) + " for " + s.interpolation + ")");
+                      std::to_string(keys * per_key) + " for " + s.interpolation +
+                      (weights ? " and " + std::to_string(width) + " morph targets" : "") + ")");
     Channel channel;
     std::vector<float> times =
         accessors.floats(s.input, {1}, AccessorNumbers::kFloat, sampler_path + ".input");
@@ -142,15 +165,17 @@ NodeAnimations::NodeAnimations(const tinygltf::Model& model, const std::string& 
           file + ": " + sampler_path + ".input",
           "the animation has more than " + std::to_string(kMaxAnimationKeys) + " key times in all");
     channel.times.assign(times.begin(), times.end());
-    std::vector<float> values =
-        accessors.floats(s.output, {width},
-                         width == 4 ? AccessorNumbers::kFloatOrNormalized : AccessorNumbers::kFloat,
-                         sampler_path + ".output");
+    std::vector<float> values = accessors.floats(
+        s.output, {weights ? 1 : width},
+        weights || width == 4 ? AccessorNumbers::kFloatOrNormalized : AccessorNumbers::kFloat,
+        sampler_path + ".output");
     for (size_t k = 0; k < values.size(); ++k)
       if (!std::isfinite(values[k]))
         throw Error(file + ": " + sampler_path + ".output",
                     "value " + std::to_string(k / width) + " is not finite");
     channel.step = s.interpolation == "STEP";
+    channel.width = width;
+    channel.rotation = ch.target_path == "rotation";
     if (cubic) {
       // Keep each key's value, dropping the tangents: linear between keys.
       warnings.push_back(where + ": CUBICSPLINE interpolation is approximated as LINEAR");
@@ -163,15 +188,18 @@ NodeAnimations::NodeAnimations(const tinygltf::Model& model, const std::string& 
     NodeChannels& node = channels_[ch.target_node];
     (ch.target_path == "translation" ? node.translation
      : ch.target_path == "rotation"  ? node.rotation
+     : weights                       ? node.weights
                                      : node.scale) = std::move(channel);
   }
 }
 
-namespace {
-
-// The value of a channel at `time`, `width` numbers, clamped outside the key range.
-std::vector<double> sample(const std::vector<double>& times, const std::vector<double>& values,
-                           bool step, int width, double time) {
+// The value of a channel at `time`, `width` numbers, clamped outside the key range; rotations
+// (quaternions) by slerp, everything else linearly.
+std::vector<double> NodeAnimations::sample(const Channel& c, double time) {
+  const std::vector<double>& times = c.times;
+  const std::vector<double>& values = c.values;
+  const size_t width = size_t(c.width);
+  const bool step = c.step;
   size_t hi = std::upper_bound(times.begin(), times.end(), time) - times.begin();
   if (hi == 0) return {values.begin(), values.begin() + width};
   if (hi == times.size() || step)
@@ -179,37 +207,36 @@ std::vector<double> sample(const std::vector<double>& times, const std::vector<d
   double t = (time - times[hi - 1]) / (times[hi] - times[hi - 1]);
   const double* a = &values[(hi - 1) * width];
   const double* b = &values[hi * width];
-  if (width == 4) {
+  if (c.rotation) {
     Quaternion q = slerp({a[0], a[1], a[2], a[3]}, {b[0], b[1], b[2], b[3]}, t);
     return {q.x, q.y, q.z, q.w};
   }
   std::vector<double> r(width);
-  for (int i = 0; i < width; ++i) r[i] = a[i] + (b[i] - a[i]) * t;
+  for (size_t i = 0; i < width; ++i) r[i] = a[i] + (b[i] - a[i]) * t;
   return r;
 }
-
-}  // namespace
 
 Matrix4 NodeAnimations::local_at(int node, double time) const {
   const tinygltf::Node& n = model_->nodes[node];
   auto found = channels_.find(node);
   if (found == channels_.end()) return node_matrix(n);
   const NodeChannels& c = found->second;
+  if (!c.translation && !c.rotation && !c.scale) return node_matrix(n);  // weights only
   Vector3d t, s(1, 1, 1);
   Quaternion q;
   if (n.translation.size() == 3) t = {n.translation[0], n.translation[1], n.translation[2]};
   if (n.scale.size() == 3) s = {n.scale[0], n.scale[1], n.scale[2]};
   if (n.rotation.size() == 4) q = {n.rotation[0], n.rotation[1], n.rotation[2], n.rotation[3]};
   if (c.translation) {
-    auto v = sample(c.translation->times, c.translation->values, c.translation->step, 3, time);
+    auto v = sample(*c.translation, time);
     t = {v[0], v[1], v[2]};
   }
   if (c.rotation) {
-    auto v = sample(c.rotation->times, c.rotation->values, c.rotation->step, 4, time);
+    auto v = sample(*c.rotation, time);
     q = {v[0], v[1], v[2], v[3]};
   }
   if (c.scale) {
-    auto v = sample(c.scale->times, c.scale->values, c.scale->step, 3, time);
+    auto v = sample(*c.scale, time);
     s = {v[0], v[1], v[2]};
   }
   return trs_matrix(t, q, s);
@@ -241,6 +268,20 @@ std::vector<TransformKey> NodeAnimations::world_keys(int node) {
     if (t) keys.push_back({time, *t});
   }
   return keys;
+}
+
+Matrix4 NodeAnimations::world_at(int node, double time) const {
+  Matrix4 m = Matrix4::identity();
+  int depth = 0;
+  for (int n = node; n >= 0 && depth < 256; n = parent_[size_t(n)], ++depth)
+    m = local_at(n, time) * m;
+  return m;
+}
+
+std::optional<std::vector<double>> NodeAnimations::weights_at(int node, double time) const {
+  auto found = channels_.find(node);
+  if (found == channels_.end() || !found->second.weights) return std::nullopt;
+  return sample(*found->second.weights, time);
 }
 
 }  // namespace obscura

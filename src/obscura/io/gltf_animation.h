@@ -1,5 +1,6 @@
-// glTF node transforms and their animation: local TRS/matrix → Matrix4, and keyframed world
-// transforms for motion blur from the first animation's translation/rotation/scale channels.
+// glTF node transforms and their animation: local TRS/matrix → Matrix4, keyframed world
+// transforms for motion blur from the first animation's translation/rotation/scale channels, and
+// the node transforms and morph weights at one time (for skins and morph targets).
 #pragma once
 
 #include <cstddef>
@@ -35,6 +36,8 @@ Matrix4 node_matrix(const tinygltf::Node& node);
 std::optional<Transform> invertible(const Matrix4& m);
 // Rotation and translation only (cameras and lights ignore scale).
 Transform without_scale(const Matrix4& m);
+// The most morph targets any primitive of the node's mesh has (0 without a mesh).
+int morph_target_count(const tinygltf::Model& model, int node);
 
 class NodeAnimations {
  public:
@@ -44,7 +47,7 @@ class NodeAnimations {
   static constexpr size_t kMaxWorldKeys = size_t(1) << 20;
 
   NodeAnimations() = default;
-  // Reads animations[0]; unsupported channels (morph weights) are reported in `warnings`.
+  // Reads animations[0]; unsupported channels are reported in `warnings`.
   // Every accessor is read through `accessors` (which bounds and checks them); throws
   // obscura::Error for inconsistent samplers (counts, times that are not finite or do not
   // increase) and out-of-range node or sampler references.
@@ -53,6 +56,10 @@ class NodeAnimations {
 
   // The node's local transform at `time` (its static TRS where no channel animates it).
   Matrix4 local_at(int node, double time) const;
+  // The node's object→world transform at `time` (through its ancestors).
+  Matrix4 world_at(int node, double time) const;
+  // The node's morph target weights at `time` when a 'weights' channel animates them.
+  std::optional<std::vector<double>> weights_at(int node, double time) const;
   // Keyframes of the node's object→world transform at every key time of it and its ancestors;
   // empty when nothing on its path to the root is animated. Throws obscura::Error past
   // kMaxWorldKeys keys over all calls.
@@ -61,12 +68,15 @@ class NodeAnimations {
  private:
   struct Channel {
     std::vector<double> times;
-    std::vector<double> values;  // 3 or 4 per key
+    std::vector<double> values;  // `width` per key
+    int width = 3;               // 3 (translation, scale), 4 (rotation) or the morph targets
+    bool rotation = false;       // quaternions: slerp between keys
     bool step = false;
   };
   struct NodeChannels {
-    std::optional<Channel> translation, rotation, scale;
+    std::optional<Channel> translation, rotation, scale, weights;
   };
+  static std::vector<double> sample(const Channel& channel, double time);
   const tinygltf::Model* model_ = nullptr;
   std::string file_;
   size_t read_keys_ = 0;

@@ -53,28 +53,22 @@ void warn_unapplied_gltf_features(const tinygltf::Model& model, const std::strin
   texcoord.warn(file, "a texture on TEXCOORD_1 or above", "sampled with TEXCOORD_0 instead",
                 warnings);
 
-  Uses skins;
-  for (size_t i = 0; i < model.skins.size(); ++i)
-    skins.add("skins[" + std::to_string(i) + "]" +
-              (model.skins[i].name.empty() ? "" : " '" + model.skins[i].name + "'"));
-  skins.warn(file, "skinning", "skinned meshes render in their bind pose", warnings);
-
-  Uses morphs;
+  Uses other_targets;
   for (size_t i = 0; i < model.meshes.size(); ++i)
-    for (const tinygltf::Primitive& p : model.meshes[i].primitives)
-      if (!p.targets.empty()) {
-        morphs.add("meshes[" + std::to_string(i) + "]" +
-                   (model.meshes[i].name.empty() ? "" : " '" + model.meshes[i].name + "'"));
+    for (const tinygltf::Primitive& p : model.meshes[i].primitives) {
+      bool other = false;
+      for (const auto& target : p.targets)
+        for (const auto& [attribute, accessor] : target)
+          other =
+              other || (attribute != "POSITION" && attribute != "NORMAL" && attribute != "TANGENT");
+      if (other) {
+        other_targets.add("meshes[" + std::to_string(i) + "]" +
+                          (model.meshes[i].name.empty() ? "" : " '" + model.meshes[i].name + "'"));
         break;
       }
-  morphs.warn(file, "morph targets", "meshes render with their base shape", warnings);
-
-  if (model.scenes.size() > 1) {
-    int shown = model.defaultScene >= 0 ? model.defaultScene : 0;
-    warnings.push_back(file + ": the file has " + std::to_string(model.scenes.size()) +
-                       " scenes; only scenes[" + std::to_string(shown) +
-                       "] (its default) is rendered");
-  }
+    }
+  other_targets.warn(file, "morph targets of TEXCOORD_n or COLOR_n",
+                     "those attributes keep their base values", warnings);
 }
 
 }  // namespace obscura

@@ -16,11 +16,14 @@
 #include "obscura/io/gltf_animation.h"
 #include "obscura/io/gltf_compression_prepass.h"
 #include "obscura/io/gltf_decompressed_buffers.h"
+#include "obscura/io/gltf_deformation.h"
 #include "obscura/io/gltf_draco.h"
 #include "obscura/io/gltf_feature_warnings.h"
+#include "obscura/io/gltf_gpu_instancing.h"
 #include "obscura/io/gltf_material_extensions.h"
 #include "obscura/io/gltf_meshopt.h"
 #include "obscura/io/gltf_missing_image.h"
+#include "obscura/io/gltf_scene_choice.h"
 #include "obscura/io/gltf_validation.h"
 #include "obscura/io/input_file.h"
 #include "obscura/io/texture_loader.h"
@@ -92,12 +95,14 @@ bool decode_image(tinygltf::Image* image, const int image_index, std::string*, s
 class GltfImporter {
  public:
   GltfImporter(const tinygltf::Model& model, std::string file, ImageStore& images,
-               std::vector<std::string> warnings, std::set<std::string> ignored_extensions)
+               std::vector<std::string> warnings, std::set<std::string> ignored_extensions,
+               GltfLoadOptions options)
       : model_(model),
         file_(std::move(file)),
         images_(images),
         accessors_(model_, file_),
-        ignored_extensions_(std::move(ignored_extensions)) {
+        ignored_extensions_(std::move(ignored_extensions)),
+        options_(std::move(options)) {
     scene_.warnings = std::move(warnings);
   }
 
@@ -135,7 +140,14 @@ class GltfImporter {
   UvTransform uv_transform(const tinygltf::Value& value, const std::string& where) const;
   void import_materials();
   uint32_t default_material();
-  std::vector<std::pair<uint32_t, uint32_t>> import_mesh(int mesh_index);
+  // One glTF primitive as our mesh, with the material it is drawn with.
+  struct PrimitiveMesh {
+    uint32_t mesh = 0, material = 0;
+    size_t primitive = 0;  // index in the glTF mesh's primitives
+  };
+  std::vector<PrimitiveMesh> import_mesh(int mesh_index);
+  void add_mesh_instances(int node_index, const Matrix4& world_from_node,
+                          const Transform& world_from_object);
   Mesh import_primitive(const tinygltf::Primitive& primitive, const std::string& where,
                         const std::string& name);
   void import_light(int light_index, const Transform& world_from_light, const std::string& where);
@@ -147,8 +159,8 @@ class GltfImporter {
   GltfAccessorReader accessors_;
   Scene scene_;
   std::map<std::pair<int, TextureEncoding>, int32_t> textures_;  // (glTF texture, encoding) → ours
-  // Per glTF mesh, its primitives as (our mesh, material) pairs.
-  std::map<int, std::vector<std::pair<uint32_t, uint32_t>>> meshes_;
+  // Per glTF mesh, its primitives as our meshes.
+  std::map<int, std::vector<PrimitiveMesh>> meshes_;
   // Primitives that read the same accessors share one Mesh (instancing across glTF meshes).
   std::map<std::string, uint32_t> geometry_;
   int default_material_ = -1;
@@ -158,6 +170,11 @@ class GltfImporter {
   // KHR_materials_variants: per (our mesh, default material), its (variant, material) pairs.
   std::map<std::pair<uint32_t, uint32_t>, std::vector<std::pair<uint32_t, uint32_t>>>
       variant_materials_;
+  GltfLoadOptions options_;
+  std::optional<GltfDeformer> deformer_;
+  size_t gpu_instance_budget_ = kMaxGpuInstances;
+  size_t placed_copies_ = 0;
+  size_t posed_vertices_ = 0;
 };
 
 double number(const tinygltf::Value& v, const char* key, double fallback) {
@@ -433,11 +450,11 @@ Mesh GltfImporter::import_primitive(const tinygltf::Primitive& p, const std::str
   return mesh;
 }
 
-std::vector<std::pair<uint32_t, uint32_t>> GltfImporter::import_mesh(int mesh_index) {
+std::vector<GltfImporter::PrimitiveMesh> GltfImporter::import_mesh(int mesh_index) {
   auto found = meshes_.find(mesh_index);
   if (found != meshes_.end()) return found->second;
   const tinygltf::Mesh& gm = model_.meshes[mesh_index];
-  std::vector<std::pair<uint32_t, uint32_t>>& ours = meshes_[mesh_index];
+  std::vector<PrimitiveMesh>& ours = meshes_[mesh_index];
   for (size_t j = 0; j < gm.primitives.size(); ++j) {
     const tinygltf::Primitive& p = gm.primitives[j];
     std::string where = element("meshes", mesh_index) + "." + element("primitives", j);
@@ -460,10 +477,11 @@ std::vector<std::pair<uint32_t, uint32_t>> GltfImporter::import_mesh(int mesh_in
     if (p.material >= 0 && size_t(p.material) >= model_.materials.size())
       fail(where + ".material",
            "material index " + std::to_string(p.material) + " is out of range");
-    ours.emplace_back(shared->second, p.material >= 0 ? uint32_t(p.material) : default_material());
+    ours.push_back(
+        {shared->second, p.material >= 0 ? uint32_t(p.material) : default_material(), j});
     auto variants = p.extensions.find("KHR_materials_variants");
     if (variants != p.extensions.end())
-      variant_materials_[ours.back()] = read_gltf_variant_mappings(
+      variant_materials_[{ours.back().mesh, ours.back().material}] = read_gltf_variant_mappings(
           variants->second, scene_.material_variants.size(), model_.materials.size(), file_, where);
   }
   return ours;
@@ -493,6 +511,65 @@ void GltfImporter::import_light(int light_index, const Transform& world_from_lig
   scene_.lights.push_back(std::move(light));
 }
 
+void GltfImporter::add_mesh_instances(int node_index, const Matrix4& world_from_node,
+                                      const Transform& world_from_object) {
+  const tinygltf::Node& node = model_.nodes[size_t(node_index)];
+  const std::string where = element("nodes", node_index);
+  std::vector<TransformKey> motion = animations_.world_keys(node_index);
+  // A skinned mesh is posed by its joints alone: the node's own motion cancels out.
+  const bool skinned = node.skin >= 0;
+  if (skinned) motion.clear();
+  std::vector<Matrix4> copies =
+      gpu_instance_transforms(node, accessors_, file_, where, gpu_instance_budget_);
+  const bool instanced = !copies.empty();
+  if (!instanced) copies.push_back(Matrix4::identity());
+  const bool deformed = deformer_->deforms(node_index);
+  const std::vector<PrimitiveMesh> primitives = import_mesh(node.mesh);
+  // Copies × primitives instances, against the same bound as the copies alone.
+  if (instanced && copies.size() * primitives.size() > kMaxGpuInstances - placed_copies_)
+    fail(where + ".extensions.EXT_mesh_gpu_instancing",
+         std::to_string(copies.size()) + " copies of " + std::to_string(primitives.size()) +
+             " primitives; a file may place at most " + std::to_string(kMaxGpuInstances) +
+             " instanced copies in all");
+  if (instanced) placed_copies_ += copies.size() * primitives.size();
+  for (const PrimitiveMesh& p : primitives) {
+    uint32_t mesh = p.mesh;
+    if (deformed) {  // a shape of its own, for this node at the pose time
+      std::string at = element("meshes", node.mesh) + "." + element("primitives", p.primitive);
+      const Mesh& base = scene_.meshes[p.mesh];
+      // Each posed node holds its own copy (and poses across the shutter): bounded in all.
+      posed_vertices_ += base.positions.size() * size_t(1 + kDeformationSteps);
+      if (posed_vertices_ > kMaxPosedVertices)
+        fail(where, "skinned or morphed meshes need more than " +
+                        std::to_string(kMaxPosedVertices) + " posed vertices in all");
+      Mesh posed =
+          deformer_->deform(base, node_index, p.primitive, world_from_node, at, options_.time_s);
+      if (options_.exposure_s > 0 && deformer_->animated(node_index))
+        posed.deformation = deformer_->deformation(base, node_index, p.primitive, world_from_node,
+                                                   at, options_.time_s - options_.exposure_s / 2,
+                                                   options_.time_s + options_.exposure_s / 2);
+      posed.name.append(" (").append(node.name.empty() ? where : node.name).append(")");
+      mesh = uint32_t(scene_.meshes.size());
+      scene_.meshes.push_back(std::move(posed));
+    }
+    for (size_t c = 0; c < copies.size(); ++c) {
+      std::optional<Transform> object_from_copy = invertible(copies[c]);
+      if (!object_from_copy) continue;  // a copy scaled to zero draws nothing
+      Instance instance;
+      instance.name = node.name.empty() ? where : node.name;
+      if (instanced) instance.name.append("#").append(std::to_string(c));
+      instance.mesh = mesh;
+      instance.material = int32_t(p.material);
+      instance.world_from_object = world_from_object * *object_from_copy;
+      for (const TransformKey& key : motion)
+        instance.motion.push_back({key.time_seconds, key.world_from_object * *object_from_copy});
+      if (!instance.motion.empty())
+        instance.world_from_object = instance.motion.front().world_from_object;
+      scene_.instances.push_back(std::move(instance));
+    }
+  }
+}
+
 void GltfImporter::visit_node(int node_index, const Matrix4& world_from_parent, int depth) {
   std::string where = element("nodes", node_index);
   if (node_index < 0 || size_t(node_index) >= model_.nodes.size())
@@ -506,17 +583,7 @@ void GltfImporter::visit_node(int node_index, const Matrix4& world_from_parent, 
   if (node.mesh >= 0 && world_from_object) {
     if (size_t(node.mesh) >= model_.meshes.size())
       fail(where + ".mesh", "mesh index " + std::to_string(node.mesh) + " is out of range");
-    for (auto [mesh, material] : import_mesh(node.mesh)) {
-      Instance instance;
-      instance.name = node.name.empty() ? where : node.name;
-      instance.mesh = mesh;
-      instance.material = int32_t(material);
-      instance.world_from_object = *world_from_object;
-      instance.motion = animations_.world_keys(node_index);
-      if (!instance.motion.empty())
-        instance.world_from_object = instance.motion.front().world_from_object;
-      scene_.instances.push_back(std::move(instance));
-    }
+    add_mesh_instances(node_index, world_from_node, *world_from_object);
   }
   if (node.camera >= 0) {
     if (size_t(node.camera) >= model_.cameras.size())
@@ -564,18 +631,18 @@ Scene GltfImporter::import() {
   scene_.material_variants = read_gltf_material_variants(
       variants != model_.extensions.end() ? &variants->second : nullptr, file_);
   animations_ = NodeAnimations(model_, file_, accessors_, scene_.warnings);
-  int scene_index = model_.defaultScene >= 0 ? model_.defaultScene : 0;
+  deformer_.emplace(model_, file_, accessors_, animations_);
+  int scene_index = choose_gltf_scene(model_, options_.scene, file_);
   if (!model_.scenes.empty()) {
-    if (size_t(scene_index) >= model_.scenes.size()) fail("scene", "scene index is out of range");
     for (int root : model_.scenes[scene_index].nodes) visit_node(root, Matrix4::identity(), 0);
   } else {
     // No scene: show every mesh once, untransformed (the spec leaves this to the application).
     for (size_t m = 0; m < model_.meshes.size(); ++m)
-      for (auto [mesh, material] : import_mesh(int(m))) {
+      for (const PrimitiveMesh& p : import_mesh(int(m))) {
         Instance instance;
-        instance.name = scene_.meshes[mesh].name;
-        instance.mesh = mesh;
-        instance.material = int32_t(material);
+        instance.name = scene_.meshes[p.mesh].name;
+        instance.mesh = p.mesh;
+        instance.material = int32_t(p.material);
         scene_.instances.push_back(instance);
       }
   }
@@ -639,7 +706,7 @@ std::vector<unsigned char> read_gltf_file(const std::string& path) {
 }
 
 Scene load_gltf_bytes(std::span<const uint8_t> bytes, const std::string& name,
-                      const std::string& base_dir) {
+                      const std::string& base_dir, const GltfLoadOptions& options) {
   tinygltf::TinyGLTF loader;
   tinygltf::Model model;
   ImageStore images{name, &model, {}, {}};
@@ -681,15 +748,16 @@ Scene load_gltf_bytes(std::span<const uint8_t> bytes, const std::string& name,
   resolve_unusable_gltf_images(model, images.decoded, images.failed, name, base_dir, files_read,
                                warnings);
   Scene scene =
-      GltfImporter(model, name, images, std::move(warnings), std::move(unsupported)).import();
+      GltfImporter(model, name, images, std::move(warnings), std::move(unsupported), options)
+          .import();
   scene.input_files = std::move(files_read);
   return scene;
 }
 
-Scene load_gltf(const std::string& path) {
+Scene load_gltf(const std::string& path, const GltfLoadOptions& options) {
   std::vector<unsigned char> bytes = read_gltf_file(path);
   std::string base_dir = std::filesystem::path(path).parent_path().string();
-  return load_gltf_bytes(bytes, path, base_dir);
+  return load_gltf_bytes(bytes, path, base_dir, options);
 }
 
 }  // namespace obscura

@@ -36,15 +36,16 @@ std::filesystem::path executable_directory() {
 
 }  // namespace
 
-Scene load_model_file(const std::string& path) {
+Scene load_model_file(const std::string& path, const GltfLoadOptions& gltf) {
   std::error_code ec;
   if (!std::filesystem::exists(path, ec)) throw Error(path, "file does not exist");
   if (std::filesystem::is_directory(path, ec))
     throw Error(path, "is a directory, not a model file");
   std::string ext = lower_extension(path);
   Scene scene;
-  if (ext == ".gltf" || ext == ".glb")
-    scene = load_gltf(path);
+  if (!gltf.scene.empty() && ext != ".gltf" && ext != ".glb")
+    throw Error(path, "--gltf-scene " + gltf.scene + " applies to glTF files (.gltf, .glb)");
+  if (ext == ".gltf" || ext == ".glb") scene = load_gltf(path, gltf);
   // Obscura's own readers for the common mesh formats: bounded, fast, and they fail with a
   // message where Assimp's asserts abort the process on hostile input.
   else if (ext == ".obj")
@@ -63,15 +64,17 @@ Scene load_model_file(const std::string& path) {
   return scene;
 }
 
-Scene load_scene_file(const std::string& path) {
+Scene load_scene_file(const std::string& path, const GltfLoadOptions& gltf) {
   Scene scene;
   if (lower_extension(path) == ".json") {
+    if (!gltf.scene.empty())
+      throw Error(path, "--gltf-scene " + gltf.scene + " applies to glTF files (.gltf, .glb)");
     std::error_code ec;
     if (!std::filesystem::exists(path, ec)) throw Error(path, "scene file does not exist");
     scene = load_json_scene(path);  // chooses its own camera
     scene.input_files.insert(scene.input_files.begin(), path);
   } else {
-    scene = load_model_file(path);
+    scene = load_model_file(path, gltf);
     finish_cameras(scene, "", path);
   }
   scene.validate();
@@ -105,12 +108,14 @@ std::string scenes_directory() {
   return "scenes";
 }
 
-Scene load_scene(const std::string& name_or_path) {
+Scene load_scene(const std::string& name_or_path, const GltfLoadOptions& gltf) {
   const std::vector<BuiltinScene>& builtins = builtin_scenes();
   std::string name = name_or_path.empty() ? builtins.front().name : name_or_path;
   for (const BuiltinScene& b : builtins) {
     if (b.name != name) continue;
     if (b.file.empty()) {
+      if (!gltf.scene.empty())
+        throw Error(name, "--gltf-scene " + gltf.scene + " applies to glTF files (.gltf, .glb)");
       Scene scene = make_builtin_scene(name);
       scene.validate();
       return scene;
@@ -120,12 +125,12 @@ Scene load_scene(const std::string& name_or_path) {
     if (!std::filesystem::is_regular_file(path, ec))
       throw Error(path, "the built-in scene '" + name +
                             "' is missing (set OBSCURA_SCENES_DIR to the scenes folder)");
-    return load_scene_file(path);
+    return load_scene_file(path, gltf);
   }
   std::error_code ec;
   if (std::filesystem::exists(name, ec) || name.find('.') != std::string::npos ||
       name.find('/') != std::string::npos)
-    return load_scene_file(name);
+    return load_scene_file(name, gltf);
   std::string known;
   for (const BuiltinScene& b : builtins) known += (known.empty() ? "" : ", ") + b.name;
   throw Error(name, "neither a scene file nor a built-in scene (built-in: " + known + ")");

@@ -4,6 +4,7 @@
 #include <string>
 #include <vector>
 
+#include "obscura/io/gltf_loader.h"
 #include "obscura/scene/scene.h"
 
 namespace obscura {
@@ -11,12 +12,13 @@ namespace obscura {
 // Loads a scene file, choosing the loader by extension: .gltf/.glb (glTF 2.0), .json (Obscura's
 // scene file), .obj/.ply/.stl (Obscura's own readers), anything else Assimp reads (.fbx, .dae,
 // .3ds, …). The result
-// is validated and has a render camera (the file's first, or one framing the scene).
-Scene load_scene_file(const std::string& path);
+// is validated and has a render camera (the file's first, or one framing the scene). `gltf`
+// applies to a glTF file (its scene and pose time); naming a scene for another format is an error.
+Scene load_scene_file(const std::string& path, const GltfLoadOptions& gltf = {});
 
 // A model file (glTF, OBJ, PLY, STL or an Assimp format) as it is, without a render camera or
 // validation: what the JSON scene file includes.
-Scene load_model_file(const std::string& path);
+Scene load_model_file(const std::string& path, const GltfLoadOptions& gltf = {});
 
 struct BuiltinScene {
   std::string name;
@@ -33,6 +35,6 @@ std::string scenes_directory();
 
 // A built-in scene's name, or a path to a scene file; empty = the default built-in scene.
 // Throws obscura::Error listing the built-in names when `name_or_path` is neither.
-Scene load_scene(const std::string& name_or_path);
+Scene load_scene(const std::string& name_or_path, const GltfLoadOptions& gltf = {});
 
 }  // namespace obscura

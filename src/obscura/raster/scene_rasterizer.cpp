@@ -194,8 +194,10 @@ SceneRasterizer::SceneRasterizer(const Scene& scene, RasterSettings settings)
   scene.validate();
   vertices_.resize(scene.meshes.size());
   indices_.resize(scene.meshes.size());
-  for (size_t m = 0; m < scene.meshes.size(); ++m)
+  for (size_t m = 0; m < scene.meshes.size(); ++m) {
     compile_mesh(scene.meshes[m], vertices_[m], indices_[m]);
+    if (scene.meshes[m].deforms()) deforming_.emplace(uint32_t(m), scene.meshes[m]);
+  }
 
   std::vector<bool> used = used_textures(scene);
   std::vector<const Texture*> texture_of(scene.textures.size(), nullptr);
@@ -236,11 +238,15 @@ SceneRasterizer::SceneRasterizer(const Scene& scene, RasterSettings settings)
                             "); drawn at its time-0 pose");
       }
     }
-    for (Point3f p : scene.meshes[instance.mesh].positions) {
+    const Mesh& mesh = scene.meshes[instance.mesh];
+    auto cover = [&](Point3f p) {
       bounds_ = unite(bounds_, instance.world_from_object(p));
       for (const TransformKey& k : instance.motion)
         bounds_ = unite(bounds_, k.world_from_object(p));
-    }
+    };
+    for (Point3f p : mesh.positions) cover(p);
+    for (const std::vector<Point3f>& step : mesh.deformation.positions)
+      for (Point3f p : step) cover(p);
     instances_.push_back(std::move(c));
     const Material& material = scene.materials[scene.material_of(instance)];
     if (settings.surface_lights && !material.emission.is_black())
@@ -273,6 +279,15 @@ SceneRasterizer::SceneRasterizer(const Scene& scene, RasterSettings settings)
     }
     lights_.ambient = mean;
   }
+}
+
+std::pair<const std::vector<MeshVertex>*, const std::vector<uint32_t>*> SceneRasterizer::mesh_at(
+    uint32_t mesh, double time_s, std::vector<MeshVertex>& scratch,
+    std::vector<uint32_t>& scratch_indices) const {
+  auto found = deforming_.find(mesh);
+  if (found == deforming_.end()) return {&vertices_[mesh], &indices_[mesh]};
+  compile_mesh(found->second.posed_at(time_s), scratch, scratch_indices);
+  return {&scratch, &scratch_indices};
 }
 
 Transform SceneRasterizer::world_from_object(const CompiledInstance& instance,
@@ -319,9 +334,12 @@ ShadowMap SceneRasterizer::render_shadow_map(const Matrix4& clip_from_world, flo
   for (const CompiledInstance& instance : instances_) {
     const Matrix4f clip_from_object(clip_from_world * world_from_object(instance, time_s).matrix());
     const SurfaceMaterial& material = materials_[instance.material];
+    std::vector<MeshVertex> scratch;
+    std::vector<uint32_t> scratch_indices;
+    auto [vertices, indices] = mesh_at(instance.mesh, time_s, scratch, scratch_indices);
     if (material.alpha_mode == AlphaMode::kOpaque) {
       DepthOnlyProgram<MeshVertex> program{clip_from_object};
-      draw_less(map.depth, DrawState{}, program, vertices_[instance.mesh], indices_[instance.mesh]);
+      draw_less(map.depth, DrawState{}, program, *vertices, *indices);
       continue;
     }
     // Cut-outs cast cut-out shadows. A depth map cannot hold a partial shadow, so a blended
@@ -329,8 +347,8 @@ ShadowMap SceneRasterizer::render_shadow_map(const Matrix4& clip_from_world, flo
     DrawState state;
     state.alpha_test = true;
     state.alpha_cutoff = material.alpha_mode == AlphaMode::kMask ? material.alpha_cutoff : 0.5f;
-    draw_less(map.depth, state, DepthCoverageProgram{clip_from_object, &material},
-              vertices_[instance.mesh], indices_[instance.mesh]);
+    draw_less(map.depth, state, DepthCoverageProgram{clip_from_object, &material}, *vertices,
+              *indices);
   }
   return map;
 }
@@ -421,8 +439,12 @@ void SceneRasterizer::draw_instance(RenderTarget& target, const InstanceUniforms
     state.depth_write = false;
     state.blend = BlendMode::kOver;
   }
-  const std::span<const MeshVertex> vertices = vertices_[instance.mesh];
-  const std::span<const uint32_t> indices = sorted.empty() ? indices_[instance.mesh] : sorted;
+  std::vector<MeshVertex> scratch;
+  std::vector<uint32_t> scratch_indices;
+  auto [posed_vertices, posed_indices] = mesh_at(instance.mesh, time_s, scratch, scratch_indices);
+  const std::span<const MeshVertex> vertices = *posed_vertices;
+  // `sorted`, where given, orders the triangles of this same pose (draw_blended).
+  const std::span<const uint32_t> indices = sorted.empty() ? *posed_indices : sorted;
   const bool gouraud = settings_.shading == ShadingMode::kGouraud;
   if (material.alpha_mode == AlphaMode::kOpaque) {
     if (gouraud) return draw_less(target, state, SceneGouraudProgram{u}, vertices, indices);
@@ -446,11 +468,14 @@ void SceneRasterizer::draw_blended(RenderTarget& target, const InstanceUniforms&
   std::vector<Sorted> order;
   for (size_t i : blended) {
     const CompiledInstance& instance = instances_[i];
-    if (vertices_[instance.mesh].empty()) continue;
+    std::vector<MeshVertex> scratch;
+    std::vector<uint32_t> scratch_indices;
+    auto [posed_vertices, posed_indices] = mesh_at(instance.mesh, time_s, scratch, scratch_indices);
+    const std::vector<MeshVertex>& vertices = *posed_vertices;
+    const std::vector<uint32_t>& indices = *posed_indices;
+    if (vertices.empty()) continue;
     const Matrix4 camera_from_object =
         camera_from_world * world_from_object(instance, time_s).matrix();
-    const std::vector<MeshVertex>& vertices = vertices_[instance.mesh];
-    const std::vector<uint32_t>& indices = indices_[instance.mesh];
     std::vector<double> depth(vertices.size());  // along the view direction (camera −z)
     double nearest = std::numeric_limits<double>::infinity(), farthest = -nearest;
     for (size_t v = 0; v < vertices.size(); ++v) {

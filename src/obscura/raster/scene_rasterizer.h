@@ -11,6 +11,7 @@
 // field).
 #pragma once
 
+#include <map>
 #include <optional>
 #include <span>
 #include <string>
@@ -87,6 +88,11 @@ class SceneRasterizer {
     std::optional<AnimatedTransform> motion;
   };
   Transform world_from_object(const CompiledInstance& instance, double time_s) const;
+  // The mesh's vertices at `time_s`: compiled once, or, for a deforming mesh, posed into
+  // `scratch` (vertices) and `scratch_indices`.
+  std::pair<const std::vector<MeshVertex>*, const std::vector<uint32_t>*> mesh_at(
+      uint32_t mesh, double time_s, std::vector<MeshVertex>& scratch,
+      std::vector<uint32_t>& scratch_indices) const;
   void draw_background(const Matrix4& world_from_clip, RenderTarget& target, float exposure) const;
   ShadowMap render_shadow_map(const Matrix4& clip_from_world, float texel_world, bool perspective,
                               double time_s) const;
@@ -102,6 +108,7 @@ class SceneRasterizer {
   RasterSettings settings_;
   std::vector<std::vector<MeshVertex>> vertices_;  // per mesh, object space
   std::vector<std::vector<uint32_t>> indices_;     // per mesh (empty: unindexed)
+  std::map<uint32_t, Mesh> deforming_;             // meshes posed per frame, by index
   std::vector<Texture> textures_;                  // the used scene textures
   std::vector<Texture> alpha_textures_;            // the alpha channels of those that give coverage
   std::vector<SurfaceMaterial> materials_;

@@ -1,5 +1,7 @@
 #include "obscura/scene/mesh.h"
 
+#include <algorithm>
+
 namespace obscura {
 
 Bounds3f Mesh::bounds() const {
@@ -12,7 +14,33 @@ size_t Mesh::memory_bytes() const {
   return positions.capacity() * sizeof(Point3f) + normals.capacity() * sizeof(Normal3f) +
          uvs.capacity() * sizeof(Point2f) + tangents.capacity() * sizeof(Vector4f) +
          colors.capacity() * sizeof(Rgb) + color_alphas.capacity() * sizeof(float) +
-         indices.capacity() * sizeof(uint32_t) + name.capacity();
+         indices.capacity() * sizeof(uint32_t) + name.capacity() +
+         (deformation.positions.size() * sizeof(Point3f) +
+          deformation.normals.size() * sizeof(Normal3f)) *
+             positions.size();
+}
+
+Mesh Mesh::posed_at(double time_s) const {
+  Mesh posed = *this;
+  posed.deformation = {};
+  if (!deforms()) return posed;
+  const MeshDeformation& d = deformation;
+  const size_t segments = d.positions.size() - 1;
+  const double span = d.close_s - d.open_s;
+  double u = span > 0 ? (time_s - d.open_s) / span * double(segments) : 0;
+  u = std::clamp(u, 0.0, double(segments));
+  const size_t i = std::min(size_t(u), segments - 1);
+  const float f = float(u - double(i));
+  for (size_t v = 0; v < posed.positions.size(); ++v) {
+    Point3f a = d.positions[i][v], b = d.positions[i + 1][v];
+    posed.positions[v] = a + (b - a) * f;
+  }
+  if (d.normals.size() == d.positions.size())
+    for (size_t v = 0; v < posed.normals.size(); ++v) {
+      Vector3f n = to_vector(d.normals[i][v]) * (1 - f) + to_vector(d.normals[i + 1][v]) * f;
+      if (length_squared(n) > 0) posed.normals[v] = Normal3f(normalize(n));
+    }
+  return posed;
 }
 
 }  // namespace obscura

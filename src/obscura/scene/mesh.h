@@ -11,6 +11,15 @@
 
 namespace obscura {
 
+// A mesh that changes shape while the shutter is open (a glTF skin or morph animation): its
+// vertices at evenly spaced times from `open_s` to `close_s`, linearly interpolated between and
+// held outside. Renderers blur it as they blur moving instances.
+struct MeshDeformation {
+  double open_s = 0, close_s = 0;
+  std::vector<std::vector<Point3f>> positions;  // per time step: one per vertex
+  std::vector<std::vector<Normal3f>> normals;   // per time step: one per vertex, or none at all
+};
+
 // Indexed triangles. Front faces wind counter-clockwise seen from outside: the geometric normal
 // is (p1 − p0) × (p2 − p0). Every per-vertex array is either empty (absent) or has exactly one
 // entry per position.
@@ -26,6 +35,11 @@ struct Mesh {
   std::vector<float> color_alphas;
   std::vector<uint32_t> indices;  // three per triangle
   uint32_t material = 0;          // index into Scene::materials; an Instance may override it
+  MeshDeformation deformation;    // empty for a rigid mesh; `positions` is then the still pose
+
+  bool deforms() const { return deformation.positions.size() > 1; }
+  // The mesh with its deformation's positions and normals at `time_s` (itself if rigid).
+  Mesh posed_at(double time_s) const;
 
   size_t triangle_count() const { return indices.size() / 3; }
   size_t vertex_count() const { return positions.size(); }

@@ -37,6 +37,22 @@ void validate_mesh(const Mesh& m, const std::string& where, size_t material_coun
   check_attribute_size(where, "tangents", m.tangents, m.positions.size());
   check_attribute_size(where, "colors", m.colors, m.positions.size());
   check_attribute_size(where, "color_alphas", m.color_alphas, m.positions.size());
+  const MeshDeformation& d = m.deformation;
+  if (!d.positions.empty() && (!(d.open_s <= d.close_s) || d.positions.size() < 2 ||
+                               (!d.normals.empty() && d.normals.size() != d.positions.size())))
+    throw Error(where, "deformation: needs open ≤ close and ≥ 2 time steps, normals for each");
+  for (size_t s = 0; s < d.positions.size(); ++s) {
+    if (d.positions[s].size() != m.positions.size() ||
+        (!d.normals.empty() && d.normals[s].size() != m.normals.size()))
+      throw Error(where, "deformation step " + std::to_string(s) + " has " +
+                             std::to_string(d.positions[s].size()) + " positions for " +
+                             std::to_string(m.positions.size()) +
+                             " vertices (or its normals differ)");
+    for (size_t i = 0; i < d.positions[s].size(); ++i)
+      if (!finite(d.positions[s][i]))
+        throw Error(where, "deformation step " + std::to_string(s) + " vertex " +
+                               std::to_string(i) + " is not finite");
+  }
   if (m.material >= material_count)
     throw Error(where, "material index " + std::to_string(m.material) +
                            " is past the material count " + std::to_string(material_count));

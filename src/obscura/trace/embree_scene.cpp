@@ -71,9 +71,18 @@ void EmbreeDevice::throw_if_error(const char* during) const {
 
 namespace {
 
-// A committed triangle geometry holding copies of the mesh (not yet attached to a scene).
-RTCGeometry new_triangle_geometry(const EmbreeDevice& device, std::span<const Point3f> positions,
+// A committed triangle geometry holding copies of the mesh (not yet attached to a scene), with
+// one vertex buffer per Embree time step (one for a still mesh).
+RTCGeometry new_triangle_geometry(const EmbreeDevice& device,
+                                  std::span<const std::span<const Point3f>> steps,
                                   std::span<const uint32_t> indices) {
+  if (steps.empty() || steps.size() > size_t(EmbreeScene::kMaxTimeSteps))
+    throw Error("a triangle mesh needs 1 to " + std::to_string(EmbreeScene::kMaxTimeSteps) +
+                " time steps; got " + std::to_string(steps.size()));
+  const std::span<const Point3f> positions = steps.front();
+  for (std::span<const Point3f> step : steps)
+    if (step.size() != positions.size())
+      throw Error("triangle mesh time steps differ in vertex count");
   if (indices.size() % 3 != 0)
     throw Error("triangle mesh index count " + std::to_string(indices.size()) +
                 " is not a multiple of 3");
@@ -82,18 +91,23 @@ RTCGeometry new_triangle_geometry(const EmbreeDevice& device, std::span<const Po
       throw Error("triangle mesh index " + std::to_string(i) + " is past the vertex count " +
                   std::to_string(positions.size()));
   RTCGeometry geometry = rtcNewGeometry(device.handle(), RTC_GEOMETRY_TYPE_TRIANGLE);
+  rtcSetGeometryTimeStepCount(geometry, unsigned(steps.size()));
   // Embree may read 16 bytes at the last vertex, so its own buffers (padded) are used.
-  auto* vertices = static_cast<float*>(rtcSetNewGeometryBuffer(
-      geometry, RTC_BUFFER_TYPE_VERTEX, 0, RTC_FORMAT_FLOAT3, 3 * sizeof(float), positions.size()));
+  for (size_t s = 0; s < steps.size(); ++s) {
+    auto* vertices = static_cast<float*>(
+        rtcSetNewGeometryBuffer(geometry, RTC_BUFFER_TYPE_VERTEX, unsigned(s), RTC_FORMAT_FLOAT3,
+                                3 * sizeof(float), positions.size()));
+    device.throw_if_error("allocating Embree geometry buffers");
+    for (size_t i = 0; i < positions.size(); ++i) {
+      vertices[3 * i + 0] = steps[s][i].x;
+      vertices[3 * i + 1] = steps[s][i].y;
+      vertices[3 * i + 2] = steps[s][i].z;
+    }
+  }
   auto* triangles = static_cast<uint32_t*>(
       rtcSetNewGeometryBuffer(geometry, RTC_BUFFER_TYPE_INDEX, 0, RTC_FORMAT_UINT3,
                               3 * sizeof(uint32_t), indices.size() / 3));
   device.throw_if_error("allocating Embree geometry buffers");
-  for (size_t i = 0; i < positions.size(); ++i) {
-    vertices[3 * i + 0] = positions[i].x;
-    vertices[3 * i + 1] = positions[i].y;
-    vertices[3 * i + 2] = positions[i].z;
-  }
   std::memcpy(triangles, indices.data(), indices.size_bytes());
   rtcCommitGeometry(geometry);
   return geometry;
@@ -131,7 +145,8 @@ uint32_t EmbreeScene::attach(RTCGeometry geometry, const char* during) {
 uint32_t EmbreeScene::add_triangle_mesh(std::span<const Point3f> positions,
                                         std::span<const uint32_t> indices) {
   if (committed_) throw Error("EmbreeScene: geometry added after commit()");
-  RTCGeometry geometry = new_triangle_geometry(*device_, positions, indices);
+  const std::span<const Point3f> steps[1] = {positions};
+  RTCGeometry geometry = new_triangle_geometry(*device_, steps, indices);
   uint32_t id = attach(geometry, "adding a triangle mesh");
   rtcReleaseGeometry(geometry);
   return id;
@@ -139,8 +154,14 @@ uint32_t EmbreeScene::add_triangle_mesh(std::span<const Point3f> positions,
 
 uint32_t EmbreeScene::add_prototype(std::span<const Point3f> positions,
                                     std::span<const uint32_t> indices) {
+  const std::span<const Point3f> steps[1] = {positions};
+  return add_prototype(steps, indices);
+}
+
+uint32_t EmbreeScene::add_prototype(std::span<const std::span<const Point3f>> steps,
+                                    std::span<const uint32_t> indices) {
   if (committed_) throw Error("EmbreeScene: geometry added after commit()");
-  RTCGeometry geometry = new_triangle_geometry(*device_, positions, indices);
+  RTCGeometry geometry = new_triangle_geometry(*device_, steps, indices);
   RTCScene prototype = new_scene(*device_);
   prototypes_.push_back(prototype);
   rtcAttachGeometry(prototype, geometry);

@@ -69,6 +69,10 @@ class EmbreeScene {
   // Builds a mesh into an acceleration structure of its own, to be placed by add_instance;
   // returns its prototype index (0, 1, 2… in call order). Same preconditions as above.
   uint32_t add_prototype(std::span<const Point3f> positions, std::span<const uint32_t> indices);
+  // A deforming prototype: its vertices at n ≥ 2 (at most kMaxTimeSteps) Embree time steps
+  // spread evenly over the motion interval, linearly interpolated between.
+  uint32_t add_prototype(std::span<const std::span<const Point3f>> steps,
+                         std::span<const uint32_t> indices);
   // Places a prototype in the world; returns the instance's geometry id (shared numbering with
   // add_triangle_mesh). One transform is a static instance; n ≥ 2 (at most kMaxTimeSteps) are
   // Embree time steps spread evenly over the motion interval, linearly interpolated between.

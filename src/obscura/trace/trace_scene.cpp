@@ -37,7 +37,19 @@ Mesh flatten(const Mesh& mesh, const Transform& world_from_object) {
 Mesh shading_attributes(Mesh mesh) {
   mesh.positions = {};
   mesh.tangents = {};
+  mesh.deformation.positions = {};
   return mesh;
+}
+
+// A deforming mesh's normal of vertex `v` at `time_s`, linear between its time steps.
+Vector3f deformed_normal(const MeshDeformation& d, uint32_t v, float time_s) {
+  const size_t segments = d.normals.size() - 1;
+  const double span = d.close_s - d.open_s;
+  double u = span > 0 ? (time_s - d.open_s) / span * double(segments) : 0;
+  u = std::clamp(u, 0.0, double(segments));
+  const size_t i = std::min(size_t(u), segments - 1);
+  const float f = float(u - double(i));
+  return to_vector(d.normals[i][v]) * (1 - f) + to_vector(d.normals[i + 1][v]) * f;
 }
 
 // The inverse transpose of a linear map's columns c0, c1, c2, up to a positive factor: the
@@ -164,7 +176,9 @@ TraceScene::TraceScene(const Scene& scene, std::shared_ptr<const EmbreeDevice> d
   std::vector<Mesh> emitters(scene.instances.size());
   for (uint32_t i = 0; i < scene.instances.size(); ++i) {
     const Instance& instance = scene.instances[i];
-    bool moving = instance.animated() && shutter_.duration_s() > 0;
+    // A deforming mesh is a moving instance too: Embree interpolates its vertices in time.
+    bool moving =
+        (instance.animated() || scene.meshes[instance.mesh].deforms()) && shutter_.duration_s() > 0;
     Transform pose = instance.animated() ? motion_of(instance, i).at(shutter_.open_s)
                                          : instance.world_from_object;
     if (moving)
@@ -232,9 +246,27 @@ void TraceScene::add_static(const Scene& scene, uint32_t instance,
 
 void TraceScene::add_moving(const Scene& scene, uint32_t instance) {
   const Instance& in = scene.instances[instance];
-  std::vector<Transform> steps =
-      time_steps(motion_of(in, instance), shutter_, scene.meshes[in.mesh].bounds());
-  uint32_t id = embree_.add_instance(prototype_of(scene, in.mesh), steps);
+  const Mesh& mesh = scene.meshes[in.mesh];
+  std::vector<Transform> steps = {in.world_from_object};
+  if (in.animated()) steps = time_steps(motion_of(in, instance), shutter_, mesh.bounds());
+  uint32_t prototype = 0;
+  const MeshDeformation* deformation = nullptr;
+  if (mesh.deforms()) {
+    // Its own prototype (deforming meshes are not shared), posed at as many evenly spaced
+    // shutter times as the mesh has steps: the steps themselves when they span the shutter.
+    const size_t count = std::min(mesh.deformation.positions.size(), size_t(kMaxTimeSteps));
+    std::vector<std::vector<Point3f>> poses;
+    std::vector<std::span<const Point3f>> views;
+    for (size_t k = 0; k < count; ++k)
+      poses.push_back(mesh.posed_at(shutter_.time_at(double(k) / double(count - 1))).positions);
+    for (const std::vector<Point3f>& p : poses) views.emplace_back(p);
+    prototype = embree_.add_prototype(views, mesh.indices);
+    ++prototypes_;
+    if (!meshes_[in.mesh].deformation.normals.empty()) deformation = &meshes_[in.mesh].deformation;
+  } else {
+    prototype = prototype_of(scene, in.mesh);
+  }
+  uint32_t id = embree_.add_instance(prototype, steps);
   ++embree_instances_;
   has_motion_ = true;
   if (placements_.size() <= id) placements_.resize(id + 1);
@@ -242,7 +274,8 @@ void TraceScene::add_moving(const Scene& scene, uint32_t instance) {
                      .material = scene.material_of(in),
                      .attributes = &meshes_[in.mesh],
                      .object_space = true,
-                     .moving = true};
+                     .moving = true,
+                     .deformation = deformation};
 }
 
 void TraceScene::set_material(uint32_t index, TraceMaterial material) {
@@ -334,8 +367,11 @@ SurfaceHit TraceScene::surface_hit(const Ray& ray, const RayHit& hit) const {
     const uint32_t* tri = &mesh.indices[3 * size_t(hit.primitive_id)];
     float b1 = hit.barycentric.x, b2 = hit.barycentric.y, b0 = 1 - b1 - b2;
     if (!mesh.normals.empty()) {
-      Vector3f n = to_vector(mesh.normals[tri[0]]) * b0 + to_vector(mesh.normals[tri[1]]) * b1 +
-                   to_vector(mesh.normals[tri[2]]) * b2;
+      auto normal = [&](uint32_t v) {
+        return place.deformation ? deformed_normal(*place.deformation, v, ray.time)
+                                 : to_vector(mesh.normals[v]);
+      };
+      Vector3f n = normal(tri[0]) * b0 + normal(tri[1]) * b1 + normal(tri[2]) * b2;
       if (place.object_space) n = apply(to_world, n);
       if (length_squared(n) > 0)
         s.shading_normal = face_forward(Normal3f(normalize(n)), to_vector(s.geometric_normal));

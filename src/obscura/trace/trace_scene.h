@@ -4,7 +4,8 @@
 // Meshes shared by several instances are built once and placed by Embree instances; a mesh
 // placed once and not moving is copied into world space instead (one traversal level less).
 // Moving instances (motion keys) are Embree instances with a transform per time step over the
-// shutter; rays carry their time.
+// shutter; deforming meshes (Mesh::deformation) are prototypes with vertices per time step; rays
+// carry their time.
 #pragma once
 
 #include <memory>
@@ -74,8 +75,10 @@ class TraceScene {
     const Mesh* attributes = nullptr;  // indices, normals, uvs (no positions)
     bool object_space = false;         // attributes and Embree's normal are in object space
     bool moving = false;               // the transform depends on the ray's time
+    const MeshDeformation* deformation = nullptr;  // shading normals over time, if deforming
     float normal_from_object[3][3] = {{1, 0, 0}, {0, 1, 0}, {0, 0, 1}};  // static instances
   };
+  static constexpr int kMaxTimeSteps = EmbreeScene::kMaxTimeSteps;
   void add_static(const Scene& scene, uint32_t instance, const Transform& world_from_object,
                   bool instanced);
   void add_moving(const Scene& scene, uint32_t instance);
