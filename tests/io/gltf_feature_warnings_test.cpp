@@ -52,16 +52,26 @@ TEST_F(GltfFeatureWarnings, SkinsMorphTargetsOtherUvSetsAndScenes) {
   doc["skins"] = {{{"joints", {1}}, {"name", "rig"}, {"inverseBindMatrices", matrices}}};
   doc["scenes"].push_back({{"nodes", json::array()}});
   doc["materials"] = {
-      {{"emissiveTexture", {{"index", 0}, {"texCoord", 1}}}, {"normalTexture", {{"index", 0}}}}};
+      {{"emissiveTexture", {{"index", 0}, {"texCoord", 2}}}, {"normalTexture", {{"index", 0}}}}};
   doc["textures"] = {{{"source", 0}}};
   doc["images"] = {{{"uri", "missing.png"}}};
   std::vector<std::string> w = warnings_of(doc);
   EXPECT_TRUE(any_contains(w, "skinning is not supported yet (skins[0] 'rig')"));
   EXPECT_TRUE(any_contains(w, "morph targets is not supported yet (meshes[0] 'blob')"));
-  EXPECT_TRUE(any_contains(w, "TEXCOORD_1 or above is not supported yet (materials[0])"));
+  EXPECT_TRUE(any_contains(w, "TEXCOORD_2 or above is not supported yet (materials[0])"));
   EXPECT_TRUE(any_contains(w, "the file has 2 scenes; only scenes[0]"));
-  EXPECT_TRUE(
-      any_contains(w, "normalTexture (normal mapping) is not supported yet (materials[0])"));
+  // Normal maps and TEXCOORD_1 are applied: no warning names them.
+  EXPECT_FALSE(any_contains(w, "normalTexture"));
+  EXPECT_FALSE(any_contains(w, "TEXCOORD_1"));
+}
+
+TEST_F(GltfFeatureWarnings, TheSecondUvSetAndNormalMapsAreApplied) {
+  json doc = triangle();
+  doc["materials"] = {{{"baseColorTexture", {{"index", 0}, {"texCoord", 1}}},
+                       {"normalTexture", {{"index", 0}, {"texCoord", 1}}}}};
+  doc["textures"] = {{{"source", 0}}};
+  doc["images"] = {{{"uri", "missing.png"}}};
+  EXPECT_FALSE(any_contains(warnings_of(doc), "is not supported yet"));
 }
 
 TEST_F(GltfFeatureWarnings, ManyUsesAreCountedNotListed) {

@@ -35,17 +35,16 @@ std::string material_name(const tinygltf::Model& model, size_t i) {
 
 void warn_unapplied_gltf_features(const tinygltf::Model& model, const std::string& file,
                                   std::vector<std::string>& warnings) {
-  Uses mask, blend, texcoord, normal_maps;
+  Uses mask, blend, texcoord;
   for (size_t i = 0; i < model.materials.size(); ++i) {
     const tinygltf::Material& m = model.materials[i];
     if (m.alphaMode == "MASK") mask.add(material_name(model, i));
     if (m.alphaMode == "BLEND") blend.add(material_name(model, i));
-    if (m.normalTexture.index >= 0) normal_maps.add(material_name(model, i));
     const tinygltf::PbrMetallicRoughness& pbr = m.pbrMetallicRoughness;
     for (int set :
          {pbr.baseColorTexture.texCoord, pbr.metallicRoughnessTexture.texCoord,
           m.normalTexture.texCoord, m.occlusionTexture.texCoord, m.emissiveTexture.texCoord})
-      if (set > 0) {
+      if (set > 1) {
         texcoord.add(material_name(model, i));
         break;
       }
@@ -54,9 +53,8 @@ void warn_unapplied_gltf_features(const tinygltf::Model& model, const std::strin
             "it draws them opaque (the tracer cuts them out)", warnings);
   blend.warn(file, "alphaMode BLEND in the rasterizer",
              "it draws them opaque (the tracer lets 1 − alpha of the light through)", warnings);
-  normal_maps.warn(file, "normalTexture (normal mapping)",
-                   "shaded with the interpolated vertex normals", warnings);
-  texcoord.warn(file, "a texture on TEXCOORD_1 or above", "sampled with TEXCOORD_0 instead",
+  // TEXCOORD_0 and TEXCOORD_1 are kept (Mesh::uv_set), as glTF asks of every client.
+  texcoord.warn(file, "a texture on TEXCOORD_2 or above", "sampled with TEXCOORD_0 instead",
                 warnings);
 
   Uses skins;
