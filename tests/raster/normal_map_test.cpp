@@ -41,18 +41,18 @@ Texture normal_texel(Vector3f n) {
   return t;
 }
 
-struct Setup {
+struct QuadSetup {
   Vector3f texel_normal{0, 0, 1};  // in tangent space
   float normal_scale = 1;
-  bool mirrored_uvs = false;   // the image flipped left to right on the quad
-  bool file_tangents = false;  // give the mesh tangents instead of generating them
-  Transform placement;         // of the quad (front face +z before it)
-  Vector3f to_light{0, 0, 1};  // unit, world
-  bool from_below = false;     // camera (and the side seen) under the quad
+  bool mirrored_uvs = false;          // the image flipped left to right on the quad
+  bool file_tangents = false;         // give the mesh tangents instead of generating them
+  Transform placement = Transform();  // of the quad (front face +z before it)
+  Vector3f to_light{0, 0, 1};         // unit, world
+  bool from_below = false;            // camera (and the side seen) under the quad
 };
 
 // The 2 m square quad at z = 0, front face +z, UVs with the image's top-left at (−1, 1).
-Scene normal_map_scene(const Setup& s) {
+Scene normal_map_scene(const QuadSetup& s) {
   Scene scene;
   Material m = diffuse_material("bumpy", Rgb(kAlbedo));
   m.normal_texture.texture = 0;
@@ -75,7 +75,7 @@ Scene normal_map_scene(const Setup& s) {
       world_from_camera_look_at({0, 0, s.from_below ? -3.0 : 3.0}, {0, 0, 0});
   // Orthographic: the same view direction at every pixel, straight at the quad (which fills the
   // view), so no pixel sees a normal from the side (math/shading_normal.h would bend it).
-  camera.projection = Orthographic{.view_height_m = 1.5};
+  camera.projection = Orthographic{.view_height_m = 1.5, .view_width_m = 1.5};
   camera.film.width_px = camera.film.height_px = kSize;
   camera.film.filter = BoxFilter{1e-6};  // one sample at each pixel centre
   scene.camera = camera;
@@ -110,7 +110,7 @@ void expect_lit_as(const Image& image, Vector3f expected_normal, Vector3f to_lig
             << renderer << " pixel " << x << ", " << y;
 }
 
-void expect_both_lit_as(const Setup& s, Vector3f expected_normal, float tolerance = 1e-3f) {
+void expect_both_lit_as(const QuadSetup& s, Vector3f expected_normal, float tolerance = 1e-3f) {
   Scene scene = normal_map_scene(s);
   expect_lit_as(traced(scene, Instancing::kNever), expected_normal, s.to_light, "tracer (flat)",
                 tolerance);
@@ -128,7 +128,7 @@ TEST(NormalMap, AFlatTexelLeavesTheSurfaceAsItIs) {
 TEST(NormalMap, ATexelTiltedAlongUTiltsTheNormalTowardsGrowingU) {
   // u grows along +x: a texel tilted 30° towards +X tilts the normal 30° towards +x. Lit from
   // 60° on that side it meets the light at 30°; from 20° on the other side at 50°.
-  Setup s{.texel_normal = tilted(30, kX), .to_light = tilted(60, kX)};
+  QuadSetup s{.texel_normal = tilted(30, kX), .to_light = tilted(60, kX)};
   expect_both_lit_as(s, tilted(30, kX));
   s.to_light = tilted(20, -kX);
   expect_both_lit_as(s, tilted(30, kX));
@@ -204,22 +204,24 @@ TEST(NormalMap, ANormalBelowTheSurfaceIsHeldAtTheHorizonNotFlipped) {
   expect_both_lit_as({.texel_normal = tilted(100, kX), .to_light = tilted(60, -kX)}, kX, 0.02f);
 }
 
-// TEXCOORD_1: a 2 × 1 texture, red left and green right; UV set 0 maps the quad to the left
-// texel and set 1 to the right one, so the texture reference's set decides the colour.
+// TEXCOORD_1: a 4 × 1 texture, red in the left half and green in the right; UV set 0 maps the
+// quad into the left half and set 1 into the right one (far enough from the middle that the
+// rasterizer's bilinear filter sees one colour), so the reference's set decides the colour.
 Scene two_uv_sets(uint32_t uv_set, bool normal_map) {
   Scene scene;
   Material m = diffuse_material("two sets", Rgb(1.f));
   std::get<DiffuseMaterial>(m.model).reflectance_texture = {.texture = 0, .uv_set = uv_set};
   Texture halves;
-  halves.width = 2, halves.height = 1, halves.channels = 3;
-  halves.texels_float = {1, 0, 0, 0, 1, 0};
+  halves.width = 4, halves.height = 1, halves.channels = 3;
+  halves.texels_float = {1, 0, 0, 1, 0, 0, 0, 1, 0, 0, 1, 0};
   halves.encoding = TextureEncoding::kLinear;
   halves.filter = TextureFilter::kNearest;
   scene.textures = {halves};
   if (normal_map) {  // on the other set: flat where set 0 points, tilted where set 1 does
     Texture normals = halves;
     Vector3f t = tilted(30, kX);
-    normals.texels_float = {0.5f, 0.5f, 1, (t.x + 1) / 2, (t.y + 1) / 2, (t.z + 1) / 2};
+    float tx = (t.x + 1) / 2, ty = (t.y + 1) / 2, tz = (t.z + 1) / 2;
+    normals.texels_float = {0.5f, 0.5f, 1, 0.5f, 0.5f, 1, tx, ty, tz, tx, ty, tz};
     scene.textures.push_back(normals);
     m.normal_texture = {.texture = 1, .uv_set = 1 - uv_set};
   }
@@ -228,8 +230,8 @@ Scene two_uv_sets(uint32_t uv_set, bool normal_map) {
   quad.positions = {{-1, -1, 0}, {1, -1, 0}, {1, 1, 0}, {-1, 1, 0}};
   quad.normals.assign(4, Normal3f(0, 0, 1));
   quad.indices = {0, 1, 2, 0, 2, 3};
-  quad.uvs = {{0.1f, 0.9f}, {0.4f, 0.9f}, {0.4f, 0.1f}, {0.1f, 0.1f}};
-  quad.uvs1 = {{0.6f, 0.9f}, {0.9f, 0.9f}, {0.9f, 0.1f}, {0.6f, 0.1f}};
+  quad.uvs = {{0.15f, 0.9f}, {0.35f, 0.9f}, {0.35f, 0.1f}, {0.15f, 0.1f}};
+  quad.uvs1 = {{0.65f, 0.9f}, {0.85f, 0.9f}, {0.85f, 0.1f}, {0.65f, 0.1f}};
   scene.add_mesh(std::move(quad));
   scene.lights = {{"sun", DirectionalLight{.direction = -tilted(60, kX), .irradiance = Rgb(1.f)}}};
   scene.camera = normal_map_scene({}).camera;
