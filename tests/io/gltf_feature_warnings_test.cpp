@@ -47,17 +47,27 @@ TEST_F(GltfFeatureWarnings, SkinsMorphTargetsOtherUvSetsAndScenes) {
   doc["skins"] = {{{"joints", {1}}, {"name", "rig"}, {"inverseBindMatrices", matrices}}};
   doc["scenes"].push_back({{"nodes", json::array()}});
   doc["materials"] = {
-      {{"emissiveTexture", {{"index", 0}, {"texCoord", 1}}}, {"normalTexture", {{"index", 0}}}}};
+      {{"emissiveTexture", {{"index", 0}, {"texCoord", 2}}}, {"normalTexture", {{"index", 0}}}}};
   doc["textures"] = {{{"source", 0}}};
   doc["images"] = {{{"uri", "missing.png"}}};
   std::vector<std::string> w = warnings_of(doc);
   // Skins, morph targets and scenes are applied: without an animation, nothing to warn about.
   EXPECT_FALSE(any_contains(w, "skin"));
   EXPECT_FALSE(any_contains(w, "morph"));
-  EXPECT_TRUE(any_contains(w, "TEXCOORD_1 or above is not supported yet (materials[0])"));
+  EXPECT_TRUE(any_contains(w, "TEXCOORD_2 or above is not supported yet (materials[0])"));
   EXPECT_FALSE(any_contains(w, "scenes"));
-  EXPECT_TRUE(
-      any_contains(w, "normalTexture (normal mapping) is not supported yet (materials[0])"));
+  // Normal maps and TEXCOORD_1 are applied: no warning names them.
+  EXPECT_FALSE(any_contains(w, "normalTexture"));
+  EXPECT_FALSE(any_contains(w, "TEXCOORD_1"));
+}
+
+TEST_F(GltfFeatureWarnings, TheSecondUvSetAndNormalMapsAreApplied) {
+  json doc = triangle();
+  doc["materials"] = {{{"baseColorTexture", {{"index", 0}, {"texCoord", 1}}},
+                       {"normalTexture", {{"index", 0}, {"texCoord", 1}}}}};
+  doc["textures"] = {{{"source", 0}}};
+  doc["images"] = {{{"uri", "missing.png"}}};
+  EXPECT_FALSE(any_contains(warnings_of(doc), "is not supported yet"));
 }
 
 TEST_F(GltfFeatureWarnings, UvAndColorMorphTargetsAreNamed) {
@@ -82,7 +92,8 @@ TEST_F(GltfFeatureWarnings, UvAndColorMorphTargetsAreNamed) {
 TEST_F(GltfFeatureWarnings, ManyUsesAreCountedNotListed) {
   json doc = triangle();
   doc["materials"] = json::array();
-  for (int i = 0; i < 5; ++i) doc["materials"].push_back({{"normalTexture", {{"index", 0}}}});
+  for (int i = 0; i < 5; ++i)
+    doc["materials"].push_back({{"emissiveTexture", {{"index", 0}, {"texCoord", 2}}}});
   doc["textures"] = {{{"source", 0}}};
   doc["images"] = {{{"uri", "missing.png"}}};
   std::vector<std::string> w = warnings_of(doc);

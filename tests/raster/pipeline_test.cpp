@@ -121,7 +121,9 @@ std::vector<MeshVertex> sphere_grid(int rings, int segments, std::vector<uint32_
           v.push_back({Point3f(gx * 2.2f - 3.3f + n.x, gy * 2.2f - 2.2f + n.y, n.z),
                        n,
                        {},
-                       Rgb(0.7f, 0.5f, 0.3f)});
+                       Rgb(0.7f, 0.5f, 0.3f),
+                       {},
+                       {}});
         }
       for (int r = 0; r < rings; ++r)
         for (int s = 0; s < segments; ++s) {

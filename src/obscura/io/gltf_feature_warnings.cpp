@@ -35,22 +35,20 @@ std::string material_name(const tinygltf::Model& model, size_t i) {
 
 void warn_unapplied_gltf_features(const tinygltf::Model& model, const std::string& file,
                                   std::vector<std::string>& warnings) {
-  Uses texcoord, normal_maps;
+  Uses texcoord;
   for (size_t i = 0; i < model.materials.size(); ++i) {
     const tinygltf::Material& m = model.materials[i];
-    if (m.normalTexture.index >= 0) normal_maps.add(material_name(model, i));
     const tinygltf::PbrMetallicRoughness& pbr = m.pbrMetallicRoughness;
     for (int set :
          {pbr.baseColorTexture.texCoord, pbr.metallicRoughnessTexture.texCoord,
           m.normalTexture.texCoord, m.occlusionTexture.texCoord, m.emissiveTexture.texCoord})
-      if (set > 0) {
+      if (set > 1) {
         texcoord.add(material_name(model, i));
         break;
       }
   }
-  normal_maps.warn(file, "normalTexture (normal mapping)",
-                   "shaded with the interpolated vertex normals", warnings);
-  texcoord.warn(file, "a texture on TEXCOORD_1 or above", "sampled with TEXCOORD_0 instead",
+  // TEXCOORD_0 and TEXCOORD_1 are kept (Mesh::uv_set), as glTF asks of every client.
+  texcoord.warn(file, "a texture on TEXCOORD_2 or above", "sampled with TEXCOORD_0 instead",
                 warnings);
 
   Uses other_targets;

@@ -417,9 +417,20 @@ Mesh GltfImporter::import_primitive(const tinygltf::Primitive& p, const std::str
     mesh.normals.emplace_back(v[3 * i], v[3 * i + 1], v[3 * i + 2]);
   v = read("TEXCOORD_0", {2}, AccessorNumbers::kFloatOrSmallInteger);
   for (size_t i = 0; i < v.size() / 2; ++i) mesh.uvs.emplace_back(v[2 * i], v[2 * i + 1]);
+  v = read("TEXCOORD_1", {2}, AccessorNumbers::kFloatOrSmallInteger);
+  for (size_t i = 0; i < v.size() / 2; ++i) mesh.uvs1.emplace_back(v[2 * i], v[2 * i + 1]);
   v = read("TANGENT", {4}, AccessorNumbers::kFloatOrNormalized);
-  for (size_t i = 0; i < v.size() / 4; ++i)
-    mesh.tangents.emplace_back(v[4 * i], v[4 * i + 1], v[4 * i + 2], v[4 * i + 3]);
+  for (size_t i = 0; i < v.size() / 4; ++i) {
+    // w is the handedness, ±1; a file's 0 or rounding is read by its sign.
+    mesh.tangents.emplace_back(v[4 * i], v[4 * i + 1], v[4 * i + 2], v[4 * i + 3] < 0 ? -1 : 1);
+    if (!std::isfinite(v[4 * i]) || !std::isfinite(v[4 * i + 1]) || !std::isfinite(v[4 * i + 2])) {
+      scene_.warnings.push_back(file_ + ": " + where + ".attributes.TANGENT: vertex " +
+                                std::to_string(i) +
+                                " is not finite (NaN or infinity); tangents are generated instead");
+      mesh.tangents = {};
+      break;
+    }
+  }
   int c = 0;
   v = read("COLOR_0", {3, 4}, AccessorNumbers::kFloatOrNormalized, &c);
   for (size_t i = 0; c > 0 && i < v.size() / size_t(c); ++i)

@@ -164,6 +164,8 @@ void drop_unused_vertices(Mesh& mesh) {
   compact(mesh.positions);
   compact(mesh.normals);
   compact(mesh.uvs);
+  compact(mesh.uvs1);
+  compact(mesh.tangents);
   compact(mesh.colors);
   compact(mesh.color_alphas);
 }

@@ -18,6 +18,7 @@
 #include "obscura/raster/shadow_map.h"
 #include "obscura/raster/surface_material.h"
 #include "obscura/raster/varyings.h"
+#include "obscura/shading/normal_map.h"
 
 namespace obscura::raster {
 
@@ -32,6 +33,7 @@ struct InstanceUniforms {
   Matrix4f clip_from_object;
   Matrix4f world_from_object;
   Matrix4f normal_from_object;  // the inverse transpose of world_from_object's linear part
+  float handedness = 1;         // −1 where world_from_object mirrors: tangent w flips with it
   // The eye: a point (perspective) or, for orthographic views, the direction towards the viewer.
   Point3f eye;
   Vector3f to_viewer;
@@ -90,13 +92,18 @@ struct ScenePixelProgram {
     Vector3f normal;   // world, interpolated (not unit)
     float u, v;
     Rgb color;
+    float u1, v1;      // TEXCOORD_1
+    Vector3f tangent;  // world, interpolated; zero without a normal map
+    float tangent_w;   // handedness, in world space
   };
   InstanceUniforms uniforms;
 
   VertexOutput<Varyings> vertex(const MeshVertex& m) const {
+    Vector3f t =
+        uniforms.world_from_object.apply_to_vector({m.tangent.x, m.tangent.y, m.tangent.z});
     return {uniforms.clip_from_object(m.position),
             {uniforms.world_point(m.position), uniforms.world_normal(m.normal), m.uv.x, m.uv.y,
-             m.color}};
+             m.color, m.uv1.x, m.uv1.y, t, m.tangent.w * uniforms.handedness}};
   }
 
   Rgb fragment(const Varyings& a, const Varyings& dx, const Varyings& dy, FragmentInfo info) const {
@@ -110,12 +117,25 @@ struct ScenePixelProgram {
     float i2 = dot(interpolated, interpolated);
     geometric = g2 > 0 ? geometric / std::sqrt(g2) : interpolated / std::sqrt(std::max(i2, 1e-30f));
     geometric = face_towards(geometric, v);
+    FragmentUvs uvs{{{a.u, a.v, dx.u, dx.v, dy.u, dy.v}, {a.u1, a.v1, dx.u1, dx.v1, dy.u1, dy.v1}}};
     Vector3f n = geometric;
-    if (!uniforms.flat && i2 > 0)  // the tracer's convention (math/shading_normal.h)
-      n = visible_shading_normal(interpolated / std::sqrt(i2), geometric, v);
+    if (!uniforms.flat && i2 > 0) {  // the tracer's convention (math/shading_normal.h)
+      Vector3f shading = interpolated / std::sqrt(i2);
+      if (m.normal_texture) {
+        // Perturbed in the frame of the unperturbed normal and kept above the surface on its
+        // side, as the tracer does; a back face then flips the whole frame (glTF doubleSided).
+        Vector3f side = dot(shading, geometric) < 0 ? -geometric : geometric;
+        Rgb texel =
+            sample_or_one(m.normal_texture, m.normal_transform, m.filter, uvs.set[m.normal_uv_set]);
+        shading = shading::keep_above_surface(
+            shading::perturbed_normal(shading, {a.tangent.x, a.tangent.y, a.tangent.z, a.tangent_w},
+                                      {texel.r, texel.g, texel.b}, m.normal_scale),
+            side);
+      }
+      n = visible_shading_normal(shading, geometric, v);
+    }
 
-    TextureCoordinates tc{a.u, a.v, dx.u, dx.v, dy.u, dy.v};
-    SurfacePoint s = surface_point(m, tc, a.color);
+    SurfacePoint s = surface_point(m, uvs, a.color);
     if (uniforms.force_blinn && s.model == SurfaceModel::kPhong) {
       s.model = SurfaceModel::kBlinnPhong;
       s.lobe_normalization = blinn_phong_lobe_normalization(s.shininess);
@@ -124,7 +144,8 @@ struct ScenePixelProgram {
                 ? s.base
                 : shade_surface(s, *uniforms.lights, uniforms.shadows, a.position, n, geometric, v);
     if (info.front_facing)
-      c += m.emission * sample_or_one(m.emission_texture, m.emission_transform, m.filter, tc);
+      c += m.emission * sample_or_one(m.emission_texture, m.emission_transform, m.filter,
+                                      uvs.set[m.emission_uv_set]);
     return c * uniforms.exposure;
   }
 
@@ -143,6 +164,7 @@ struct SceneGouraudProgram {
     Vector3f normal;
     float u, v;
     Rgb lit;  // reflected light at the vertex, before the base texture
+    float u1, v1;
   };
   InstanceUniforms uniforms;
 
@@ -159,16 +181,18 @@ struct SceneGouraudProgram {
     Rgb lit = s.model == SurfaceModel::kUnlit
                   ? s.base
                   : shade_surface(s, *uniforms.lights, uniforms.shadows, p, n, n, v);
-    return {uniforms.clip_from_object(m.position), {p, n, m.uv.x, m.uv.y, lit}};
+    return {uniforms.clip_from_object(m.position), {p, n, m.uv.x, m.uv.y, lit, m.uv1.x, m.uv1.y}};
   }
 
   Rgb fragment(const Varyings& a, const Varyings& dx, const Varyings& dy, FragmentInfo info) const {
     const SurfaceMaterial& m = *uniforms.material;
-    TextureCoordinates tc{a.u, a.v, dx.u, dx.v, dy.u, dy.v};
-    // Modulate, as fixed-function GL.
-    Rgb c = a.lit * sample_or_one(m.base_texture, m.base_transform, m.filter, tc);
+    FragmentUvs uvs{{{a.u, a.v, dx.u, dx.v, dy.u, dy.v}, {a.u1, a.v1, dx.u1, dx.v1, dy.u1, dy.v1}}};
+    // Modulate, as fixed-function GL. (Lit at the vertices: normal maps do not apply.)
+    Rgb c =
+        a.lit * sample_or_one(m.base_texture, m.base_transform, m.filter, uvs.set[m.base_uv_set]);
     if (info.front_facing)
-      c += m.emission * sample_or_one(m.emission_texture, m.emission_transform, m.filter, tc);
+      c += m.emission * sample_or_one(m.emission_texture, m.emission_transform, m.filter,
+                                      uvs.set[m.emission_uv_set]);
     return c * uniforms.exposure;
   }
 
@@ -198,8 +222,9 @@ struct WithCoverage {
     return program.fragment(a.inner, dx.inner, dy.inner, info);
   }
   float coverage(const Varyings& a, const Varyings& dx, const Varyings& dy) const {
-    TextureCoordinates tc{a.inner.u, a.inner.v, dx.inner.u, dx.inner.v, dy.inner.u, dy.inner.v};
-    return coverage_alpha(*program.uniforms.material, tc, a.alpha);
+    const auto &i = a.inner, &x = dx.inner, &y = dy.inner;
+    FragmentUvs uvs{{{i.u, i.v, x.u, x.v, y.u, y.v}, {i.u1, i.v1, x.u1, x.v1, y.u1, y.v1}}};
+    return coverage_alpha(*program.uniforms.material, uvs, a.alpha);
   }
   Vector3f normal(const Varyings& a) const { return program.normal(a.inner); }
 };
@@ -207,17 +232,18 @@ struct WithCoverage {
 struct DepthCoverageProgram {
   using Vertex = MeshVertex;
   struct Varyings {
-    float u, v, alpha;
+    float u, v, u1, v1, alpha;
   };
   Matrix4f clip_from_object;
   const SurfaceMaterial* material = nullptr;
 
   VertexOutput<Varyings> vertex(const MeshVertex& m) const {
-    return {clip_from_object(m.position), {m.uv.x, m.uv.y, m.alpha}};
+    return {clip_from_object(m.position), {m.uv.x, m.uv.y, m.uv1.x, m.uv1.y, m.alpha}};
   }
   Rgb fragment(const Varyings&, FragmentInfo) const { return {}; }
   float coverage(const Varyings& a, const Varyings& dx, const Varyings& dy) const {
-    return coverage_alpha(*material, {a.u, a.v, dx.u, dx.v, dy.u, dy.v}, a.alpha);
+    FragmentUvs uvs{{{a.u, a.v, dx.u, dx.v, dy.u, dy.v}, {a.u1, a.v1, dx.u1, dx.v1, dy.u1, dy.v1}}};
+    return coverage_alpha(*material, uvs, a.alpha);
   }
 };
 

@@ -11,6 +11,7 @@
 #include "obscura/raster/msaa.h"
 #include "obscura/raster/pipeline.h"
 #include "obscura/raster/scene_program.h"
+#include "obscura/scene/tangents.h"
 
 namespace obscura::raster {
 
@@ -27,13 +28,24 @@ void draw_less(RenderTarget& target, const DrawState& state, const P& program,
 }
 
 // Object-space vertices of a mesh. Meshes without normals get one vertex per corner carrying the
-// face normal (what the tracer shades them with), drawn unindexed.
-void compile_mesh(const Mesh& mesh, std::vector<MeshVertex>& vertices,
+// face normal (what the tracer shades them with), drawn unindexed. Tangents are filled in only
+// for a mesh drawn with a normal map (`normal_map_uv_set` ≥ 0): the file's, or generated from
+// that UV set (scene/tangents.h).
+void compile_mesh(const Mesh& mesh, int normal_map_uv_set, std::vector<MeshVertex>& vertices,
                   std::vector<uint32_t>& indices) {
+  std::vector<Vector4f> generated;
+  if (normal_map_uv_set >= 0 && mesh.tangents.empty())
+    generated = generate_tangents(mesh, uint32_t(normal_map_uv_set));
+  const std::vector<Vector4f>& tangents =
+      normal_map_uv_set < 0 || mesh.tangents.empty() ? generated : mesh.tangents;
   auto vertex = [&](uint32_t i, Vector3f n) {
-    return MeshVertex{mesh.positions[i], n, mesh.uvs.empty() ? Point2f() : mesh.uvs[i],
+    return MeshVertex{mesh.positions[i],
+                      n,
+                      mesh.uvs.empty() ? Point2f() : mesh.uvs[i],
                       mesh.colors.empty() ? Rgb(1.f) : mesh.colors[i],
-                      mesh.color_alphas.empty() ? 1.f : mesh.color_alphas[i]};
+                      mesh.color_alphas.empty() ? 1.f : mesh.color_alphas[i],
+                      mesh.uvs1.empty() ? Point2f() : mesh.uvs1[i],
+                      tangents.empty() ? Vector4f() : tangents[i]};
   };
   if (!mesh.normals.empty()) {
     vertices.reserve(mesh.positions.size());
@@ -97,6 +109,7 @@ std::vector<bool> used_textures(const Scene& scene) {
   std::vector<bool> used(scene.textures.size(), false);
   for (const Material& m : scene.materials) {
     mark_used(m.emission_texture, used);
+    mark_used(m.normal_texture, used);
     std::visit(
         [&](const auto& model) {
           using T = std::decay_t<decltype(model)>;
@@ -194,8 +207,15 @@ SceneRasterizer::SceneRasterizer(const Scene& scene, RasterSettings settings)
   scene.validate();
   vertices_.resize(scene.meshes.size());
   indices_.resize(scene.meshes.size());
+  // The UV set of the normal map each mesh is drawn with, if any (the first one found).
+  normal_map_uv_set_.assign(scene.meshes.size(), -1);
+  for (const Instance& instance : scene.instances) {
+    const TextureRef& normal_map = scene.materials[scene.material_of(instance)].normal_texture;
+    if (normal_map.valid() && normal_map_uv_set_[instance.mesh] < 0)
+      normal_map_uv_set_[instance.mesh] = int(normal_map.uv_set);
+  }
   for (size_t m = 0; m < scene.meshes.size(); ++m) {
-    compile_mesh(scene.meshes[m], vertices_[m], indices_[m]);
+    compile_mesh(scene.meshes[m], normal_map_uv_set_[m], vertices_[m], indices_[m]);
     if (scene.meshes[m].deforms()) deforming_.emplace(uint32_t(m), scene.meshes[m]);
   }
 
@@ -286,7 +306,7 @@ std::pair<const std::vector<MeshVertex>*, const std::vector<uint32_t>*> SceneRas
     std::vector<uint32_t>& scratch_indices) const {
   auto found = deforming_.find(mesh);
   if (found == deforming_.end()) return {&vertices_[mesh], &indices_[mesh]};
-  compile_mesh(found->second.posed_at(time_s), scratch, scratch_indices);
+  compile_mesh(found->second.posed_at(time_s), normal_map_uv_set_[mesh], scratch, scratch_indices);
   return {&scratch, &scratch_indices};
 }
 
@@ -424,6 +444,7 @@ void SceneRasterizer::draw_instance(RenderTarget& target, const InstanceUniforms
   u.clip_from_object = Matrix4f(clip_from_world * to_matrix(world_from_object));
   u.world_from_object = Matrix4f(world_from_object.matrix());
   u.normal_from_object = Matrix4f(transpose(world_from_object.inverse_matrix()));
+  u.handedness = world_from_object.swaps_handedness() ? -1.f : 1.f;
   u.material = &material;
   DrawState state;
   state.object_id = uint32_t(i + 1);

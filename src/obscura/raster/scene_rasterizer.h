@@ -109,6 +109,7 @@ class SceneRasterizer {
   std::vector<std::vector<MeshVertex>> vertices_;  // per mesh, object space
   std::vector<std::vector<uint32_t>> indices_;     // per mesh (empty: unindexed)
   std::map<uint32_t, Mesh> deforming_;             // meshes posed per frame, by index
+  std::vector<int> normal_map_uv_set_;             // per mesh: its normal map's UV set, or −1
   std::vector<Texture> textures_;                  // the used scene textures
   std::vector<Texture> alpha_textures_;            // the alpha channels of those that give coverage
   std::vector<SurfaceMaterial> materials_;

@@ -26,6 +26,8 @@ struct MeshVertex {
   Point2f uv;          // texture coordinates (glTF convention)
   Rgb color{1, 1, 1};  // vertex colour, multiplies the material's colours
   float alpha = 1;     // vertex colour alpha, multiplies the material's coverage
+  Point2f uv1;         // the second texture coordinate set (glTF TEXCOORD_1)
+  Vector4f tangent;    // xyz along +u, w = ±1 handedness (glTF); zero where no normal map uses it
 };
 
 struct SceneUniforms {

@@ -11,6 +11,10 @@ const Texture* texture_of(const TextureRef& ref, const std::vector<const Texture
   return ref.valid() && size_t(ref.texture) < textures.size() ? textures[ref.texture] : nullptr;
 }
 
+uint8_t uv_set_of(const TextureRef& ref) {
+  return ref.uv_set == 1 ? 1 : 0;  // sets past 1 are not kept (the loader warns)
+}
+
 float ggx_alpha(float roughness) {
   float r = std::clamp(roughness, 0.f, 1.f);
   return r * r;
@@ -29,6 +33,11 @@ SurfaceMaterial compile_material(const Material& material,
   s.emission = material.emission;
   s.emission_texture = texture_of(material.emission_texture, textures);
   s.emission_transform = material.emission_texture.transform;
+  s.emission_uv_set = uv_set_of(material.emission_texture);
+  s.normal_texture = texture_of(material.normal_texture, textures);
+  s.normal_transform = material.normal_texture.transform;
+  s.normal_uv_set = uv_set_of(material.normal_texture);
+  s.normal_scale = material.normal_scale;
   s.double_sided = material.double_sided;
   struct Visitor {
     SurfaceMaterial& s;
@@ -38,6 +47,7 @@ SurfaceMaterial compile_material(const Material& material,
       s.base = m.reflectance;
       s.base_texture = texture_of(m.reflectance_texture, textures);
       s.base_transform = m.reflectance_texture.transform;
+      s.base_uv_set = uv_set_of(m.reflectance_texture);
     }
     void operator()(const obscura::PhongMaterial& m) const {
       s.model = m.blinn ? SurfaceModel::kBlinnPhong : SurfaceModel::kPhong;
@@ -46,6 +56,7 @@ SurfaceMaterial compile_material(const Material& material,
       s.shininess = std::max(0.f, m.shininess);
       s.base_texture = texture_of(m.diffuse_texture, textures);
       s.base_transform = m.diffuse_texture.transform;
+      s.base_uv_set = uv_set_of(m.diffuse_texture);
     }
     void operator()(const ConductorMaterial& m) const {
       s.model = SurfaceModel::kConductor;
@@ -67,8 +78,10 @@ SurfaceMaterial compile_material(const Material& material,
       s.base = m.base_color;
       s.base_texture = texture_of(m.base_color_texture, textures);
       s.base_transform = m.base_color_texture.transform;
+      s.base_uv_set = uv_set_of(m.base_color_texture);
       s.occlusion_texture = texture_of(m.occlusion_texture, textures);
       s.occlusion_transform = m.occlusion_texture.transform;
+      s.occlusion_uv_set = uv_set_of(m.occlusion_texture);
       if (m.unlit) {
         s.model = SurfaceModel::kUnlit;
         return;
@@ -83,6 +96,7 @@ SurfaceMaterial compile_material(const Material& material,
       s.specular_strength = m.specular, s.specular = m.specular_color, s.ior = m.ior;
       s.metallic_roughness_texture = texture_of(m.metallic_roughness_texture, textures);
       s.metallic_roughness_transform = m.metallic_roughness_texture.transform;
+      s.metallic_roughness_uv_set = uv_set_of(m.metallic_roughness_texture);
     }
     void operator()(const EmissiveMaterial&) const { s.model = SurfaceModel::kBlack; }
   };
@@ -129,24 +143,27 @@ SurfacePoint surface_point_untextured(const SurfaceMaterial& m, Rgb vertex_color
   return p;
 }
 
-SurfacePoint surface_point(const SurfaceMaterial& m, const TextureCoordinates& tc,
-                           Rgb vertex_color) {
-  Rgb color = vertex_color * sample_or_one(m.base_texture, m.base_transform, m.filter, tc);
+SurfacePoint surface_point(const SurfaceMaterial& m, const FragmentUvs& uvs, Rgb vertex_color) {
+  Rgb color = vertex_color *
+              sample_or_one(m.base_texture, m.base_transform, m.filter, uvs.set[m.base_uv_set]);
+  const TextureCoordinates& occlusion_tc = uvs.set[m.occlusion_uv_set];
   if (m.model == SurfaceModel::kMetallicRoughness && m.metallic_roughness_texture) {
-    Rgb mr =
-        sample_or_one(m.metallic_roughness_texture, m.metallic_roughness_transform, m.filter, tc);
+    Rgb mr = sample_or_one(m.metallic_roughness_texture, m.metallic_roughness_transform, m.filter,
+                           uvs.set[m.metallic_roughness_uv_set]);
     SurfaceMaterial textured = m;
     textured.roughness *= mr.g;
     textured.metallic *= mr.b;
     SurfacePoint p = surface_point_untextured(textured, color);
-    p.occlusion = m.occlusion_texture
-                      ? sample_or_one(m.occlusion_texture, m.occlusion_transform, m.filter, tc).r
-                      : 1.f;
+    p.occlusion =
+        m.occlusion_texture
+            ? sample_or_one(m.occlusion_texture, m.occlusion_transform, m.filter, occlusion_tc).r
+            : 1.f;
     return p;
   }
   SurfacePoint p = surface_point_untextured(m, color);
   if (m.occlusion_texture)
-    p.occlusion = sample_or_one(m.occlusion_texture, m.occlusion_transform, m.filter, tc).r;
+    p.occlusion =
+        sample_or_one(m.occlusion_texture, m.occlusion_transform, m.filter, occlusion_tc).r;
   return p;
 }
 

@@ -61,8 +61,14 @@ struct SurfaceMaterial {
   const Texture* metallic_roughness_texture = nullptr;
   const Texture* occlusion_texture = nullptr;
   const Texture* emission_texture = nullptr;
+  const Texture* normal_texture = nullptr;  // tangent-space normal map (shading/normal_map.h)
   // Their KHR_texture_transform maps.
-  UvTransform base_transform, metallic_roughness_transform, occlusion_transform, emission_transform;
+  UvTransform base_transform, metallic_roughness_transform, occlusion_transform, emission_transform,
+      normal_transform;
+  // Their UV sets (TextureRef::uv_set: 0 or 1, an index into FragmentUvs::set).
+  uint8_t base_uv_set = 0, metallic_roughness_uv_set = 0, occlusion_uv_set = 0, emission_uv_set = 0,
+          normal_uv_set = 0;
+  float normal_scale = 1;  // glTF normalTexture.scale
   TextureFilter filter = TextureFilter::kTrilinear;
   bool double_sided = true;
   // glTF alpha coverage, for metallic-roughness materials as in the tracer: the base colour
@@ -82,6 +88,10 @@ SurfaceMaterial compile_material(const Material& material,
 // Texture coordinates and their screen-space derivatives at a fragment.
 struct TextureCoordinates {
   float u = 0, v = 0, du_dx = 0, dv_dx = 0, du_dy = 0, dv_dy = 0;
+};
+// Both texture coordinate sets a fragment has (TEXCOORD_0 and TEXCOORD_1).
+struct FragmentUvs {
+  TextureCoordinates set[2];
 };
 
 // The material at one point: textures applied, vertex colour multiplied into the base colour.
@@ -108,15 +118,15 @@ OBSCURA_RASTER_INLINE Rgb sample_or_one(const Texture* t, const UvTransform& m,
 }
 
 // The coverage α at a point (see SurfaceMaterial::alpha_mode).
-OBSCURA_RASTER_INLINE float coverage_alpha(const SurfaceMaterial& m, const TextureCoordinates& tc,
+OBSCURA_RASTER_INLINE float coverage_alpha(const SurfaceMaterial& m, const FragmentUvs& uvs,
                                            float vertex_alpha) {
   float a = m.base_alpha * vertex_alpha;
-  if (m.alpha_texture) a *= sample_or_one(m.alpha_texture, m.base_transform, m.filter, tc).r;
+  if (m.alpha_texture)
+    a *= sample_or_one(m.alpha_texture, m.base_transform, m.filter, uvs.set[m.base_uv_set]).r;
   return a;
 }
 
-SurfacePoint surface_point(const SurfaceMaterial& m, const TextureCoordinates& tc,
-                           Rgb vertex_color);
+SurfacePoint surface_point(const SurfaceMaterial& m, const FragmentUvs& uvs, Rgb vertex_color);
 // The same without textures (Gouraud shading at vertices).
 SurfacePoint surface_point_untextured(const SurfaceMaterial& m, Rgb vertex_color);
 

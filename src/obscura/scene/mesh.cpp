@@ -10,11 +10,17 @@ Bounds3f Mesh::bounds() const {
   return b;
 }
 
+const std::vector<Point2f>& Mesh::uv_set(uint32_t set) const {
+  static const std::vector<Point2f> kNone;
+  return set == 0 ? uvs : set == 1 ? uvs1 : kNone;
+}
+
 size_t Mesh::memory_bytes() const {
   return positions.capacity() * sizeof(Point3f) + normals.capacity() * sizeof(Normal3f) +
-         uvs.capacity() * sizeof(Point2f) + tangents.capacity() * sizeof(Vector4f) +
-         colors.capacity() * sizeof(Rgb) + color_alphas.capacity() * sizeof(float) +
-         indices.capacity() * sizeof(uint32_t) + name.capacity() +
+         (uvs.capacity() + uvs1.capacity()) * sizeof(Point2f) +
+         tangents.capacity() * sizeof(Vector4f) + colors.capacity() * sizeof(Rgb) +
+         color_alphas.capacity() * sizeof(float) + indices.capacity() * sizeof(uint32_t) +
+         name.capacity() +
          (deformation.positions.size() * sizeof(Point3f) +
           deformation.normals.size() * sizeof(Normal3f)) *
              positions.size();

@@ -28,6 +28,7 @@ struct Mesh {
   std::vector<Point3f> positions;
   std::vector<Normal3f> normals;   // unit shading normals
   std::vector<Point2f> uvs;        // texture coordinates; (0, 0) is the image's top-left (glTF)
+  std::vector<Point2f> uvs1;       // a second set (glTF TEXCOORD_1), as uvs
   std::vector<Vector4f> tangents;  // xyz unit tangent along +u, w = ±1 bitangent sign (glTF)
   std::vector<Rgb> colors;         // linear vertex colours, multiplied into the base colour
   // The alpha of 4-component vertex colours (glTF COLOR_0): it multiplies the material's alpha
@@ -40,6 +41,11 @@ struct Mesh {
   bool deforms() const { return deformation.positions.size() > 1; }
   // The mesh with its deformation's positions and normals at `time_s` (itself if rigid).
   Mesh posed_at(double time_s) const;
+
+  // TextureRef::uv_set → coordinates: set 0 is `uvs`, set 1 `uvs1`; sets beyond are not kept
+  // (empty).
+  static constexpr uint32_t kUvSets = 2;
+  const std::vector<Point2f>& uv_set(uint32_t set) const;
 
   size_t triangle_count() const { return indices.size() / 3; }
   size_t vertex_count() const { return positions.size(); }

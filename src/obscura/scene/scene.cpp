@@ -34,6 +34,7 @@ void validate_mesh(const Mesh& m, const std::string& where, size_t material_coun
       throw Error(where, "vertex " + std::to_string(i) + " position is not finite");
   check_attribute_size(where, "normals", m.normals, m.positions.size());
   check_attribute_size(where, "uvs", m.uvs, m.positions.size());
+  check_attribute_size(where, "uvs1", m.uvs1, m.positions.size());
   check_attribute_size(where, "tangents", m.tangents, m.positions.size());
   check_attribute_size(where, "colors", m.colors, m.positions.size());
   check_attribute_size(where, "color_alphas", m.color_alphas, m.positions.size());

@@ -67,7 +67,7 @@ struct UvTransform {
 // A material's use of a texture: which one, which UV set, and how the UVs are transformed.
 struct TextureRef {
   int32_t texture = -1;  // index into Scene::textures; −1 = none
-  uint32_t uv_set = 0;   // TEXCOORD_n; only set 0 is stored in Mesh::uvs for now
+  uint32_t uv_set = 0;   // TEXCOORD_n: which of the mesh's sets (Mesh::uv_set)
   UvTransform transform = {};
   bool valid() const { return texture >= 0; }
 };

@@ -46,7 +46,8 @@ AreaLights::AreaLights(const std::vector<Mesh>& meshes, const std::vector<Materi
     Rgb radiance = material.emission;
     if (radiance.is_black() || mesh.positions.empty()) continue;
     const Texture* texture = nullptr;
-    if (material.emission_texture.valid() && textures && !mesh.uvs.empty() &&
+    const std::vector<Point2f>& uvs = mesh.uv_set(material.emission_texture.uv_set);
+    if (material.emission_texture.valid() && textures && !uvs.empty() &&
         size_t(material.emission_texture.texture) < textures->size())
       texture = &(*textures)[material.emission_texture.texture];
     light_of_triangle_[m].assign(mesh.triangle_count(), -1);
@@ -67,9 +68,9 @@ AreaLights::AreaLights(const std::vector<Mesh>& meshes, const std::vector<Materi
       double weight = 1;
       if (texture) {
         tri.texture = texture;
-        tri.uv0 = mesh.uvs[mesh.indices[3 * t]];
-        tri.uv1 = mesh.uvs[mesh.indices[3 * t + 1]];
-        tri.uv2 = mesh.uvs[mesh.indices[3 * t + 2]];
+        tri.uv0 = uvs[mesh.indices[3 * t]];
+        tri.uv1 = uvs[mesh.indices[3 * t + 1]];
+        tri.uv2 = uvs[mesh.indices[3 * t + 2]];
         tri.transform = material.emission_texture.transform;
         weight = texture_weight(*texture, tri.transform, tri.uv0, tri.uv1, tri.uv2);
       }

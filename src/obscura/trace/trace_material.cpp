@@ -4,11 +4,15 @@
 #include <cmath>
 #include <variant>
 
+#include "obscura/shading/normal_map.h"
+
 namespace obscura {
 
 TraceMaterial::TraceMaterial(const Material& material, const std::vector<Texture>* textures)
     : emission(material.emission),
       emission_texture_(material.emission_texture),
+      normal_texture_(material.normal_texture),
+      normal_scale_(material.normal_scale),
       model_(material.model),
       textures_(textures) {
   // Coverage comes from the metallic-roughness base colour, as in glTF; other models are opaque.
@@ -42,16 +46,25 @@ bool TraceMaterial::passes_through(const SurfaceHit& hit, float u) const {
   if (alpha_mode_ == AlphaMode::kOpaque) return false;
   float alpha = alpha_ * hit.vertex_alpha;
   if (alpha_texture_.valid() && textures_)
-    alpha *=
-        sample_texture((*textures_)[alpha_texture_.texture], alpha_texture_.transform(hit.uv)).w;
+    alpha *= sample_texture((*textures_)[alpha_texture_.texture],
+                            alpha_texture_.transform(texture_uv(hit, alpha_texture_.uv_set)))
+                 .w;
   if (alpha_mode_ == AlphaMode::kMask) return alpha < alpha_cutoff_;
   return u >= alpha;
 }
 
 Rgb TraceMaterial::texture_rgb(const TextureRef& ref, const SurfaceHit& hit) const {
   if (!ref.valid() || !textures_) return Rgb(1.f);
-  Vector4f v = sample_texture((*textures_)[ref.texture], ref.transform(hit.uv));
+  Vector4f v =
+      sample_texture((*textures_)[ref.texture], ref.transform(texture_uv(hit, ref.uv_set)));
   return {v.x, v.y, v.z};
+}
+
+Vector3f TraceMaterial::normal_mapped(const SurfaceHit& hit, Vector3f normal,
+                                      Vector4f tangent) const {
+  if (!has_normal_map()) return normal;
+  Rgb texel = texture_rgb(normal_texture_, hit);
+  return shading::perturbed_normal(normal, tangent, {texel.r, texel.g, texel.b}, normal_scale_);
 }
 
 AnyBsdf TraceMaterial::bsdf_at(const SurfaceHit& hit) const {

@@ -49,12 +49,20 @@ class TraceMaterial {
   bool has_alpha() const { return alpha_mode_ != AlphaMode::kOpaque; }
   bool passes_through(const SurfaceHit& hit, float u) const;
 
+  // Tangent-space normal mapping (shading/normal_map.h): whether the material has a normal map,
+  // and the perturbed unit normal at `hit` given the unit interpolated normal and the
+  // interpolated tangent (xyz, w = handedness), all in world space.
+  bool has_normal_map() const { return normal_texture_.valid() && textures_; }
+  Vector3f normal_mapped(const SurfaceHit& hit, Vector3f normal, Vector4f tangent) const;
+
  private:
   Rgb texture_rgb(const TextureRef& ref, const SurfaceHit& hit) const;
 
   TextureRef emission_texture_;
   bool unlit_ = false;
   Rgb absorption_;  // σ_a per metre: −ln(attenuation_color) / attenuation_distance
+  TextureRef normal_texture_;
+  float normal_scale_ = 1;
   AlphaMode alpha_mode_ = AlphaMode::kOpaque;
   float alpha_cutoff_ = 0.5f;
   float alpha_ = 1;           // the base colour factor's alpha

@@ -9,34 +9,51 @@
 #include "obscura/camera/animated_transform.h"
 #include "obscura/math/error.h"
 #include "obscura/math/rng.h"
+#include "obscura/scene/tangents.h"
+#include "obscura/shading/normal_map.h"
 
 namespace obscura {
 
 namespace {
 
-// A world-space copy of `mesh` placed by `world_from_object` (positions, normals, UVs, colours).
+// A world-space copy of `mesh` placed by `world_from_object` (positions, normals, UVs, colours,
+// tangents).
 Mesh flatten(const Mesh& mesh, const Transform& world_from_object) {
   Mesh world;
   world.name = mesh.name;
   world.material = mesh.material;
   world.indices = mesh.indices;
   world.uvs = mesh.uvs;
+  world.uvs1 = mesh.uvs1;
   world.colors = mesh.colors;
   world.color_alphas = mesh.color_alphas;
   world.positions.reserve(mesh.positions.size());
   for (Point3f p : mesh.positions) world.positions.push_back(world_from_object(p));
   for (Normal3f n : mesh.normals) world.normals.push_back(normalize(world_from_object(n)));
+  // Tangents lie in the surface: they move as vectors. A mirror turns the bitangent's side of
+  // cross(N, T) over, so the handedness flips with it.
+  const bool mirror = world_from_object.swaps_handedness();
+  world.tangents.reserve(mesh.tangents.size());
+  for (Vector4f t : mesh.tangents) {
+    Vector3f v = world_from_object(Vector3f(t.x, t.y, t.z));
+    world.tangents.emplace_back(v.x, v.y, v.z, mirror ? -t.w : t.w);
+  }
   // A mirroring transform turns counter-clockwise faces clockwise; restore the winding.
-  if (world_from_object.swaps_handedness())
+  if (mirror)
     for (size_t t = 0; t < world.indices.size(); t += 3)
       std::swap(world.indices[t + 1], world.indices[t + 2]);
   return world;
 }
 
-// What the shading code keeps of a mesh: Embree holds the positions.
-Mesh shading_attributes(Mesh mesh) {
+// What the shading code keeps of a mesh: Embree holds the positions. Tangents are kept only
+// where a normal map needs them (`normal_map_uv_set` ≥ 0), generated from that UV set where the
+// mesh has none (scene/tangents.h).
+Mesh shading_attributes(Mesh mesh, int normal_map_uv_set) {
+  if (normal_map_uv_set < 0)
+    mesh.tangents = {};
+  else if (mesh.tangents.empty())
+    mesh.tangents = generate_tangents(mesh, uint32_t(normal_map_uv_set));
   mesh.positions = {};
-  mesh.tangents = {};
   mesh.deformation.positions = {};
   return mesh;
 }
@@ -165,8 +182,17 @@ TraceScene::TraceScene(const Scene& scene, std::shared_ptr<const EmbreeDevice> d
   shutter_ = options.shutter.value_or(scene.camera.shutter);
   validate(shutter_);
   embree_.set_motion_interval(shutter_.open_s, shutter_.close_s);
+  // The UV set of the normal map each mesh is drawn with, if any (the first one found, should
+  // instances draw one mesh with normal maps on different sets).
+  normal_map_uv_set_.assign(scene.meshes.size(), -1);
+  for (const Instance& instance : scene.instances) {
+    const TextureRef& normal_map = scene.materials[scene.material_of(instance)].normal_texture;
+    if (normal_map.valid() && normal_map_uv_set_[instance.mesh] < 0)
+      normal_map_uv_set_[instance.mesh] = int(normal_map.uv_set);
+  }
   meshes_.reserve(scene.meshes.size());
-  for (const Mesh& mesh : scene.meshes) meshes_.push_back(shading_attributes(mesh));
+  for (size_t m = 0; m < scene.meshes.size(); ++m)
+    meshes_.push_back(shading_attributes(scene.meshes[m], normal_map_uv_set_[m]));
   prototype_of_mesh_.assign(scene.meshes.size(), -1);
   std::vector<int> uses(scene.meshes.size(), 0);
   for (const Instance& instance : scene.instances) ++uses[instance.mesh];
@@ -232,12 +258,20 @@ void TraceScene::add_static(const Scene& scene, uint32_t instance,
     p.object_space = true;
     double linear[3][3];
     for (int r = 0; r < 3; ++r)
-      for (int c = 0; c < 3; ++c) linear[r][c] = world_from_object.matrix().m[r][c];
+      for (int c = 0; c < 3; ++c) {
+        linear[r][c] = world_from_object.matrix().m[r][c];
+        p.vector_from_object[r][c] = float(linear[r][c]);
+      }
     normal_matrix(linear, p.normal_from_object);
+    p.handedness = world_from_object.swaps_handedness() ? -1.f : 1.f;
   } else {
-    Mesh world = flatten(scene.meshes[in.mesh], world_from_object);
+    // The object-space tangents (generated where needed) go along into world space.
+    Mesh object = scene.meshes[in.mesh];
+    object.tangents = meshes_[in.mesh].tangents;
+    Mesh world = flatten(object, world_from_object);
     id = embree_.add_triangle_mesh(world.positions, world.indices);
-    flattened_.push_back(std::make_unique<Mesh>(shading_attributes(std::move(world))));
+    flattened_.push_back(
+        std::make_unique<Mesh>(shading_attributes(std::move(world), normal_map_uv_set_[in.mesh])));
     p.attributes = flattened_.back().get();
   }
   if (placements_.size() <= id) placements_.resize(id + 1);
@@ -340,15 +374,24 @@ SurfaceHit TraceScene::surface_hit(const Ray& ray, const RayHit& hit) const {
   // shading normals or UVs (a cache miss per incoherent ray on large scenes).
   const Placement& place = placements_[hit.geometry_id];
   // Object-space normals go to the world by the inverse transpose, at the ray's time if moving.
-  float moving_normal_matrix[3][3];
+  float moving_normal_matrix[3][3], moving_vector_matrix[3][3];
   const float(*to_world)[3] = place.normal_from_object;
+  const float(*vector_to_world)[3] = place.vector_from_object;
+  float handedness = place.handedness;
   if (place.moving) {
     Affine3f a = embree_.instance_transform(hit.geometry_id, ray.time);
     double linear[3][3];
     for (int r = 0; r < 3; ++r)
-      for (int c = 0; c < 3; ++c) linear[r][c] = a.m[r][c];
+      for (int c = 0; c < 3; ++c) {
+        linear[r][c] = a.m[r][c];
+        moving_vector_matrix[r][c] = a.m[r][c];
+      }
     normal_matrix(linear, moving_normal_matrix);
     to_world = moving_normal_matrix;
+    vector_to_world = moving_vector_matrix;
+    Vector3d c0(linear[0][0], linear[1][0], linear[2][0]),
+        c1(linear[0][1], linear[1][1], linear[2][1]), c2(linear[0][2], linear[1][2], linear[2][2]);
+    handedness = dot(c0, cross(c1, c2)) < 0 ? -1.f : 1.f;
   }
   SurfaceHit s;
   s.t = hit.t;
@@ -361,32 +404,49 @@ SurfaceHit TraceScene::surface_hit(const Ray& ray, const RayHit& hit) const {
   s.primitive = hit.primitive_id;
   s.material = place.material;
   const Mesh& mesh = *place.attributes;
-  if (!mesh.normals.empty() || !mesh.uvs.empty() || !mesh.colors.empty() ||
-      !mesh.color_alphas.empty()) {
-    // Interpolated attributes: only meshes that carry them pay for the vertex reads.
-    const uint32_t* tri = &mesh.indices[3 * size_t(hit.primitive_id)];
-    float b1 = hit.barycentric.x, b2 = hit.barycentric.y, b0 = 1 - b1 - b2;
-    if (!mesh.normals.empty()) {
-      auto normal = [&](uint32_t v) {
-        return place.deformation ? deformed_normal(*place.deformation, v, ray.time)
-                                 : to_vector(mesh.normals[v]);
-      };
-      Vector3f n = normal(tri[0]) * b0 + normal(tri[1]) * b1 + normal(tri[2]) * b2;
-      if (place.object_space) n = apply(to_world, n);
-      if (length_squared(n) > 0)
-        s.shading_normal = face_forward(Normal3f(normalize(n)), to_vector(s.geometric_normal));
-    }
-    if (!mesh.uvs.empty()) {
-      Point2f t0 = mesh.uvs[tri[0]], t1 = mesh.uvs[tri[1]], t2 = mesh.uvs[tri[2]];
-      s.uv = {t0.x * b0 + t1.x * b1 + t2.x * b2, t0.y * b0 + t1.y * b1 + t2.y * b2};
-    }
-    if (!mesh.colors.empty())
-      s.vertex_color =
-          mesh.colors[tri[0]] * b0 + mesh.colors[tri[1]] * b1 + mesh.colors[tri[2]] * b2;
-    if (!mesh.color_alphas.empty())
-      s.vertex_alpha = mesh.color_alphas[tri[0]] * b0 + mesh.color_alphas[tri[1]] * b1 +
-                       mesh.color_alphas[tri[2]] * b2;
+  if (mesh.normals.empty() && mesh.uvs.empty() && mesh.uvs1.empty() && mesh.colors.empty() &&
+      mesh.color_alphas.empty())
+    return s;
+  // Interpolated attributes: only meshes that carry them pay for the vertex reads.
+  const uint32_t* tri = &mesh.indices[3 * size_t(hit.primitive_id)];
+  float b1 = hit.barycentric.x, b2 = hit.barycentric.y, b0 = 1 - b1 - b2;
+  auto interpolate_uv = [&](const std::vector<Point2f>& uv) {
+    Point2f t0 = uv[tri[0]], t1 = uv[tri[1]], t2 = uv[tri[2]];
+    return Point2f(t0.x * b0 + t1.x * b1 + t2.x * b2, t0.y * b0 + t1.y * b1 + t2.y * b2);
+  };
+  if (!mesh.uvs.empty()) s.uv = interpolate_uv(mesh.uvs);
+  if (!mesh.uvs1.empty()) s.uv1 = interpolate_uv(mesh.uvs1);
+  if (!mesh.colors.empty())
+    s.vertex_color = mesh.colors[tri[0]] * b0 + mesh.colors[tri[1]] * b1 + mesh.colors[tri[2]] * b2;
+  if (!mesh.color_alphas.empty())
+    s.vertex_alpha = mesh.color_alphas[tri[0]] * b0 + mesh.color_alphas[tri[1]] * b1 +
+                     mesh.color_alphas[tri[2]] * b2;
+  // The unperturbed normal (world, unit) and whether it runs against the winding's side.
+  Vector3f n = to_vector(s.geometric_normal);
+  if (!mesh.normals.empty()) {
+    // A deforming mesh's normals at the ray's time.
+    auto normal = [&](uint32_t v) {
+      return place.deformation ? deformed_normal(*place.deformation, v, ray.time)
+                               : to_vector(mesh.normals[v]);
+    };
+    Vector3f interpolated = normal(tri[0]) * b0 + normal(tri[1]) * b1 + normal(tri[2]) * b2;
+    if (place.object_space) interpolated = apply(to_world, interpolated);
+    if (length_squared(interpolated) > 0) n = normalize(interpolated);
   }
+  const TraceMaterial& material = materials_[place.material];
+  if (!mesh.tangents.empty() && material.has_normal_map()) {
+    Vector4f t =
+        mesh.tangents[tri[0]] * b0 + mesh.tangents[tri[1]] * b1 + mesh.tangents[tri[2]] * b2;
+    Vector3f tw(t.x, t.y, t.z);
+    if (place.object_space) tw = apply(vector_to_world, tw);
+    Vector3f g = to_vector(s.geometric_normal);
+    Vector3f side = dot(n, g) < 0 ? -g : g;  // the interpolated normal's side of the surface
+    n = material.normal_mapped(s, n, Vector4f(tw.x, tw.y, tw.z, t.w * handedness));
+    // Shading below the geometric surface is kept just above it (shading/normal_map.h says
+    // how); rays still leave along the geometric normal.
+    n = shading::keep_above_surface(n, side);
+  }
+  s.shading_normal = face_forward(Normal3f(n), to_vector(s.geometric_normal));
   return s;
 }
 

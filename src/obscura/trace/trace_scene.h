@@ -77,6 +77,8 @@ class TraceScene {
     bool moving = false;               // the transform depends on the ray's time
     const MeshDeformation* deformation = nullptr;  // shading normals over time, if deforming
     float normal_from_object[3][3] = {{1, 0, 0}, {0, 1, 0}, {0, 0, 1}};  // static instances
+    float vector_from_object[3][3] = {{1, 0, 0}, {0, 1, 0}, {0, 0, 1}};  // tangents, likewise
+    float handedness = 1;  // −1 where the placement mirrors (tangent w flips)
   };
   static constexpr int kMaxTimeSteps = EmbreeScene::kMaxTimeSteps;
   void add_static(const Scene& scene, uint32_t instance, const Transform& world_from_object,
@@ -86,7 +88,8 @@ class TraceScene {
   uint32_t prototype_of(const Scene& scene, uint32_t mesh);
 
   EmbreeScene embree_;
-  std::vector<Mesh> meshes_;  // the scene's meshes, object space, as instances share them
+  std::vector<Mesh> meshes_;            // the scene's meshes, object space, as instances share them
+  std::vector<int> normal_map_uv_set_;  // per mesh: the UV set its tangents follow, −1 none
   std::vector<int32_t> prototype_of_mesh_;        // Embree prototype per mesh, −1 until built
   std::vector<std::unique_ptr<Mesh>> flattened_;  // world-space copies of meshes placed once
   std::vector<Placement> placements_;
