@@ -290,9 +290,10 @@ TEST_F(ImageLimits, ExrDataWindowWiderThanARowIsRefused) {
 namespace obscura {
 namespace {
 
-// Every format a glTF may embed decodes from memory: OpenImageIO 2.4's JPEG reader accepts only
-// a "memreader" proxy, and a reader of another type left every embedded JPEG (DamagedHelmet's
-// five textures) undecoded.
+// Every format Obscura writes reads back, from the file and from memory. (OpenImageIO 2.4's JPEG
+// reader accepts only a "memreader" proxy: a reader of another type left every embedded JPEG —
+// DamagedHelmet's five textures — undecoded. Its TIFF writer, writing through a proxy, left the
+// image directory out of every TIFF Obscura wrote.)
 TEST(EmbeddedImages, EveryFormatDecodesFromMemory) {
   std::string dir = test::make_temp_dir("obscura-embedded");
   Image grey(6, 4, 3);
@@ -300,6 +301,8 @@ TEST(EmbeddedImages, EveryFormatDecodesFromMemory) {
   for (const char* ext : {"png", "jpg", "tif", "exr", "hdr"}) {
     std::string file = dir + "/grey." + ext;
     write_image(file, grey);
+    Image back = read_image(file);
+    ASSERT_EQ(back.width, 6) << ext;
     std::ifstream in(file, std::ios::binary);
     std::vector<uint8_t> bytes{std::istreambuf_iterator<char>(in),
                                std::istreambuf_iterator<char>()};

@@ -43,7 +43,7 @@ inline void draw_rects(const std::vector<Rect>& rects, const FrameParameters& fr
   for (const Rect& r : rects) {
     auto z = float(-r.depth);
     auto corner = [&](double x, double y) {
-      return MeshVertex{{float(x), float(y), z}, {0, 0, 1}, {0, 0}, r.color, {}, {}};
+      return MeshVertex{{float(x), float(y), z}, {0, 0, 1}, {0, 0}, r.color, 1.f, {}, {}};
     };
     MeshVertex a = corner(r.x0, r.y0), b = corner(r.x1, r.y0), c = corner(r.x1, r.y1),
                d = corner(r.x0, r.y1);

@@ -38,7 +38,7 @@ TEST_P(PhongSphere, MatchesAnalyticReflection) {
       double phi = M_PI * r / rings, theta = 2 * M_PI * s / segments;
       Vector3f n(float(std::sin(phi) * std::cos(theta)), float(std::cos(phi)),
                  float(std::sin(phi) * std::sin(theta)));
-      vertices.push_back({Point3f(n.x, n.y, n.z), n, {}, Rgb(1.f), {}, {}});
+      vertices.push_back({Point3f(n.x, n.y, n.z), n, {}, Rgb(1.f), 1.f, {}, {}});
     }
   for (int r = 0; r < rings; ++r)
     for (int s = 0; s < segments; ++s) {

@@ -122,6 +122,7 @@ std::vector<MeshVertex> sphere_grid(int rings, int segments, std::vector<uint32_
                        n,
                        {},
                        Rgb(0.7f, 0.5f, 0.3f),
+                       1.f,
                        {},
                        {}});
         }

@@ -4,11 +4,16 @@
 
 #include <algorithm>
 #include <bit>
+#include <cerrno>
 #include <cfloat>
 #include <cmath>
 #include <cstdint>
 #include <cstdio>
+#include <cstring>
 #include <filesystem>
+#include <fstream>
+#include <functional>
+#include <iterator>
 #include <memory>
 #include <system_error>
 #include <vector>
@@ -35,12 +40,49 @@ std::string lowercase_extension(const std::string& path) {
   return ext;
 }
 
+// OpenImageIO 2.4's TIFF writer leaves out the image directory when it writes through an IOProxy
+// (readers then fail with "TIFF directory is missing required ImageLength"), so a TIFF is encoded
+// into a private temporary file instead, read back and removed. libtiff reports its errors
+// through OpenImageIO, so nothing there ends the process.
+std::vector<unsigned char> encode_through_temporary_file(
+    const std::string& path, const OIIO::ImageSpec& spec,
+    const std::function<bool(OIIO::ImageOutput&)>& write) {
+  std::string pattern = (fs::temp_directory_path() / "obscura-encode-XXXXXX.tif").string();
+  int fd = mkstemps(pattern.data(), 4);
+  if (fd < 0) throw Error(path, "cannot create a temporary file to encode into");
+  close(fd);
+  struct Remove {
+    std::string file;
+    ~Remove() { std::remove(file.c_str()); }
+  } remove{pattern};
+  auto out = OIIO::ImageOutput::create(pattern);
+  if (!out) throw Error(path, "no image writer: " + OIIO::geterror());
+  errno = 0;
+  bool ok = out->open(pattern, spec) && write(*out);
+  int write_errno = errno;  // libtiff's messages leave out why a write failed
+  std::string message = out->geterror();
+  ok = out->close() && ok;
+  if (!ok)
+    throw Error(path,
+                "cannot encode: " + message + out->geterror() +
+                    (write_errno ? std::string(" (") + std::strerror(write_errno) + ")" : ""));
+  std::ifstream in(pattern, std::ios::binary);
+  std::vector<unsigned char> bytes{std::istreambuf_iterator<char>(in),
+                                   std::istreambuf_iterator<char>()};
+  if (!in.good() && !in.eof()) throw Error(path, "cannot read back the encoded image");
+  return bytes;
+}
+
 // Encodes the image in memory (OpenImageIO writes to a proxy) and only then writes the bytes
-// through an AtomicFile, whose every write is checked. The codecs never touch the disk, so a full
-// disk cannot be ignored by a writer that does not check fwrite, nor end the process the way
+// through an AtomicFile, whose every write is checked. The codecs never touch the output, so a
+// full disk cannot be ignored by a writer that does not check fwrite, nor end the process the way
 // libjpeg's default error handler does (exit(1)).
-template <typename Write>
-void write_encoded(const std::string& path, const OIIO::ImageSpec& spec, Write write) {
+void write_encoded(const std::string& path, const OIIO::ImageSpec& spec,
+                   const std::function<bool(OIIO::ImageOutput&)>& write) {
+  if (image_format_for_path(path) == ImageFormat::kTiff) {
+    write_file_atomically(path, encode_through_temporary_file(path, spec, write));
+    return;
+  }
   std::vector<unsigned char> encoded;
   OIIO::Filesystem::IOVecOutput memory(encoded);
   auto out = OIIO::ImageOutput::create(path, &memory);
