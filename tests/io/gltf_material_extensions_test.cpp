@@ -72,7 +72,7 @@ json unlit_material(std::vector<double> color) {
 
 TEST(GltfUnlit, ReadAsUnlitWithoutEmission) {
   json doc = quad_document();
-  doc["materials"] = {unlit_material({0.2, 0.4, 0.6, 1})};
+  doc["materials"] = json::array({unlit_material({0.2, 0.4, 0.6, 1})});
   doc["extensionsUsed"] = {"KHR_materials_unlit"};
   doc["extensionsRequired"] = {"KHR_materials_unlit"};  // UnlitTest requires it
   Scene scene = load(doc);
@@ -84,7 +84,7 @@ TEST(GltfUnlit, ReadAsUnlitWithoutEmission) {
 TEST(GltfUnlit, BothRenderersShowTheExactBaseColourWhateverTheLight) {
   json doc = quad_document();
   const Rgb color(0.2f, 0.4f, 0.6f);
-  doc["materials"] = {unlit_material({0.2, 0.4, 0.6, 1})};
+  doc["materials"] = json::array({unlit_material({0.2, 0.4, 0.6, 1})});
   Scene scene = load(doc);
   // A bright environment and a point light: an unlit surface ignores both.
   scene.environment = Environment();
@@ -144,7 +144,7 @@ TEST(GltfVariants, UnknownNameIsAnErrorListingTheNames) {
     EXPECT_NE(std::string(e.what()).find("'Leaf', 'Sky', 'Plain'"), std::string::npos) << e.what();
   }
   json without = quad_document();
-  without["materials"] = {json::object()};
+  without["materials"] = json::array({json::object()});
   Scene plain = load(without);
   EXPECT_THROW(select_material_variant(plain, "Leaf"), Error);
 }
