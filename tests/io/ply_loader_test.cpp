@@ -222,6 +222,12 @@ TEST_F(PlyLoader, BadIndicesAndValues) {
   expect_load_error([&] { load_ply(write("a.ply", header + "3 0 1 7\n")); },
                     {"a.ply:13", "face", "vertex 7", "vertex count 3"});
   expect_load_error([&] { load_ply(write("b.ply", header + "3 0 1 -1\n")); }, {"b.ply:13"});
+  // Found by the mesh fuzz target: an index no integer holds was converted to one for the
+  // message (undefined behaviour; UBSan float-cast-overflow). It is shown as written.
+  expect_load_error([&] { load_ply(write("e.ply", header + "3 0 1 1e30\n")); },
+                    {"e.ply:13", "vertex 1e+30", "vertex count 3"});
+  expect_load_error([&] { load_ply(write("f.ply", header + "3 0 1 nan\n")); },
+                    {"f.ply:13", "vertex nan"});
   expect_load_error([&] { load_ply(write("c.ply", header + "3 0 1 x\n")); },
                     {"c.ply:13", "expected a number"});
   expect_load_error([&] { load_ply(write("d.ply", header + "2.5 0 1\n")); },

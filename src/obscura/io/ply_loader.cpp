@@ -2,6 +2,7 @@
 
 #include <charconv>
 #include <cmath>
+#include <cstdio>
 #include <cstring>
 
 #include "obscura/io/mesh_file.h"
@@ -264,10 +265,14 @@ class PlyBodyReader {
         corners_.clear();
         for (uint64_t c = 0; c < n; ++c) {
           double index = next(e, f, p.type);
-          if (!(index >= 0 && index <= last_vertex) || index != std::floor(index))
+          if (!(index >= 0 && index <= last_vertex) || index != std::floor(index)) {
+            // As the file wrote it: an index may be 1e30 or NaN, which no integer holds.
+            char shown[32];
+            std::snprintf(shown, sizeof shown, "%.17g", index);
             fail(e, f,
-                 "refers to vertex " + std::to_string(int64_t(index)) + ", past the vertex count " +
+                 std::string("refers to vertex ") + shown + ", past the vertex count " +
                      std::to_string(vertex_count_));
+          }
           corners_.push_back(uint32_t(index));
         }
         // Faces before the vertices (allowed, never seen) are fanned: no positions to test.
