@@ -2,6 +2,8 @@
 
 #include <algorithm>
 
+#include "obscura/scene/deformation_step.h"
+
 namespace obscura {
 
 Bounds3f Mesh::bounds() const {
@@ -31,12 +33,7 @@ Mesh Mesh::posed_at(double time_s) const {
   posed.deformation = {};
   if (!deforms()) return posed;
   const MeshDeformation& d = deformation;
-  const size_t segments = d.positions.size() - 1;
-  const double span = d.close_s - d.open_s;
-  double u = span > 0 ? (time_s - d.open_s) / span * double(segments) : 0;
-  u = std::clamp(u, 0.0, double(segments));
-  const size_t i = std::min(size_t(u), segments - 1);
-  const float f = float(u - double(i));
+  const auto [i, f] = deformation_step(d, d.positions.size(), time_s);
   for (size_t v = 0; v < posed.positions.size(); ++v) {
     Point3f a = d.positions[i][v], b = d.positions[i + 1][v];
     posed.positions[v] = a + (b - a) * f;

@@ -9,6 +9,7 @@
 #include "obscura/camera/animated_transform.h"
 #include "obscura/math/error.h"
 #include "obscura/math/rng.h"
+#include "obscura/scene/deformation_step.h"
 #include "obscura/scene/tangents.h"
 #include "obscura/shading/normal_map.h"
 
@@ -60,12 +61,7 @@ Mesh shading_attributes(Mesh mesh, int normal_map_uv_set) {
 
 // A deforming mesh's normal of vertex `v` at `time_s`, linear between its time steps.
 Vector3f deformed_normal(const MeshDeformation& d, uint32_t v, float time_s) {
-  const size_t segments = d.normals.size() - 1;
-  const double span = d.close_s - d.open_s;
-  double u = span > 0 ? (time_s - d.open_s) / span * double(segments) : 0;
-  u = std::clamp(u, 0.0, double(segments));
-  const size_t i = std::min(size_t(u), segments - 1);
-  const float f = float(u - double(i));
+  const auto [i, f] = deformation_step(d, d.normals.size(), time_s);
   return to_vector(d.normals[i][v]) * (1 - f) + to_vector(d.normals[i + 1][v]) * f;
 }
 
