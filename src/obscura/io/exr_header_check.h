@@ -17,8 +17,9 @@ bool is_exr_magic(const uint8_t magic[4]);
 using ByteReader = std::function<bool(uint64_t offset, size_t size, uint8_t* out)>;
 
 // Walks the header(s) of an OpenEXR file of `total_size` bytes and throws obscura::Error naming
-// `source` when an attribute declares a negative size or more bytes than the file holds, or a
-// name runs past the end of the file.
+// `source` when an attribute declares a negative size or more bytes than the file holds, a value
+// whose layout disagrees with its declared size (fixed-size types, channel lists, previews,
+// string vectors), or a name runs past the end of the file.
 void check_exr_header(const ByteReader& read, uint64_t total_size, const std::string& source);
 
 }  // namespace obscura

@@ -39,8 +39,10 @@ class CheckedImageInput {
   // file, unreadable, or over the limits.
   static CheckedImageInput open_file(const std::string& path);
   // Opens an encoded image (PNG, JPEG, …) held in `bytes`, which must outlive the reader.
-  // `source` names it in messages; `format_hint` is a file extension ("png") or MIME type
-  // ("image/png") and may be empty (PNG is tried then).
+  // `source` names it in messages. The format is the one the leading bytes announce (PNG, JPEG,
+  // OpenEXR, Radiance HDR, PFM/PNM, TIFF, BMP); `format_hint`, a file extension
+  // ("tga") or MIME type, matters only for Targa, which has no signature. Both opens refuse
+  // bytes that are none of these, so no other OpenImageIO reader ever sees them.
   static CheckedImageInput open_memory(std::span<const uint8_t> bytes, const std::string& source,
                                        const std::string& format_hint);
 
