@@ -34,6 +34,8 @@ class EnvironmentLight {
   float pdf(Vector3f world_direction) const;
   // Average luminance over the sphere: what light selection weighs the environment by.
   float average_luminance() const { return average_luminance_; }
+  // The same radiance from every direction (no map).
+  bool is_constant() const { return !map_; }
 
  private:
   Point2f uv_from_direction(Vector3f local) const;

@@ -20,14 +20,19 @@ LightSet::LightSet(AreaLights area_lights, std::optional<EnvironmentLight> envir
         kPi * scene_radius * scene_radius * kPi * environment_->average_luminance();
   for (size_t i = 0; i < punctual_.size(); ++i)
     power[kFirstPunctual + i] = punctual_[i].power(scene_radius);
-  if (std::any_of(power.begin(), power.end(), [](float p) { return p > 0; }))
-    selection_ = Distribution1D(power);
+  auto any_light = [](const std::vector<float>& w) {
+    return std::any_of(w.begin(), w.end(), [](float p) { return p > 0; });
+  };
+  if (any_light(power)) selection_all_ = Distribution1D(power);
+  if (environment_ && environment_->is_constant()) power[kEnvironment] = 0;
+  if (any_light(power)) selection_for_mis_ = Distribution1D(power);
 }
 
-std::optional<LightSample> LightSet::sample(Point3f p, float u_select, Point2f u) const {
-  if (empty()) return std::nullopt;
+std::optional<LightSample> LightSet::sample(Point3f p, float u_select, Point2f u,
+                                            LightSampling which) const {
+  if (empty(which)) return std::nullopt;
   float p_kind;
-  auto kind = int(selection_.sample_discrete(u_select, &p_kind));
+  auto kind = int(selection(which).sample_discrete(u_select, &p_kind));
   if (p_kind <= 0) return std::nullopt;
   // Area lights are entry 0, spanning [0, p_kind) of u_select: reuse it, rescaled, to pick the
   // triangle.
@@ -59,15 +64,16 @@ std::optional<LightSample> LightSet::sample(Point3f p, float u_select, Point2f u
                      .normal = s->normal};
 }
 
-float LightSet::pdf_area_light(Point3f p, uint32_t mesh, uint32_t primitive,
-                               Point3f light_point) const {
-  if (empty()) return 0;
-  return area_.pdf(p, mesh, primitive, light_point) * selection_.probability(kArea);
+float LightSet::pdf_area_light(Point3f p, uint32_t mesh, uint32_t primitive, Point3f light_point,
+                               LightSampling which) const {
+  if (empty(which)) return 0;
+  return area_.pdf(p, mesh, primitive, light_point) * selection(which).probability(kArea);
 }
 
-float LightSet::pdf_environment(Vector3f wi) const {
-  if (!environment_ || empty()) return 0;
-  return environment_->pdf(wi) * selection_.probability(kEnvironment);
+float LightSet::pdf_environment(Vector3f wi, LightSampling which) const {
+  if (!environment_ || empty(which)) return 0;
+  float p_kind = selection(which).probability(kEnvironment);
+  return p_kind > 0 ? environment_->pdf(wi) * p_kind : 0;
 }
 
 }  // namespace obscura

@@ -25,6 +25,14 @@ struct LightSample {
   Normal3f normal;
 };
 
+// Which lights a light sample is drawn from. `kAll` for integrators that find light only by
+// sampling it (Whitted, light-only paths). `kForMis` for a path tracer that also follows BSDF
+// samples and weighs the two by MIS: it leaves out a constant environment, which the BSDF's own
+// importance sampling (cosine, GGX visible normals) finds with a density closer to the integrand
+// than any light sample can — uniform directions only add variance there, and their MIS weight
+// takes part of the BSDF samples' share. An environment map stays in both.
+enum class LightSampling { kAll, kForMis };
+
 class LightSet {
  public:
   LightSet() = default;
@@ -32,14 +40,19 @@ class LightSet {
   LightSet(AreaLights area_lights, std::optional<EnvironmentLight> environment,
            std::vector<PunctualLight> punctual, float scene_radius);
 
-  bool empty() const { return selection_.size() == 0; }
-  std::optional<LightSample> sample(Point3f p, float u_select, Point2f u) const;
+  bool empty(LightSampling which = LightSampling::kAll) const {
+    return selection(which).size() == 0;
+  }
+  std::optional<LightSample> sample(Point3f p, float u_select, Point2f u,
+                                    LightSampling which = LightSampling::kAll) const;
 
   // Solid-angle density with which sample() from `p` would have produced the point `light_point`
   // on triangle `primitive` of mesh `mesh`.
-  float pdf_area_light(Point3f p, uint32_t mesh, uint32_t primitive, Point3f light_point) const;
-  // Solid-angle density with which sample() would have chosen the environment direction `wi`.
-  float pdf_environment(Vector3f wi) const;
+  float pdf_area_light(Point3f p, uint32_t mesh, uint32_t primitive, Point3f light_point,
+                       LightSampling which = LightSampling::kAll) const;
+  // Solid-angle density with which sample() would have chosen the environment direction `wi`
+  // (0 when `which` leaves the environment out).
+  float pdf_environment(Vector3f wi, LightSampling which = LightSampling::kAll) const;
 
   const AreaLights& area_lights() const { return area_; }
   const EnvironmentLight* environment() const { return environment_ ? &*environment_ : nullptr; }
@@ -51,7 +64,11 @@ class LightSet {
   AreaLights area_;
   std::optional<EnvironmentLight> environment_;
   std::vector<PunctualLight> punctual_;
-  Distribution1D selection_;
+  const Distribution1D& selection(LightSampling which) const {
+    return which == LightSampling::kAll ? selection_all_ : selection_for_mis_;
+  }
+  Distribution1D selection_all_;
+  Distribution1D selection_for_mis_;  // selection_all_ without a constant environment
 };
 
 }  // namespace obscura

@@ -32,6 +32,7 @@ Rgb PathTracer::radiance(const TraceScene& scene, const Ray& camera_ray, Sampler
   const LightSet& lights = scene.light_set();
   const bool use_light_sampling = settings_.strategy != Strategy::kBsdfOnly;
   const bool use_bsdf_hits = settings_.strategy != Strategy::kLightOnly;
+  const LightSampling light_sampling = use_bsdf_hits ? LightSampling::kForMis : LightSampling::kAll;
   Rgb L, beta(1.f);
   Ray ray = camera_ray;
   ray.direction = normalize(ray.direction);
@@ -58,10 +59,10 @@ Rgb PathTracer::radiance(const TraceScene& scene, const Ray& camera_ray, Sampler
         if (specular_bounce)
           L += beta * le;
         else if (use_bsdf_hits)
-          L +=
-              beta * le *
-              (use_light_sampling ? power_heuristic(bsdf_pdf, lights.pdf_environment(ray.direction))
-                                  : 1.f);
+          L += beta * le *
+               (use_light_sampling ? power_heuristic(bsdf_pdf, lights.pdf_environment(
+                                                                   ray.direction, light_sampling))
+                                   : 1.f);
       }
       break;
     }
@@ -79,9 +80,10 @@ Rgb PathTracer::radiance(const TraceScene& scene, const Ray& camera_ray, Sampler
       } else if (specular_bounce) {
         L += beta * le;
       } else if (use_bsdf_hits) {
-        float light_pdf = use_light_sampling ? lights.pdf_area_light(previous, hit->mesh,
-                                                                     hit->primitive, hit->position)
-                                             : 0.f;
+        float light_pdf = use_light_sampling
+                              ? lights.pdf_area_light(previous, hit->mesh, hit->primitive,
+                                                      hit->position, light_sampling)
+                              : 0.f;
         L += beta * le * power_heuristic(bsdf_pdf, light_pdf);
       }
     }
@@ -92,8 +94,9 @@ Rgb PathTracer::radiance(const TraceScene& scene, const Ray& camera_ray, Sampler
     Vector3f wo_local = frame.to_local(wo);
 
     // 3. Next-event estimation: a light sample, shadow ray, MIS weight against the BSDF.
-    if (use_light_sampling && !bsdf.is_delta() && !lights.empty()) {
-      std::optional<LightSample> ls = lights.sample(hit->position, u_light_select, u_light);
+    if (use_light_sampling && !bsdf.is_delta() && !lights.empty(light_sampling)) {
+      std::optional<LightSample> ls =
+          lights.sample(hit->position, u_light_select, u_light, light_sampling);
       if (ls && ls->pdf > 0 && !ls->radiance.is_black()) {
         Vector3f wi_local = frame.to_local(ls->wi);
         Rgb f = bsdf.f(wo_local, wi_local) * std::abs(wi_local.z);
