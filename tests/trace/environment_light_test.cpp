@@ -7,6 +7,7 @@
 
 #include "obscura/math/error.h"
 #include "obscura/math/rng.h"
+#include "obscura/trace/light_set.h"
 
 namespace obscura {
 namespace {
@@ -67,6 +68,43 @@ TEST(EnvironmentLight, ConstantIsSampledUniformly) {
 
 TEST(EnvironmentLight, RejectsAnImageWithoutColour) {
   EXPECT_THROW(EnvironmentLight(Image(4, 2, 1), Rgb(1.f), Transform()), Error);
+}
+
+}  // namespace
+}  // namespace obscura
+
+namespace obscura {
+namespace {
+
+// A path tracer's light samples (LightSampling::kForMis) leave a constant environment to the
+// BSDF; a map stays in, and so does everything for integrators that only sample lights.
+TEST(LightSet, AConstantEnvironmentIsLeftOutOfSamplingForMisOnly) {
+  LightSet constant_only({}, EnvironmentLight(Rgb(1.f)), {}, 1);
+  EXPECT_FALSE(constant_only.empty(LightSampling::kAll));
+  EXPECT_TRUE(constant_only.empty(LightSampling::kForMis));
+  EXPECT_FALSE(constant_only.sample({0, 0, 0}, 0.5f, {0.5f, 0.5f}, LightSampling::kForMis));
+  EXPECT_EQ(constant_only.pdf_environment({0, 0, 1}, LightSampling::kForMis), 0.f);
+  EXPECT_NEAR(constant_only.pdf_environment({0, 0, 1}, LightSampling::kAll),
+              1 / (4 * std::numbers::pi), 1e-6);
+
+  // With a point light beside it, the point light is the only one sampled for MIS, with
+  // probability 1; both are sampled otherwise.
+  LightSet with_point({}, EnvironmentLight(Rgb(1.f)), {PunctualLight::point({0, 2, 0}, Rgb(10.f))},
+                      1);
+  for (float u : {0.01f, 0.5f, 0.99f}) {
+    std::optional<LightSample> s =
+        with_point.sample({0, 0, 0}, u, {0.3f, 0.7f}, LightSampling::kForMis);
+    ASSERT_TRUE(s);
+    EXPECT_TRUE(s->is_delta);
+    EXPECT_EQ(s->pdf, 1.f);
+  }
+  EXPECT_GT(with_point.pdf_environment({0, 0, 1}, LightSampling::kAll), 0.f);
+
+  Image map(8, 4, 3);
+  map.data.assign(map.data.size(), 1.f);
+  LightSet mapped({}, EnvironmentLight(map, Rgb(1.f), Transform()), {}, 1);
+  EXPECT_FALSE(mapped.empty(LightSampling::kForMis));
+  EXPECT_GT(mapped.pdf_environment({0, 0, 1}, LightSampling::kForMis), 0.f);
 }
 
 }  // namespace
