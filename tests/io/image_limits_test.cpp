@@ -17,6 +17,7 @@
 #include "obscura/io/image_io.h"
 #include "obscura/io/texture_loader.h"
 #include "obscura/math/error.h"
+#include "png_bytes.h"
 #include "run_command.h"
 #include "test_paths.h"
 
@@ -25,27 +26,8 @@ namespace {
 
 namespace fs = std::filesystem;
 
-// CRC-32 as PNG specifies it (ISO 3309, polynomial 0xEDB88320, reflected), bit by bit.
-uint32_t png_crc(const std::vector<uint8_t>& bytes, size_t begin, size_t end) {
-  uint32_t crc = 0xFFFFFFFFu;
-  for (size_t i = begin; i < end; ++i) {
-    crc ^= bytes[i];
-    for (int k = 0; k < 8; ++k) crc = (crc >> 1) ^ (0xEDB88320u & (0u - (crc & 1u)));
-  }
-  return crc ^ 0xFFFFFFFFu;
-}
-
-void put_u32(std::vector<uint8_t>& out, uint32_t v) {
-  for (int shift = 24; shift >= 0; shift -= 8) out.push_back(uint8_t(v >> shift));
-}
-
-void put_chunk(std::vector<uint8_t>& out, const char* type, const std::vector<uint8_t>& data) {
-  put_u32(out, uint32_t(data.size()));
-  size_t start = out.size();
-  out.insert(out.end(), type, type + 4);
-  out.insert(out.end(), data.begin(), data.end());
-  put_u32(out, png_crc(out, start, out.size()));
-}
+using test::put_chunk;
+using test::put_u32;
 
 // A well-formed PNG signature and IHDR (8-bit RGB) declaring width × height, followed by a tiny
 // IDAT that holds far fewer pixels than declared: a 60-byte file claiming gigabytes.

@@ -15,6 +15,7 @@
 #include "obscura/io/image_io.h"
 #include "obscura/io/texture_loader.h"
 #include "obscura/math/error.h"
+#include "png_bytes.h"
 #include "run_command.h"
 
 namespace obscura {
@@ -114,6 +115,22 @@ TEST_F(ImageReader, ATruncatedFileIsReportedByItsOwnReader) {
   std::string message = error_of([&] { read_image(path("cut.png")); });
   EXPECT_NE(message.find("cut.png"), std::string::npos) << message;
   EXPECT_NE(message.find("as png"), std::string::npos) << message;
+}
+
+// PNG stores straight (unassociated) alpha, and so does every glTF texture: the colour must come
+// back as stored, not multiplied by alpha (OpenImageIO's default, which darkened every partly
+// transparent texel — AlphaBlendModeTest's panels by 2× — and coloured OPAQUE materials, which
+// must ignore alpha, by it).
+TEST_F(ImageReader, StraightAlphaColourIsReadAsStored) {
+  std::vector<uint8_t> png = test::rgba8_png(2, 1, {204, 153, 102, 64, /**/ 10, 250, 30, 0});
+  Texture t = decode_texture(png, "model.glb: image 0", "image/png", TextureEncoding::kSrgb);
+  ASSERT_EQ(t.texels_8bit, std::vector<uint8_t>({204, 153, 102, 64, 10, 250, 30, 0}));
+  put_file(path("straight.png"), png);
+  Image image = read_image(path("straight.png"));
+  ASSERT_EQ(image.channels, 4);
+  EXPECT_FLOAT_EQ(image.data[0], 204 / 255.f);
+  EXPECT_FLOAT_EQ(image.data[5], 250 / 255.f);  // under zero alpha too
+  EXPECT_EQ(image.data[7], 0.f);
 }
 
 // An OpenEXR whose channels are stored in different types (half colour, float depth), written

@@ -74,14 +74,24 @@ std::string reader_for(std::span<const uint8_t> head, const std::string& extensi
               "Radiance HDR, PFM/PNM, TIFF or BMP file (nor is it a .tga)");
 }
 
+// Opens `name` with `reader`; `proxy`, when given, supplies the bytes.
 std::unique_ptr<OIIO::ImageInput> open_with(const std::string& reader, const std::string& name,
-                                            const OIIO::ImageSpec* config,
-                                            const std::string& source) {
+                                            BoundedMemoryReader* proxy, const std::string& source) {
+  OIIO::ImageSpec config;
+  if (proxy) {
+    void* p = proxy;
+    config.attribute("oiio:ioproxy", OIIO::TypeDesc::PTR, &p);
+  }
+  // Colour as stored, never multiplied by alpha: OpenImageIO premultiplies the straight alpha of
+  // PNG, Targa and the like by default, which darkened every partly transparent texel of a glTF
+  // texture (whose alpha is straight by the specification) — by 2× on AlphaBlendModeTest's
+  // cutoff panels, against Cycles. Files that store premultiplied colour (OpenEXR) keep it.
+  config.attribute("oiio:UnassociatedAlpha", 1);
   // create() with do_open = false picks the reader by name and never falls back to others.
-  std::unique_ptr<OIIO::ImageInput> input = OIIO::ImageInput::create(reader, false, config);
+  std::unique_ptr<OIIO::ImageInput> input = OIIO::ImageInput::create(reader, false, &config);
   if (!input) throw Error(source, "cannot read image: " + OIIO::geterror());
   OIIO::ImageSpec spec;
-  bool opened = config ? input->open(name, spec, *config) : input->open(name, spec);
+  bool opened = input->open(name, spec, config);
   if (!opened) {
     std::string why = input->geterror();
     if (why.empty()) why = OIIO::geterror();
@@ -174,16 +184,12 @@ CheckedImageInput CheckedImageInput::open_memory(std::span<const uint8_t> bytes,
                                                  const std::string& format_hint) {
   if (bytes.empty()) throw Error(source, "embedded image is empty");
   check_exr_memory(bytes, source);
-  // OpenImageIO reads from memory through an IOProxy; the made-up file name only selects the
-  // format reader.
+  // OpenImageIO reads from memory through an IOProxy; the made-up file name is only a name.
   auto memory = std::make_unique<BoundedMemoryReader>(bytes);
-  void* proxy = memory.get();
-  OIIO::ImageSpec config;
-  config.attribute("oiio:ioproxy", OIIO::TypeDesc::PTR, &proxy);
   std::string reader = reader_for(bytes.first(std::min<size_t>(bytes.size(), 16)),
                                   extension_for(format_hint), source);
   std::unique_ptr<OIIO::ImageInput> input =
-      open_with(reader, "embedded." + reader, &config, source);
+      open_with(reader, "embedded." + reader, memory.get(), source);
   return CheckedImageInput(source, std::move(memory), std::move(input));
 }
 
