@@ -77,6 +77,14 @@ std::string reader_for(std::span<const uint8_t> head, const std::string& extensi
 // Opens `name` with `reader`; `proxy`, when given, supplies the bytes.
 std::unique_ptr<OIIO::ImageInput> open_with(const std::string& reader, const std::string& name,
                                             BoundedMemoryReader* proxy, const std::string& source) {
+  // OpenImageIO 2.4's TIFF reader decompresses zip strips on its thread pool and, when a strip
+  // read fails, returns before those tasks finish: they go on reading its freed scratch buffer
+  // and writing into the caller's pixels after the read has failed (a published advisory, fixed
+  // upstream in 3.1.16; the image fuzz target met it as heap corruption in a freed block).
+  // Decompressing on the calling thread closes it, at the cost of parallel decompression of zip
+  // TIFFs.
+  static const bool tiff_serial = OIIO::attribute("tiff:multithread", 0);
+  (void)tiff_serial;
   OIIO::ImageSpec config;
   if (proxy) {
     void* p = proxy;
