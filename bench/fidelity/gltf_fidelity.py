@@ -25,7 +25,7 @@ import argparse, json, os, shutil, struct, subprocess, sys, tempfile
 HERE = os.path.dirname(os.path.abspath(__file__))
 ROOT = os.path.dirname(os.path.dirname(HERE))
 SHARED = os.environ.get("SHARED", os.path.join(ROOT, "..", "shared"))
-REFS = os.path.join(HERE, "references")
+REFS = os.path.join(ROOT, "data", "reference", "gltf")
 SIZE = 128
 
 # name -> model path relative to shared/assets/gltf
@@ -125,7 +125,9 @@ def lambert_copy(model, out_dir, name):
 
 def cycles(model, out, name, spp, seed, camera, write_camera=False, threads=2):
     script = os.path.join(SHARED, "tools", "peers", "cycles", "gltf_cycles.py")
-    cmd = ["blender", "-b", "--factory-startup", "--python", script, "--", "--model", model,
+    # linear_textures.py: Cycles filters colour textures in linear light, as Obscura does.
+    cmd = ["blender", "-b", "--factory-startup", "--python",
+           os.path.join(HERE, "linear_textures.py"), "--python", script, "--", "--model", model,
            "--out", out, "--name", name, "--spp", str(spp), "--seed", str(seed), "--threads",
            str(threads), "--max-bounces", "64", "--fov", "40", "--size", str(SIZE), "--diffuse"]
     cmd += (["--write-camera", camera] if write_camera else ["--camera", camera])
@@ -172,7 +174,7 @@ def main():
     p.add_argument("--out", default="")
     a = p.parse_args()
     binary = os.path.join(a.build, "obscura")
-    out = a.out or tempfile.mkdtemp(prefix="gltf-fidelity.")
+    out = os.path.abspath(a.out or tempfile.mkdtemp(prefix="gltf-fidelity."))
     os.makedirs(out, exist_ok=True)
     names = a.models.split(",") if a.models else list(MODELS)
     rows = []
