@@ -134,6 +134,18 @@ TEST(GltfVariants, SelectionChangesTheMaterialByName) {
   EXPECT_EQ(scene.materials[scene.material_of(scene.instances[0])].name, "green");
 }
 
+TEST(GltfVariants, APosedMeshTakesItsPrimitivesVariants) {
+  // A morph target makes the node's mesh a posed copy of its own; the variants still apply.
+  json doc = variants_document();
+  doc["meshes"][0]["primitives"][0]["targets"] = {{{"POSITION", 0}}};
+  doc["meshes"][0]["weights"] = {0.5};
+  Scene scene = load(doc);
+  ASSERT_EQ(scene.instances.size(), 1u);
+  EXPECT_NE(scene.instances[0].mesh, 0u);  // the posed copy, not the file's primitive
+  select_material_variant(scene, "Sky");
+  EXPECT_EQ(scene.materials[scene.material_of(scene.instances[0])].name, "blue");
+}
+
 TEST(GltfVariants, UnknownNameIsAnErrorListingTheNames) {
   Scene scene = load(variants_document());
   try {

@@ -571,6 +571,9 @@ void GltfImporter::add_mesh_instances(int node_index, const Matrix4& world_from_
       if (instanced) instance.name.append("#").append(std::to_string(c));
       instance.mesh = mesh;
       instance.material = int32_t(p.material);
+      // Keyed by the file's primitive: a posed copy of it takes the same variants.
+      auto variants = variant_materials_.find({p.mesh, p.material});
+      if (variants != variant_materials_.end()) instance.variant_materials = variants->second;
       instance.world_from_object = world_from_object * *object_from_copy;
       for (const TransformKey& key : motion)
         instance.motion.push_back({key.time_seconds, key.world_from_object * *object_from_copy});
@@ -654,12 +657,10 @@ Scene GltfImporter::import() {
         instance.name = scene_.meshes[p.mesh].name;
         instance.mesh = p.mesh;
         instance.material = int32_t(p.material);
+        auto variants = variant_materials_.find({p.mesh, p.material});
+        if (variants != variant_materials_.end()) instance.variant_materials = variants->second;
         scene_.instances.push_back(instance);
       }
-  }
-  for (Instance& instance : scene_.instances) {
-    auto found = variant_materials_.find({instance.mesh, uint32_t(instance.material)});
-    if (found != variant_materials_.end()) instance.variant_materials = found->second;
   }
   return std::move(scene_);
 }
