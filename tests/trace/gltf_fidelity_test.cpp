@@ -13,33 +13,21 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
-#include <filesystem>
-#include <fstream>
-#include <nlohmann/json.hpp>
 #include <string>
 #include <variant>
 
+#include "gltf_fidelity_scene.h"
 #include "obscura/io/default_environment.h"
 #include "obscura/io/image_io.h"
-#include "obscura/io/scene_loader.h"
 #include "obscura/trace/path_tracer.h"
 #include "obscura/trace/render.h"
-#include "test_paths.h"
 #include "trace_test_scenes.h"
 
 namespace obscura {
 namespace {
 
-namespace fs = std::filesystem;
-using nlohmann::json;
-
 constexpr int kSize = 128;
 constexpr int kSamples = 64;
-
-json read_json(const std::string& path) {
-  std::ifstream file(path);
-  return json::parse(file);
-}
 
 // The fidelity suite's "-lambert" reduction: metallic 0, roughness 1, no specular layer (so the
 // tracer's metallic-roughness BSDF is exactly Lambert on base colour × texture × COLOR_0), no
@@ -59,24 +47,9 @@ void reduce_to_lambert(Scene& scene) {
   }
 }
 
-// The model (tests/data/gltf/MODEL) through the reference's camera, as the suite's scene file
-// places it, lit by uniform white radiance 1.
+// The model lit by uniform white radiance 1, materials reduced to Lambert.
 Scene fidelity_scene(const std::string& name, const std::string& model) {
-  json camera = read_json(test::source_path("data/reference/gltf/" + name + ".camera.json"));
-  json scene_file = {{"objects", json::array({{{"model", test::data_path("gltf/" + model)}}})},
-                     {"cameras", json::array({{{"name", "fidelity"},
-                                               {"position", camera["eye"]},
-                                               {"target", camera["target"]},
-                                               {"up", camera["up"]},
-                                               {"fov_degrees", camera["vfov_deg"]}}})},
-                     {"camera", "fidelity"}};
-  fs::path dir = fs::temp_directory_path() / ("obscura-fidelity-" + name);
-  fs::create_directories(dir);
-  fs::path path = dir / "scene.json";
-  std::ofstream(path) << scene_file.dump();
-  Scene scene = load_scene_file(path.string());
-  fs::remove_all(dir);
-  scene.camera.film.width_px = scene.camera.film.height_px = kSize;
+  Scene scene = test::fidelity_scene(name, model, kSize);
   reduce_to_lambert(scene);
   EnvironmentChoice white;
   white.source = EnvironmentSource::kWhite;
@@ -88,8 +61,8 @@ void expect_matches_cycles(const std::string& name, const std::string& model) {
   SCOPED_TRACE(name);
   Scene scene = fidelity_scene(name, model);
   double cycles_rmse_256 =
-      read_json(test::source_path("data/reference/gltf/" + name + ".cycles.json"))["cycles_rmse"];
-  Image reference = read_image(test::source_path("data/reference/gltf/" + name + ".exr"));
+      test::read_json_file(test::fidelity_reference(name, ".cycles.json"))["cycles_rmse"];
+  Image reference = read_image(test::fidelity_reference(name, ".exr"));
   ASSERT_EQ(reference.width, kSize);
   ASSERT_EQ(reference.height, kSize);
 

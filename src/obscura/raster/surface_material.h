@@ -117,12 +117,19 @@ OBSCURA_RASTER_INLINE Rgb sample_or_one(const Texture* t, const UvTransform& m,
                    m.m00 * c.du_dy + m.m01 * c.dv_dy, m.m10 * c.du_dy + m.m11 * c.dv_dy);
 }
 
-// The coverage α at a point (see SurfaceMaterial::alpha_mode).
+// The coverage α at a point, for the cut-out test (see SurfaceMaterial::alpha_mode). Read from
+// the full-resolution texture, bilinearly, as the tracer reads it: a cut-out is a threshold, and
+// a threshold of MIP-averaged alpha moves the cut-out's edge (thin parts vanish or swell with
+// distance) where the threshold of the texture itself is what the file describes. MSAA then
+// antialiases the edge by testing each sample.
 OBSCURA_RASTER_INLINE float coverage_alpha(const SurfaceMaterial& m, const FragmentUvs& uvs,
                                            float vertex_alpha) {
   float a = m.base_alpha * vertex_alpha;
   if (m.alpha_texture)
-    a *= sample_or_one(m.alpha_texture, m.base_transform, m.filter, uvs.set[m.base_uv_set]).r;
+    a *= sample_or_one(m.alpha_texture, m.base_transform,
+                       m.filter == TextureFilter::kNearest ? m.filter : TextureFilter::kBilinear,
+                       uvs.set[m.base_uv_set])
+             .r;
   return a;
 }
 
