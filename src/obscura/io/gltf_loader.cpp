@@ -20,6 +20,7 @@
 #include "obscura/io/gltf_draco.h"
 #include "obscura/io/gltf_feature_warnings.h"
 #include "obscura/io/gltf_gpu_instancing.h"
+#include "obscura/io/gltf_importer.h"
 #include "obscura/io/gltf_material_extensions.h"
 #include "obscura/io/gltf_meshopt.h"
 #include "obscura/io/gltf_missing_image.h"
@@ -30,21 +31,7 @@
 #include "obscura/math/error.h"
 
 namespace obscura {
-
 namespace {
-
-std::string element(const char* array, size_t index) {
-  return std::string(array) + "[" + std::to_string(index) + "]";
-}
-
-// Decoded images, filled by tinygltf's image callback (which we route to OpenImageIO). An image
-// that cannot be read is a warning, not an error: its material renders with the factor alone.
-struct ImageStore {
-  std::string file;
-  const tinygltf::Model* model = nullptr;  // filled by tinygltf while it parses
-  std::map<int, Texture> decoded;          // by glTF image index
-  std::map<int, std::string> failed;       // by glTF image index: why it could not be decoded
-};
 
 bool decode_image(tinygltf::Image* image, const int image_index, std::string*, std::string*, int,
                   int, const unsigned char* bytes, int size, void* user) {
@@ -91,412 +78,46 @@ bool decode_image(tinygltf::Image* image, const int image_index, std::string*, s
   return true;
 }
 
-// Everything the loader builds while walking the file.
-class GltfImporter {
- public:
-  GltfImporter(const tinygltf::Model& model, std::string file, ImageStore& images,
-               std::vector<std::string> warnings, std::set<std::string> ignored_extensions,
-               GltfLoadOptions options)
-      : model_(model),
-        file_(std::move(file)),
-        images_(images),
-        accessors_(model_, file_),
-        ignored_extensions_(std::move(ignored_extensions)),
-        options_(std::move(options)) {
-    scene_.warnings = std::move(warnings);
+// tinygltf's file access, bounded: only regular files (not a directory, FIFO or device, which
+// its own reader sizes with tellg and then tries to allocate), at most kMaxGltfFileBytes each.
+// Each file read (buffers, images) is recorded in `files_read`, a std::vector<std::string>.
+bool read_bounded(std::vector<unsigned char>* out, std::string* err, const std::string& path,
+                  void* files_read) {
+  try {
+    *out = read_gltf_file(path);
+    static_cast<std::vector<std::string>*>(files_read)->push_back(path);
+    return true;
+  } catch (const Error& e) {
+    if (err) *err += e.what();
+    return false;
   }
+}
 
-  Scene import();
+bool file_exists(const std::string& path, void*) {
+  std::error_code ec;
+  return std::filesystem::exists(path, ec);
+}
 
- private:
-  [[noreturn]] void fail(const std::string& where, const std::string& message) const {
-    throw Error(file_ + ": " + where, message);
-  }
-  // An image that cannot be used gives no texture (the material's factor alone), or with
-  // `placeholder_if_missing` (base colour) the visible missing-image checker.
-  TextureRef texture(int texture_index, int uv_set, TextureEncoding encoding,
-                     const std::string& where, bool placeholder_if_missing = false);
-  // The texture with the textureInfo's KHR_texture_transform, when it has one.
-  template <class Info>
-  TextureRef texture(const Info& info, TextureEncoding encoding, const std::string& where,
-                     bool placeholder_if_missing = false) {
-    TextureRef ref = texture(info.index, info.texCoord, encoding, where, placeholder_if_missing);
-    auto found = info.extensions.find("KHR_texture_transform");
-    if (found == info.extensions.end() || !ref.valid()) return ref;
-    const std::string ext_where = where + ".extensions.KHR_texture_transform";
-    ref.transform = uv_transform(found->second, ext_where);
-    // The extension may also name the UV set, overriding the textureInfo's own texCoord.
-    if (found->second.Has("texCoord")) {
-      const tinygltf::Value& set = found->second.Get("texCoord");
-      if (!set.IsInt() || set.GetNumberAsInt() < 0)
-        fail(ext_where + ".texCoord", "expected a non-negative integer");
-      ref.uv_set = uint32_t(set.GetNumberAsInt());
+std::string keep_path(const std::string& path, void*) {
+  return path;
+}
+
+// tinygltf quotes whole data URIs in its messages: keep each line short.
+std::string shorten(const std::string& message) {
+  std::string out, line;
+  for (size_t i = 0; i <= message.size(); ++i) {
+    if (i == message.size() || message[i] == '\n') {
+      if (line.size() > 200) line = line.substr(0, 200) + "…";
+      if (!line.empty()) out += (out.empty() ? "" : "; ") + line;
+      line.clear();
+    } else {
+      line += message[i];
     }
-    return ref;
-  }
-  // A textureInfo given as a JSON value (inside a material extension).
-  TextureRef texture(const tinygltf::Value& info, TextureEncoding encoding,
-                     const std::string& where);
-  UvTransform uv_transform(const tinygltf::Value& value, const std::string& where) const;
-  void import_materials();
-  uint32_t default_material();
-  // One glTF primitive as our mesh, with the material it is drawn with.
-  struct PrimitiveMesh {
-    uint32_t mesh = 0, material = 0;
-    size_t primitive = 0;  // index in the glTF mesh's primitives
-  };
-  std::vector<PrimitiveMesh> import_mesh(int mesh_index);
-  void add_mesh_instances(int node_index, const Matrix4& world_from_node,
-                          const Transform& world_from_object);
-  Mesh import_primitive(const tinygltf::Primitive& primitive, const std::string& where,
-                        const std::string& name);
-  void import_light(int light_index, const Transform& world_from_light, const std::string& where);
-  void visit_node(int node_index, const Matrix4& world_from_parent, int depth);
-
-  const tinygltf::Model& model_;
-  std::string file_;
-  ImageStore& images_;
-  GltfAccessorReader accessors_;
-  Scene scene_;
-  std::map<std::pair<int, TextureEncoding>, int32_t> textures_;  // (glTF texture, encoding) → ours
-  // Per glTF mesh, its primitives as our meshes.
-  std::map<int, std::vector<PrimitiveMesh>> meshes_;
-  // Primitives that read the same accessors share one Mesh (instancing across glTF meshes).
-  std::map<std::string, uint32_t> geometry_;
-  int default_material_ = -1;
-  int32_t placeholder_texture_ = -1;  // the missing-image checker, added on first use
-  NodeAnimations animations_;
-  std::set<std::string> ignored_extensions_;  // warned about already
-  // KHR_materials_variants: per (our mesh, default material), its (variant, material) pairs.
-  std::map<std::pair<uint32_t, uint32_t>, std::vector<std::pair<uint32_t, uint32_t>>>
-      variant_materials_;
-  GltfLoadOptions options_;
-  std::optional<GltfDeformer> deformer_;
-  size_t gpu_instance_budget_ = kMaxGpuInstances;
-  size_t placed_copies_ = 0;
-  size_t posed_vertices_ = 0;
-};
-
-double number(const tinygltf::Value& v, const char* key, double fallback) {
-  if (!v.Has(key) || !v.Get(key).IsNumber()) return fallback;
-  return v.Get(key).GetNumberAsDouble();
-}
-
-Rgb rgb(const std::vector<double>& v, Rgb fallback) {
-  if (v.size() < 3) return fallback;
-  return {float(v[0]), float(v[1]), float(v[2])};
-}
-
-TextureWrap wrap(int gl) {
-  if (gl == TINYGLTF_TEXTURE_WRAP_CLAMP_TO_EDGE) return TextureWrap::kClampToEdge;
-  if (gl == TINYGLTF_TEXTURE_WRAP_MIRRORED_REPEAT) return TextureWrap::kMirroredRepeat;
-  return TextureWrap::kRepeat;
-}
-
-TextureFilter filter(int min_filter, int mag_filter) {
-  if (min_filter == TINYGLTF_TEXTURE_FILTER_NEAREST ||
-      (min_filter == -1 && mag_filter == TINYGLTF_TEXTURE_FILTER_NEAREST))
-    return TextureFilter::kNearest;
-  if (min_filter == TINYGLTF_TEXTURE_FILTER_LINEAR) return TextureFilter::kBilinear;
-  return TextureFilter::kTrilinear;  // mipmapped or unspecified: the renderer chooses
-}
-
-TextureRef GltfImporter::texture(int texture_index, int uv_set, TextureEncoding encoding,
-                                 const std::string& where, bool placeholder_if_missing) {
-  if (texture_index < 0) return {};
-  if (size_t(texture_index) >= model_.textures.size())
-    fail(where, "texture index " + std::to_string(texture_index) + " is out of range");
-  auto key = std::make_pair(texture_index, encoding);
-  auto found = textures_.find(key);
-  if (found != textures_.end()) return {found->second, uint32_t(std::max(uv_set, 0)), {}};
-  const tinygltf::Texture& gt = model_.textures[texture_index];
-  if (gt.source < 0 || size_t(gt.source) >= model_.images.size())
-    fail(element("textures", texture_index),
-         "image index " + std::to_string(gt.source) + " is out of range");
-  auto image = images_.decoded.find(gt.source);
-  if (image == images_.decoded.end()) {  // warned about once, at load
-    if (!placeholder_if_missing) return {};
-    if (placeholder_texture_ < 0) {
-      placeholder_texture_ = int32_t(scene_.textures.size());
-      scene_.textures.push_back(missing_image_placeholder());
-    }
-    return {placeholder_texture_, uint32_t(std::max(uv_set, 0)), {}};
-  }
-  Texture t = image->second;  // a copy: one glTF image may be used with two encodings
-  t.name = !gt.name.empty() ? gt.name : model_.images[gt.source].name;
-  if (t.name.empty()) t.name = model_.images[gt.source].uri;
-  if (t.name.empty() || t.name.rfind("data:", 0) == 0) t.name = element("images", gt.source);
-  t.encoding = encoding;
-  if (gt.sampler >= 0 && size_t(gt.sampler) < model_.samplers.size()) {
-    const tinygltf::Sampler& s = model_.samplers[gt.sampler];
-    t.wrap_u = wrap(s.wrapS);
-    t.wrap_v = wrap(s.wrapT);
-    t.filter = filter(s.minFilter, s.magFilter);
-  }
-  auto index = int32_t(scene_.textures.size());
-  scene_.textures.push_back(std::move(t));
-  textures_[key] = index;
-  return {index, uint32_t(std::max(uv_set, 0)), {}};
-}
-
-TextureRef GltfImporter::texture(const tinygltf::Value& info, TextureEncoding encoding,
-                                 const std::string& where) {
-  tinygltf::TextureInfo ti;
-  if (!info.Has("index") || !info.Get("index").IsInt())
-    fail(where + ".index", "expected a texture index");
-  ti.index = info.Get("index").GetNumberAsInt();
-  if (info.Has("texCoord")) {
-    const tinygltf::Value& set = info.Get("texCoord");
-    if (!set.IsInt() || set.GetNumberAsInt() < 0)
-      fail(where + ".texCoord", "expected a non-negative integer");
-    ti.texCoord = set.GetNumberAsInt();
-  }
-  if (info.Has("extensions") && info.Get("extensions").IsObject()) {
-    const tinygltf::Value& extensions = info.Get("extensions");
-    for (const std::string& key : extensions.Keys()) ti.extensions[key] = extensions.Get(key);
-  }
-  return texture(ti, encoding, where);
-}
-
-UvTransform GltfImporter::uv_transform(const tinygltf::Value& value,
-                                       const std::string& where) const {
-  // KHR_texture_transform: offset [0, 0], rotation 0 (radians), scale [1, 1].
-  auto pair = [&](const char* key, Point2f fallback) {
-    if (!value.Has(key)) return fallback;
-    const tinygltf::Value& v = value.Get(key);
-    if (!v.IsArray() || v.ArrayLen() != 2 || !v.Get(0).IsNumber() || !v.Get(1).IsNumber())
-      fail(where + "." + key, "expected an array of 2 numbers");
-    Point2f p(float(v.Get(0).GetNumberAsDouble()), float(v.Get(1).GetNumberAsDouble()));
-    if (!std::isfinite(p.x) || !std::isfinite(p.y)) fail(where + "." + key, "must be finite");
-    return p;
-  };
-  float rotation = 0;
-  if (value.Has("rotation")) {
-    const tinygltf::Value& r = value.Get("rotation");
-    if (!r.IsNumber() || !std::isfinite(r.GetNumberAsDouble()))
-      fail(where + ".rotation", "expected a finite number (radians)");
-    rotation = float(r.GetNumberAsDouble());
-  }
-  return UvTransform::offset_rotation_scale(pair("offset", {0, 0}), rotation,
-                                            pair("scale", {1, 1}));
-}
-
-void GltfImporter::import_materials() {
-  for (size_t i = 0; i < model_.materials.size(); ++i) {
-    const tinygltf::Material& gm = model_.materials[i];
-    std::string where = element("materials", i);
-    const tinygltf::PbrMetallicRoughness& pbr = gm.pbrMetallicRoughness;
-    MetallicRoughnessMaterial mr;
-    mr.base_color = rgb(pbr.baseColorFactor, Rgb(1.f));
-    mr.alpha = pbr.baseColorFactor.size() == 4 ? float(pbr.baseColorFactor[3]) : 1.f;
-    mr.base_color_texture =
-        texture(pbr.baseColorTexture, TextureEncoding::kSrgb, where + ".baseColorTexture",
-                /*placeholder_if_missing=*/true);
-    mr.metallic = float(pbr.metallicFactor);
-    mr.roughness = float(pbr.roughnessFactor);
-    mr.metallic_roughness_texture = texture(pbr.metallicRoughnessTexture, TextureEncoding::kLinear,
-                                            where + ".metallicRoughnessTexture");
-    mr.occlusion_texture =
-        texture(gm.occlusionTexture, TextureEncoding::kLinear, where + ".occlusionTexture");
-    float emissive_strength = 1;
-    for (const auto& [name, value] : gm.extensions) {
-      if (name == "KHR_materials_emissive_strength") {
-        emissive_strength = float(number(value, "emissiveStrength", 1));
-      } else if (name == "KHR_materials_specular") {
-        mr.specular = float(number(value, "specularFactor", 1));
-        if (value.Has("specularColorFactor") && value.Get("specularColorFactor").IsArray() &&
-            value.Get("specularColorFactor").ArrayLen() == 3) {
-          const tinygltf::Value& c = value.Get("specularColorFactor");
-          mr.specular_color =
-              Rgb(float(c.Get(0).GetNumberAsDouble()), float(c.Get(1).GetNumberAsDouble()),
-                  float(c.Get(2).GetNumberAsDouble()));
-        }
-      } else if (name == "KHR_materials_ior") {
-        mr.ior = float(number(value, "ior", 1.5));
-      } else if (read_gltf_material_extension(
-                     name, value, file_, where,
-                     [this](const tinygltf::Value& info, TextureEncoding encoding,
-                            const std::string& at) { return texture(info, encoding, at); },
-                     mr)) {
-      } else if (ignored_extensions_.insert(name).second) {
-        scene_.warnings.push_back(file_ + ": " + where + ": extension " + name +
-                                  " is not supported; it is ignored");
-      }
-    }
-    Material m;
-    m.name = gm.name.empty() ? where : gm.name;
-    m.model = mr;
-    m.emission = rgb(gm.emissiveFactor, Rgb()) * emissive_strength;
-    m.emission_texture =
-        texture(gm.emissiveTexture, TextureEncoding::kSrgb, where + ".emissiveTexture");
-    m.normal_texture =
-        texture(gm.normalTexture, TextureEncoding::kLinear, where + ".normalTexture");
-    m.normal_scale = float(gm.normalTexture.scale);
-    m.double_sided = gm.doubleSided;
-    if (mr.unlit) {  // KHR_materials_unlit: only the base colour (and its alpha) counts
-      m.emission = {};
-      m.emission_texture = {};
-      m.normal_texture = {};
-    }
-    if (gm.alphaMode == "MASK") {
-      m.alpha_mode = AlphaMode::kMask;
-      if (!std::isfinite(gm.alphaCutoff) || gm.alphaCutoff < 0)
-        fail(where + ".alphaCutoff",
-             std::to_string(gm.alphaCutoff) + " must be a finite number ≥ 0");
-      m.alpha_cutoff = float(gm.alphaCutoff);
-    } else if (gm.alphaMode == "BLEND") {
-      m.alpha_mode = AlphaMode::kBlend;
-    } else if (gm.alphaMode != "OPAQUE" && !gm.alphaMode.empty()) {
-      fail(where + ".alphaMode", "'" + gm.alphaMode + "' is not OPAQUE, MASK or BLEND");
-    }
-    scene_.materials.push_back(std::move(m));
-  }
-}
-
-uint32_t GltfImporter::default_material() {
-  // glTF's default material: white, fully metallic and rough.
-  if (default_material_ < 0) {
-    default_material_ = int(scene_.materials.size());
-    Material m;
-    m.name = "default";
-    m.model = MetallicRoughnessMaterial{};
-    scene_.materials.push_back(m);
-  }
-  return uint32_t(default_material_);
-}
-
-// Triangle indices of a strip or fan, keeping counter-clockwise winding.
-std::vector<uint32_t> triangulate(const std::vector<uint32_t>& v, int mode) {
-  std::vector<uint32_t> out;
-  for (size_t i = 2; i < v.size(); ++i) {
-    if (mode == TINYGLTF_MODE_TRIANGLE_FAN)
-      out.insert(out.end(), {v[0], v[i - 1], v[i]});
-    else if (i % 2 == 0)
-      out.insert(out.end(), {v[i - 2], v[i - 1], v[i]});
-    else
-      out.insert(out.end(), {v[i - 1], v[i - 2], v[i]});
   }
   return out;
 }
 
-Mesh GltfImporter::import_primitive(const tinygltf::Primitive& p, const std::string& where,
-                                    const std::string& name) {
-  Mesh mesh;
-  mesh.name = name;
-  auto attribute = [&](const char* key) {
-    auto it = p.attributes.find(key);
-    return it == p.attributes.end() ? -1 : it->second;
-  };
-  int position = attribute("POSITION");
-  if (position < 0) fail(where, "primitive has no POSITION attribute");
-  std::vector<float> xyz = accessors_.floats(position, {3}, AccessorNumbers::kFloatOrSmallInteger,
-                                             where + ".attributes.POSITION");
-  mesh.positions.resize(xyz.size() / 3);
-  for (size_t i = 0; i < mesh.positions.size(); ++i) {
-    mesh.positions[i] = {xyz[3 * i], xyz[3 * i + 1], xyz[3 * i + 2]};
-    if (!std::isfinite(xyz[3 * i]) || !std::isfinite(xyz[3 * i + 1]) ||
-        !std::isfinite(xyz[3 * i + 2]))
-      fail(where + ".attributes.POSITION",
-           "vertex " + std::to_string(i) + " is not finite (NaN or infinity)");
-  }
-  xyz = {};
-  size_t n = mesh.positions.size();
-  // Every other attribute has one element per position; checked before it is read.
-  auto read = [&](const char* key, std::initializer_list<int> components, AccessorNumbers numbers,
-                  int* got_components = nullptr) {
-    std::string at = where + ".attributes." + key;
-    int a = attribute(key);
-    if (a < 0) return std::vector<float>{};
-    if (uint64_t count = accessors_.count(a, at); count != n)
-      fail(at, std::to_string(count) + " elements for " + std::to_string(n) + " positions");
-    if (got_components) *got_components = accessors_.components(a, at);
-    return accessors_.floats(a, components, numbers, at);
-  };
-  std::vector<float> v = read("NORMAL", {3}, AccessorNumbers::kFloatOrNormalized);
-  for (size_t i = 0; i < v.size() / 3; ++i)
-    mesh.normals.emplace_back(v[3 * i], v[3 * i + 1], v[3 * i + 2]);
-  v = read("TEXCOORD_0", {2}, AccessorNumbers::kFloatOrSmallInteger);
-  for (size_t i = 0; i < v.size() / 2; ++i) mesh.uvs.emplace_back(v[2 * i], v[2 * i + 1]);
-  v = read("TEXCOORD_1", {2}, AccessorNumbers::kFloatOrSmallInteger);
-  for (size_t i = 0; i < v.size() / 2; ++i) mesh.uvs1.emplace_back(v[2 * i], v[2 * i + 1]);
-  v = read("TANGENT", {4}, AccessorNumbers::kFloatOrNormalized);
-  for (size_t i = 0; i < v.size() / 4; ++i) {
-    // w is the handedness, ±1; a file's 0 or rounding is read by its sign.
-    mesh.tangents.emplace_back(v[4 * i], v[4 * i + 1], v[4 * i + 2], v[4 * i + 3] < 0 ? -1 : 1);
-    if (!std::isfinite(v[4 * i]) || !std::isfinite(v[4 * i + 1]) || !std::isfinite(v[4 * i + 2])) {
-      scene_.warnings.push_back(file_ + ": " + where + ".attributes.TANGENT: vertex " +
-                                std::to_string(i) +
-                                " is not finite (NaN or infinity); tangents are generated instead");
-      mesh.tangents = {};
-      break;
-    }
-  }
-  int c = 0;
-  v = read("COLOR_0", {3, 4}, AccessorNumbers::kFloatOrNormalized, &c);
-  for (size_t i = 0; c > 0 && i < v.size() / size_t(c); ++i)
-    mesh.colors.emplace_back(v[c * i], v[c * i + 1], v[c * i + 2]);
-  // RGBA colours: their alpha multiplies the material's coverage. Kept only where some vertex is
-  // not fully opaque, so that opaque RGBA colours cost the renderers nothing.
-  bool translucent = false;
-  for (size_t i = 0; c == 4 && i < v.size() / 4; ++i) translucent |= v[4 * i + 3] < 1;
-  if (translucent)
-    for (size_t i = 0; i < v.size() / 4; ++i) mesh.color_alphas.push_back(v[4 * i + 3]);
-  v = {};
-  std::vector<uint32_t> indices;
-  if (p.indices >= 0) {
-    indices = accessors_.indices(p.indices, n, where + ".indices");
-  } else {
-    indices.resize(n);
-    for (size_t i = 0; i < n; ++i) indices[i] = uint32_t(i);
-  }
-  if (p.mode == TINYGLTF_MODE_TRIANGLES) {
-    indices.resize(indices.size() / 3 * 3);
-    mesh.indices = std::move(indices);
-  } else {
-    mesh.indices = triangulate(indices, p.mode);
-  }
-  if (p.material >= 0 && size_t(p.material) >= model_.materials.size())
-    fail(where + ".material", "material index " + std::to_string(p.material) + " is out of range");
-  mesh.material = p.material >= 0 ? uint32_t(p.material) : default_material();
-  return mesh;
-}
-
-std::vector<GltfImporter::PrimitiveMesh> GltfImporter::import_mesh(int mesh_index) {
-  auto found = meshes_.find(mesh_index);
-  if (found != meshes_.end()) return found->second;
-  const tinygltf::Mesh& gm = model_.meshes[mesh_index];
-  std::vector<PrimitiveMesh>& ours = meshes_[mesh_index];
-  for (size_t j = 0; j < gm.primitives.size(); ++j) {
-    const tinygltf::Primitive& p = gm.primitives[j];
-    std::string where = element("meshes", mesh_index) + "." + element("primitives", j);
-    if (p.mode != TINYGLTF_MODE_TRIANGLES && p.mode != TINYGLTF_MODE_TRIANGLE_STRIP &&
-        p.mode != TINYGLTF_MODE_TRIANGLE_FAN) {
-      scene_.warnings.push_back(file_ + ": " + where +
-                                ": points and lines are not rendered; primitive skipped");
-      continue;
-    }
-    std::string name = gm.name.empty() ? element("meshes", mesh_index) : gm.name;
-    if (gm.primitives.size() > 1) name += "/" + std::to_string(j);
-    std::string key = std::to_string(p.mode) + " " + std::to_string(p.indices);
-    for (const auto& [attribute, accessor] : p.attributes)
-      key += " " + attribute + "=" + std::to_string(accessor);
-    auto shared = geometry_.find(key);
-    if (shared == geometry_.end()) {
-      shared = geometry_.emplace(key, uint32_t(scene_.meshes.size())).first;
-      scene_.meshes.push_back(import_primitive(p, where, name));
-    }
-    if (p.material >= 0 && size_t(p.material) >= model_.materials.size())
-      fail(where + ".material",
-           "material index " + std::to_string(p.material) + " is out of range");
-    ours.push_back(
-        {shared->second, p.material >= 0 ? uint32_t(p.material) : default_material(), j});
-    auto variants = p.extensions.find("KHR_materials_variants");
-    if (variants != p.extensions.end())
-      variant_materials_[{ours.back().mesh, ours.back().material}] = read_gltf_variant_mappings(
-          variants->second, scene_.material_variants.size(), model_.materials.size(), file_, where);
-  }
-  return ours;
-}
+}  // namespace
 
 void GltfImporter::import_light(int light_index, const Transform& world_from_light,
                                 const std::string& where) {
@@ -664,47 +285,6 @@ Scene GltfImporter::import() {
   }
   return std::move(scene_);
 }
-
-// tinygltf's file access, bounded: only regular files (not a directory, FIFO or device, which
-// its own reader sizes with tellg and then tries to allocate), at most kMaxGltfFileBytes each.
-// Each file read (buffers, images) is recorded in `files_read`, a std::vector<std::string>.
-bool read_bounded(std::vector<unsigned char>* out, std::string* err, const std::string& path,
-                  void* files_read) {
-  try {
-    *out = read_gltf_file(path);
-    static_cast<std::vector<std::string>*>(files_read)->push_back(path);
-    return true;
-  } catch (const Error& e) {
-    if (err) *err += e.what();
-    return false;
-  }
-}
-
-bool file_exists(const std::string& path, void*) {
-  std::error_code ec;
-  return std::filesystem::exists(path, ec);
-}
-
-std::string keep_path(const std::string& path, void*) {
-  return path;
-}
-
-// tinygltf quotes whole data URIs in its messages: keep each line short.
-std::string shorten(const std::string& message) {
-  std::string out, line;
-  for (size_t i = 0; i <= message.size(); ++i) {
-    if (i == message.size() || message[i] == '\n') {
-      if (line.size() > 200) line = line.substr(0, 200) + "…";
-      if (!line.empty()) out += (out.empty() ? "" : "; ") + line;
-      line.clear();
-    } else {
-      line += message[i];
-    }
-  }
-  return out;
-}
-
-}  // namespace
 
 std::vector<unsigned char> read_gltf_file(const std::string& path) {
   uint64_t size = check_input_file(path, kMaxGltfFileBytes, "glTF files and buffers");
