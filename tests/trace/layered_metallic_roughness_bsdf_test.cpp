@@ -179,8 +179,7 @@ TEST(LayeredMetallicRoughnessBsdf, CoatScalesTheBaseByWhatItReflects) {
   float tail = 0.7f * fresnel_schlick(0.04f, dot(wo, h)) * coat.D(h) * coat.G(wo, wi) /
                (4 * wo.z * wi.z);  // the coat's lobe this far from its peak: ~1e-5
   for (int c = 0; c < 3; ++c)
-    EXPECT_NEAR(coated.f(wo, wi)[c], scale * plain.f(wo, wi)[c] + tail,
-                1e-6f * plain.f(wo, wi)[c]);
+    EXPECT_NEAR(coated.f(wo, wi)[c], scale * plain.f(wo, wi)[c] + tail, 1e-6f * plain.f(wo, wi)[c]);
 }
 
 TEST(LayeredMetallicRoughnessBsdf, SheenFollowsTheSpecificationsFormula) {
