@@ -93,6 +93,27 @@ bool read_gltf_material_extension(const std::string& name, const tinygltf::Value
     material.attenuation_distance =
         read.number("attenuationDistance", kInfinity, std::numeric_limits<float>::min(), kInfinity);
     material.attenuation_color = read.color("attenuationColor", Rgb(1.f));
+  } else if (name == "KHR_materials_clearcoat") {
+    material.clearcoat = read.number("clearcoatFactor", 0, 0, 1);
+    material.clearcoat_texture =
+        read.texture("clearcoatTexture", TextureEncoding::kLinear, texture);
+    material.clearcoat_roughness = read.number("clearcoatRoughnessFactor", 0, 0, 1);
+    material.clearcoat_roughness_texture =
+        read.texture("clearcoatRoughnessTexture", TextureEncoding::kLinear, texture);
+    material.clearcoat_normal_texture =
+        read.texture("clearcoatNormalTexture", TextureEncoding::kLinear, texture);
+    if (material.clearcoat_normal_texture.valid())  // a normalTextureInfo: it has a scale
+      material.clearcoat_normal_scale =
+          ExtensionReader(value.Get("clearcoatNormalTexture"), file,
+                          where + ".extensions." + name + ".clearcoatNormalTexture")
+              .number("scale", 1, -kLargest, kLargest);
+  } else if (name == "KHR_materials_sheen") {
+    material.sheen_color = read.color("sheenColorFactor", Rgb(0.f));
+    material.sheen_color_texture =
+        read.texture("sheenColorTexture", TextureEncoding::kSrgb, texture);
+    material.sheen_roughness = read.number("sheenRoughnessFactor", 0, 0, 1);
+    material.sheen_roughness_texture =
+        read.texture("sheenRoughnessTexture", TextureEncoding::kLinear, texture);
   } else {
     return false;
   }

@@ -1,5 +1,6 @@
 // The glTF material extensions that change the surface model, read into the metallic-roughness
-// material: KHR_materials_unlit, KHR_materials_transmission and KHR_materials_volume. Every
+// material: KHR_materials_unlit, KHR_materials_transmission, KHR_materials_volume,
+// KHR_materials_clearcoat and KHR_materials_sheen. Every
 // number is checked against the range its specification allows; a bad one is an obscura::Error
 // naming the file, material and field.
 #pragma once

@@ -182,9 +182,10 @@ void check_lights(const tinygltf::Model& model, const std::string& file) {
 const std::set<std::string>& supported_gltf_extensions() {
   static const std::set<std::string> names = {
       "EXT_mesh_gpu_instancing", "EXT_meshopt_compression", "KHR_draco_mesh_compression",
-      "KHR_lights_punctual", "KHR_materials_emissive_strength", "KHR_materials_ior",
-      "KHR_materials_specular", "KHR_materials_transmission", "KHR_materials_unlit",
-      "KHR_materials_variants", "KHR_materials_volume",
+      "KHR_lights_punctual", "KHR_materials_clearcoat", "KHR_materials_emissive_strength",
+      "KHR_materials_ior", "KHR_materials_sheen", "KHR_materials_specular",
+      "KHR_materials_transmission", "KHR_materials_unlit", "KHR_materials_variants",
+      "KHR_materials_volume",
       // Quantized attributes (integer POSITION, TEXCOORD,
       // NORMAL, TANGENT) are read like any other accessor.
       "KHR_mesh_quantization", "KHR_texture_transform"};

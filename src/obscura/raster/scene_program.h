@@ -118,9 +118,12 @@ struct ScenePixelProgram {
     geometric = g2 > 0 ? geometric / std::sqrt(g2) : interpolated / std::sqrt(std::max(i2, 1e-30f));
     geometric = face_towards(geometric, v);
     FragmentUvs uvs{{{a.u, a.v, dx.u, dx.v, dy.u, dy.v}, {a.u1, a.v1, dx.u1, dx.v1, dy.u1, dy.v1}}};
-    Vector3f n = geometric;
+    Vector3f n = geometric, coat = geometric;
     if (!uniforms.flat && i2 > 0) {  // the tracer's convention (math/shading_normal.h)
       Vector3f shading = interpolated / std::sqrt(i2);
+      // KHR_materials_clearcoat: the coat ignores the base's normal map; it has its own or none.
+      if (m.model == SurfaceModel::kLayeredMetallicRoughness)
+        coat = visible_shading_normal(coat_normal(m, shading, geometric, a, uvs), geometric, v);
       if (m.normal_texture) {
         // Perturbed in the frame of the unperturbed normal and kept above the surface on its
         // side, as the tracer does; a back face then flips the whole frame (glTF doubleSided).
@@ -136,6 +139,7 @@ struct ScenePixelProgram {
     }
 
     SurfacePoint s = surface_point(m, uvs, a.color);
+    s.coat_normal = coat;
     if (uniforms.force_blinn && s.model == SurfaceModel::kPhong) {
       s.model = SurfaceModel::kBlinnPhong;
       s.lobe_normalization = blinn_phong_lobe_normalization(s.shininess);
@@ -154,6 +158,21 @@ struct ScenePixelProgram {
     float i2 = dot(a.normal, a.normal);
     if (i2 <= 0) return {};
     return face_towards(a.normal / std::sqrt(i2), uniforms.view_direction(a.position));
+  }
+
+ private:
+  // The clear coat's unit normal: the `unperturbed` shading normal, or its own normal map's
+  // perturbation of it, kept above the surface like the base's.
+  OBSCURA_RASTER_INLINE static Vector3f coat_normal(const SurfaceMaterial& m, Vector3f unperturbed,
+                                                    Vector3f geometric, const Varyings& a,
+                                                    const FragmentUvs& uvs) {
+    if (!m.clearcoat_normal_texture.texture) return unperturbed;
+    Vector3f side = dot(unperturbed, geometric) < 0 ? -geometric : geometric;
+    Rgb texel = sample_or_one(m.clearcoat_normal_texture, m.filter, uvs);
+    return shading::keep_above_surface(
+        shading::perturbed_normal(unperturbed, {a.tangent.x, a.tangent.y, a.tangent.z, a.tangent_w},
+                                  {texel.r, texel.g, texel.b}, m.clearcoat_normal_scale),
+        side);
   }
 };
 

@@ -94,14 +94,18 @@ std::optional<Texture> compile_alpha_texture(const obscura::Texture& t) {
   return Texture(image, t.wrap_u, t.wrap_v);
 }
 
-// The scene textures whose alpha gives some material its coverage (glTF base colour textures of
-// materials with alphaMode MASK or BLEND).
+// The scene textures whose alpha some material uses: for its coverage (glTF base colour textures
+// of materials with alphaMode MASK or BLEND), or its sheen roughness.
 std::vector<bool> coverage_textures(const Scene& scene) {
   std::vector<bool> used(scene.textures.size(), false);
   for (const Material& m : scene.materials)
     if (const auto* mr = std::get_if<MetallicRoughnessMaterial>(&m.model);
         mr && m.alpha_mode != AlphaMode::kOpaque)
       mark_used(mr->base_color_texture, used);
+  // KHR_materials_sheen keeps its roughness in the alpha channel.
+  for (const Material& m : scene.materials)
+    if (const auto* mr = std::get_if<MetallicRoughnessMaterial>(&m.model); mr && mr->has_sheen())
+      mark_used(mr->sheen_roughness_texture, used);
   return used;
 }
 
@@ -121,6 +125,11 @@ std::vector<bool> used_textures(const Scene& scene) {
             mark_used(model.base_color_texture, used);
             mark_used(model.metallic_roughness_texture, used);
             mark_used(model.occlusion_texture, used);
+            for (const TextureRef* r :
+                 {&model.clearcoat_texture, &model.clearcoat_roughness_texture,
+                  &model.clearcoat_normal_texture, &model.sheen_color_texture,
+                  &model.sheen_roughness_texture})
+              mark_used(*r, used);
           }
         },
         m.model);
@@ -210,7 +219,8 @@ SceneRasterizer::SceneRasterizer(const Scene& scene, RasterSettings settings)
   // The UV set of the normal map each mesh is drawn with, if any (the first one found).
   normal_map_uv_set_.assign(scene.meshes.size(), -1);
   for (const Instance& instance : scene.instances) {
-    const TextureRef& normal_map = scene.materials[scene.material_of(instance)].normal_texture;
+    const TextureRef& normal_map =
+        tangent_space_texture(scene.materials[scene.material_of(instance)]);
     if (normal_map.valid() && normal_map_uv_set_[instance.mesh] < 0)
       normal_map_uv_set_[instance.mesh] = int(normal_map.uv_set);
   }

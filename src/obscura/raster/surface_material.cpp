@@ -15,6 +15,10 @@ uint8_t uv_set_of(const TextureRef& ref) {
   return ref.uv_set == 1 ? 1 : 0;  // sets past 1 are not kept (the loader warns)
 }
 
+TextureSlot slot_of(const TextureRef& ref, const std::vector<const Texture*>& textures) {
+  return {texture_of(ref, textures), ref.transform, uv_set_of(ref)};
+}
+
 float ggx_alpha(float roughness) {
   float r = std::clamp(roughness, 0.f, 1.f);
   return r * r;
@@ -106,6 +110,25 @@ SurfaceMaterial compile_material(const Material& material,
     s.alpha_cutoff = material.alpha_cutoff;
     s.base_alpha = mr->alpha;
     s.alpha_texture = texture_of(mr->base_color_texture, alpha_textures);
+    // KHR_materials_clearcoat and _sheen (as the tracer: not over transmission).
+    if (s.model == SurfaceModel::kMetallicRoughness && mr->transmission == 0 &&
+        (mr->has_clearcoat() || mr->has_sheen())) {
+      s.model = SurfaceModel::kLayeredMetallicRoughness;
+      if (mr->has_clearcoat()) {
+        s.clearcoat = mr->clearcoat;
+        s.clearcoat_roughness = mr->clearcoat_roughness;
+        s.clearcoat_normal_scale = mr->clearcoat_normal_scale;
+        s.clearcoat_texture = slot_of(mr->clearcoat_texture, textures);
+        s.clearcoat_roughness_texture = slot_of(mr->clearcoat_roughness_texture, textures);
+        s.clearcoat_normal_texture = slot_of(mr->clearcoat_normal_texture, textures);
+      }
+      if (mr->has_sheen()) {
+        s.sheen_color = mr->sheen_color;
+        s.sheen_roughness = mr->sheen_roughness;
+        s.sheen_color_texture = slot_of(mr->sheen_color_texture, textures);
+        s.sheen_roughness_texture = slot_of(mr->sheen_roughness_texture, alpha_textures);
+      }
+    }
   }
   return s;
 }
@@ -132,10 +155,15 @@ SurfacePoint surface_point_untextured(const SurfaceMaterial& m, Rgb vertex_color
                                  : blinn_phong_lobe_normalization(p.shininess);
       break;
     case SurfaceModel::kMetallicRoughness:
+    case SurfaceModel::kLayeredMetallicRoughness:
       // The tracer's floor on α (twice its mirror threshold) keeps D finite in float.
       p.alpha = std::max(ggx_alpha(m.roughness), 2e-3f);
       p.specular =
           min(m.specular * (((m.ior - 1) / (m.ior + 1)) * ((m.ior - 1) / (m.ior + 1))), 1.f);
+      p.clearcoat = std::clamp(m.clearcoat, 0.f, 1.f);
+      p.coat_alpha = std::max(ggx_alpha(m.clearcoat_roughness), 2e-3f);
+      p.sheen = m.sheen_color;
+      p.sheen_alpha = shading::sheen_alpha(m.sheen_roughness);
       break;
     default:
       break;
@@ -147,6 +175,23 @@ SurfacePoint surface_point(const SurfaceMaterial& m, const FragmentUvs& uvs, Rgb
   Rgb color = vertex_color *
               sample_or_one(m.base_texture, m.base_transform, m.filter, uvs.set[m.base_uv_set]);
   const TextureCoordinates& occlusion_tc = uvs.set[m.occlusion_uv_set];
+  if (m.model == SurfaceModel::kLayeredMetallicRoughness) {
+    SurfaceMaterial textured = m;
+    Rgb mr = sample_or_one(m.metallic_roughness_texture, m.metallic_roughness_transform, m.filter,
+                           uvs.set[m.metallic_roughness_uv_set]);
+    textured.roughness *= mr.g;
+    textured.metallic *= mr.b;
+    textured.clearcoat *= sample_or_one(m.clearcoat_texture, m.filter, uvs).r;
+    textured.clearcoat_roughness *= sample_or_one(m.clearcoat_roughness_texture, m.filter, uvs).g;
+    textured.sheen_color *= sample_or_one(m.sheen_color_texture, m.filter, uvs);
+    textured.sheen_roughness *= sample_or_one(m.sheen_roughness_texture, m.filter, uvs).r;
+    SurfacePoint p = surface_point_untextured(textured, color);
+    p.occlusion =
+        m.occlusion_texture
+            ? sample_or_one(m.occlusion_texture, m.occlusion_transform, m.filter, occlusion_tc).r
+            : 1.f;
+    return p;
+  }
   if (m.model == SurfaceModel::kMetallicRoughness && m.metallic_roughness_texture) {
     Rgb mr = sample_or_one(m.metallic_roughness_texture, m.metallic_roughness_transform, m.filter,
                            uvs.set[m.metallic_roughness_uv_set]);
@@ -180,11 +225,24 @@ Rgb ambient_reflectance(const SurfacePoint& s, float n_dot_v) {
     case SurfaceModel::kBlinnPhong:
       r = s.base + s.specular;  // a normalized lobe reflects k_s of a uniform surround
       break;
-    case SurfaceModel::kMetallicRoughness: {
+    case SurfaceModel::kMetallicRoughness:
+    case SurfaceModel::kLayeredMetallicRoughness: {
       float f0 = std::max({s.specular.r, s.specular.g, s.specular.b});
       float fd = s.specular_strength * schlick(f0, n_dot_v);
       Rgb dielectric = s.base * (1 - fd) + schlick(s.specular, n_dot_v) * s.specular_strength;
       r = dielectric * (1 - s.metallic) + schlick(s.base, n_dot_v) * s.metallic;
+      if (s.model == SurfaceModel::kMetallicRoughness) break;
+      // The layers as for lights, their albedos at the shading normal's n·v: the sheen's
+      // (bounded at 1) replaces what it takes from the base, the coat's over both.
+      float sheen_max = std::max({s.sheen.r, s.sheen.g, s.sheen.b});
+      if (sheen_max > 0) {
+        float e = std::min(shading::sheen_albedo(n_dot_v, s.sheen_alpha), 1.f);
+        r = r * (1 - sheen_max * e) + s.sheen * e;
+      }
+      if (s.clearcoat > 0) {
+        float e = s.clearcoat * shading::ggx_schlick_albedo(0.04f, n_dot_v, s.coat_alpha);
+        r = r * (1 - e) + Rgb(e);
+      }
       break;
     }
     case SurfaceModel::kConductor:

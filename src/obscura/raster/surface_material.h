@@ -15,6 +15,9 @@
 //   transmission (glTF) KHR_materials_transmission is not refracted nor blended: its share is
 //                       shaded as the diffuse lobe, which is what a uniform surround seen through
 //                       glass tinted by the base colour looks like
+//   clearcoat, sheen    KHR_materials_clearcoat and _sheen: the tracer's layering
+//   (glTF)              (trace/layered_metallic_roughness_bsdf.h) for every light; the ambient
+//                       term takes the coat's albedo at the shading normal's n·v
 // Every material adds its emission (× emission texture) on its front face.
 #pragma once
 
@@ -26,6 +29,7 @@
 #include "obscura/raster/texture.h"
 #include "obscura/raster/varyings.h"
 #include "obscura/scene/material.h"
+#include "obscura/shading/charlie_sheen.h"
 #include "obscura/shading/ggx_energy.h"
 
 namespace obscura::raster {
@@ -38,12 +42,20 @@ enum class SurfaceModel : uint8_t {
   kMetallicRoughness,
   kConductor,
   kDielectric,
-  kUnlit  // shows its base colour, lit by nothing
+  kUnlit,                    // shows its base colour, lit by nothing
+  kLayeredMetallicRoughness  // kMetallicRoughness under a sheen and/or a clear coat
 };
 
 // Perfectly smooth conductors and glass reflect a punctual light in one direction only; the
 // rasterizer shades them with at least this GGX width (a highlight a few pixels across).
 inline constexpr float kMinHighlightAlpha = 0.02f;
+
+// A texture, its KHR_texture_transform map and its UV set (0 or 1), for the layers' textures.
+struct TextureSlot {
+  const Texture* texture = nullptr;
+  UvTransform transform;
+  uint8_t uv_set = 0;
+};
 
 struct SurfaceMaterial {
   SurfaceModel model = SurfaceModel::kLambert;
@@ -77,6 +89,13 @@ struct SurfaceMaterial {
   AlphaMode alpha_mode = AlphaMode::kOpaque;
   float base_alpha = 1, alpha_cutoff = 0.5f;
   const Texture* alpha_texture = nullptr;
+  // KHR_materials_clearcoat (R, G of its textures) and KHR_materials_sheen (RGB; the roughness
+  // from the alpha channel, held as grey like alpha_texture), for kLayeredMetallicRoughness.
+  float clearcoat = 0, clearcoat_roughness = 0, clearcoat_normal_scale = 1;
+  Rgb sheen_color;
+  float sheen_roughness = 0;
+  TextureSlot clearcoat_texture, clearcoat_roughness_texture, clearcoat_normal_texture,
+      sheen_color_texture, sheen_roughness_texture;
 };
 
 // `textures[i]` is the raster form of Scene::textures[i] (null where unused); `alpha_textures[i]`
@@ -106,6 +125,12 @@ struct SurfacePoint {
   Rgb eta, k, transmittance;
   Rgb multiple_scattering;  // conductor: the colour of its multiple-scattering lobe
   float occlusion;
+  // kLayeredMetallicRoughness: coat weight and GGX width, sheen colour and Charlie width, and
+  // the coat's own unit normal facing v (zero: the shading normal), set by the program.
+  float clearcoat, coat_alpha;
+  Rgb sheen;
+  float sheen_alpha;
+  Vector3f coat_normal;
 };
 
 OBSCURA_RASTER_INLINE Rgb sample_or_one(const Texture* t, const UvTransform& m,
@@ -137,6 +162,41 @@ SurfacePoint surface_point(const SurfaceMaterial& m, const FragmentUvs& uvs, Rgb
 // The same without textures (Gouraud shading at vertices).
 SurfacePoint surface_point_untextured(const SurfaceMaterial& m, Rgb vertex_color);
 
+OBSCURA_RASTER_INLINE Rgb sample_or_one(const TextureSlot& slot, TextureFilter filter,
+                                        const FragmentUvs& uvs) {
+  return sample_or_one(slot.texture, slot.transform, filter, uvs.set[slot.uv_set]);
+}
+
+// The sheen and the clear coat over a metallic-roughness point's f·cos θ_l (`base`), term for
+// term as trace/layered_metallic_roughness_bsdf.h has them.
+OBSCURA_RASTER_INLINE Rgb layered_cosine(const SurfacePoint& s, Rgb base, Vector3f n, Vector3f v,
+                                         Vector3f l, float n_dot_v, float n_dot_l) {
+  Rgb r = base;
+  float sheen_max = std::max({s.sheen.r, s.sheen.g, s.sheen.b});
+  if (sheen_max > 0) {
+    float e_v = shading::sheen_albedo(n_dot_v, s.sheen_alpha);
+    float e_l = shading::sheen_albedo(n_dot_l, s.sheen_alpha);
+    float scale = std::min(1 - sheen_max * std::min(e_v, 1.f), 1 - sheen_max * std::min(e_l, 1.f));
+    float lobe = shading::charlie_sheen(n_dot_v, n_dot_l, dot(n, normalize(v + l)), s.sheen_alpha) *
+                 shading::sheen_energy_bound(e_v, e_l);
+    r = r * scale + s.sheen * (lobe * n_dot_l);
+  }
+  if (s.clearcoat > 0) {
+    Vector3f nc = dot(s.coat_normal, s.coat_normal) > 0 ? s.coat_normal : n;
+    float c_v = dot(nc, v), c_l = dot(nc, l);
+    if (c_v > 0) {
+      constexpr float kCoatF0 = 0.04f;  // IOR 1.5
+      r = r * (1 - s.clearcoat * shading::ggx_schlick_albedo(kCoatF0, c_v, s.coat_alpha));
+      if (c_l > 0) {
+        Vector3f h = normalize(v + l);
+        r += Rgb(s.clearcoat * schlick(kCoatF0, dot(v, h)) *
+                 ggx_specular(c_v, c_l, dot(nc, h), s.coat_alpha) * c_l);
+      }
+    }
+  }
+  return r;
+}
+
 // f(v, l)·cos θ_l for unit n, v, l (n facing v); zero for light from behind.
 OBSCURA_RASTER_INLINE Rgb reflected_cosine(const SurfacePoint& s, Vector3f n, Vector3f v,
                                            Vector3f l) {
@@ -159,7 +219,8 @@ OBSCURA_RASTER_INLINE Rgb reflected_cosine(const SurfacePoint& s, Vector3f n, Ve
       float spec = lobe > 0 ? std::pow(lobe, s.shininess) * s.lobe_normalization : 0.f;
       return (s.base * kBrdfInvPi + s.specular * spec) * n_dot_l;
     }
-    case SurfaceModel::kMetallicRoughness: {
+    case SurfaceModel::kMetallicRoughness:
+    case SurfaceModel::kLayeredMetallicRoughness: {
       // The tracer's MetallicRoughnessBsdf term for term (its header has the formula).
       Vector3f h = normalize(v + l);
       float v_h = dot(v, h);
@@ -176,7 +237,10 @@ OBSCURA_RASTER_INLINE Rgb reflected_cosine(const SurfacePoint& s, Vector3f n, Ve
       Rgb metal =
           schlick(s.base, v_h) * lobe +
           shading::multiple_scattering_color(shading::schlick_average(s.base), s.alpha) * multiple;
-      return (dielectric * (1 - s.metallic) + metal * s.metallic) * n_dot_l;
+      Rgb r = (dielectric * (1 - s.metallic) + metal * s.metallic) * n_dot_l;
+      return s.model == SurfaceModel::kMetallicRoughness
+                 ? r
+                 : layered_cosine(s, r, n, v, l, n_dot_v, n_dot_l);
     }
     case SurfaceModel::kConductor: {
       Vector3f h = normalize(v + l);

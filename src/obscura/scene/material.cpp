@@ -21,6 +21,13 @@ std::string_view material_type_name(const MaterialModel& model) {
   return std::visit(TypeName{}, model);
 }
 
+const TextureRef& tangent_space_texture(const Material& material) {
+  const auto* mr = std::get_if<MetallicRoughnessMaterial>(&material.model);
+  return !material.normal_texture.valid() && mr && mr->has_clearcoat()
+             ? mr->clearcoat_normal_texture
+             : material.normal_texture;
+}
+
 Material diffuse_material(std::string name, Rgb reflectance, Rgb emission) {
   Material m;
   m.name = std::move(name);

@@ -71,9 +71,28 @@ struct MetallicRoughnessMaterial {
   float thickness = 0;
   Rgb attenuation_color{1.f};
   float attenuation_distance = std::numeric_limits<float>::infinity();
+  // KHR_materials_clearcoat: a clear GGX layer (F0 0.04) on top of everything else, with its own
+  // roughness and normal; its weight is clearcoat × the texture's R, its roughness
+  // clearcoat_roughness × the roughness texture's G. Without a coat normal map the coat keeps
+  // the mesh's own normal, even where the base has a normal map.
+  float clearcoat = 0;
+  TextureRef clearcoat_texture;
+  float clearcoat_roughness = 0;
+  TextureRef clearcoat_roughness_texture;
+  TextureRef clearcoat_normal_texture;
+  float clearcoat_normal_scale = 1;
+  // KHR_materials_sheen: a Charlie sheen layer over the base (under the coat): colour × the
+  // colour texture's RGB, roughness × the roughness texture's A. Black: no sheen.
+  Rgb sheen_color{0.f};
+  TextureRef sheen_color_texture;
+  float sheen_roughness = 0;
+  TextureRef sheen_roughness_texture;
 
+  bool has_clearcoat() const { return clearcoat > 0; }
+  bool has_sheen() const { return !sheen_color.is_black(); }
   bool purely_diffuse() const {
-    return metallic == 0 && transmission == 0 && (specular == 0 || specular_color.is_black());
+    return metallic == 0 && transmission == 0 && (specular == 0 || specular_color.is_black()) &&
+           !has_clearcoat() && !has_sheen();
   }
   bool has_volume() const { return transmission > 0 && thickness > 0; }
 };
@@ -106,6 +125,10 @@ struct Material {
 // A Lambertian material, emitting where `emission` is not black: the common case of scenes built
 // in code.
 Material diffuse_material(std::string name, Rgb reflectance, Rgb emission = {});
+
+// The normal map whose UV set the mesh's tangents are built for: the material's own, else its
+// clear coat's (an invalid reference where it has neither).
+const TextureRef& tangent_space_texture(const Material& material);
 
 // "diffuse", "phong", "conductor", "dielectric", "metallic-roughness", "emissive": the names the
 // JSON scene file uses.

@@ -77,6 +77,11 @@ void validate_material(const Material& m, const std::string& where, size_t textu
     check_texture(mr->base_color_texture, where, "base colour", texture_count);
     check_texture(mr->metallic_roughness_texture, where, "metallic-roughness", texture_count);
     check_texture(mr->occlusion_texture, where, "occlusion", texture_count);
+    check_texture(mr->clearcoat_texture, where, "clearcoat", texture_count);
+    check_texture(mr->clearcoat_roughness_texture, where, "clearcoat roughness", texture_count);
+    check_texture(mr->clearcoat_normal_texture, where, "clearcoat normal", texture_count);
+    check_texture(mr->sheen_color_texture, where, "sheen colour", texture_count);
+    check_texture(mr->sheen_roughness_texture, where, "sheen roughness", texture_count);
   }
   Rgb e = m.emission;
   if (!(std::isfinite(e.r) && std::isfinite(e.g) && std::isfinite(e.b)) || e.r < 0 || e.g < 0 ||

@@ -8,6 +8,7 @@
 #include "obscura/trace/dielectric_bsdf.h"
 #include "obscura/trace/fresnel.h"
 #include "obscura/trace/lambertian_bsdf.h"
+#include "obscura/trace/layered_metallic_roughness_bsdf.h"
 #include "obscura/trace/metallic_roughness_bsdf.h"
 #include "obscura/trace/phong_bsdf.h"
 #include "obscura/trace/transmissive_metallic_roughness_bsdf.h"
@@ -16,8 +17,9 @@ namespace obscura {
 
 class AnyBsdf {
  public:
-  using Model = std::variant<LambertianBsdf, PhongBsdf, ConductorBsdf, DielectricBsdf,
-                             MetallicRoughnessBsdf, TransmissiveMetallicRoughnessBsdf>;
+  using Model =
+      std::variant<LambertianBsdf, PhongBsdf, ConductorBsdf, DielectricBsdf, MetallicRoughnessBsdf,
+                   TransmissiveMetallicRoughnessBsdf, LayeredMetallicRoughnessBsdf>;
   template <class B>
   AnyBsdf(B bsdf) : model_(std::move(bsdf)) {}
 
@@ -29,6 +31,11 @@ class AnyBsdf {
   }
   std::optional<BsdfSample> sample(Vector3f wo, float uc, Point2f u) const {
     return std::visit([&](const auto& b) { return b.sample(wo, uc, u); }, model_);
+  }
+  // Tells the BSDF the local frame integrators evaluate it in (world ↔ local), once they have
+  // built it: a BSDF with a direction of its own (a clear coat's normal) expresses it there.
+  void orient(const ShadingFrame& frame) {
+    if (auto* layered = std::get_if<LayeredMetallicRoughnessBsdf>(&model_)) layered->orient(frame);
   }
   // Only delta lobes: light sampling cannot help, f() is always zero.
   bool is_delta() const {
@@ -61,6 +68,7 @@ inline Rgb AnyBsdf::albedo() const {
     Rgb operator()(const DielectricBsdf& b) const { return b.transmittance; }
     Rgb operator()(const MetallicRoughnessBsdf& b) const { return b.params.base_color; }
     Rgb operator()(const TransmissiveMetallicRoughnessBsdf& b) const { return b.base_color(); }
+    Rgb operator()(const LayeredMetallicRoughnessBsdf& b) const { return b.base.params.base_color; }
   };
   return std::visit(Visitor{}, model_);
 }

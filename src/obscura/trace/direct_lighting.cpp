@@ -28,6 +28,7 @@ Rgb DirectLightingIntegrator::radiance(const TraceScene& scene, const Ray& ray, 
   // (as Whitted and the path tracer do); light must arrive on the viewer's side of the geometry.
   Normal3f n = reflection_normal(*hit, wo);
   ShadingFrame frame = ShadingFrame::from_normal(to_vector(n));
+  bsdf.orient(frame);
   const Vector3f wo_local = frame.to_local(wo);
   const float side = dot(hit->geometric_normal, wo);
 

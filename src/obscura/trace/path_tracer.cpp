@@ -91,6 +91,7 @@ Rgb PathTracer::radiance(const TraceScene& scene, const Ray& camera_ray, Sampler
 
     AnyBsdf bsdf = material.bsdf_at(*hit);
     ShadingFrame frame = frame_for(*hit, bsdf, wo);
+    bsdf.orient(frame);
     Vector3f wo_local = frame.to_local(wo);
 
     // 3. Next-event estimation: a light sample, shadow ray, MIS weight against the BSDF.

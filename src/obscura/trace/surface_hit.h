@@ -13,10 +13,13 @@ struct SurfaceHit {
   Point3f position;
   Normal3f geometric_normal;  // unit, on the front side of the triangle's winding
   Normal3f shading_normal;    // unit, on the same side as geometric_normal; normal-mapped
-  Point2f uv;                 // texture coordinates (0 where the mesh has none)
-  Point2f uv1;                // the second set (TEXCOORD_1), likewise
-  Rgb vertex_color{1.f};      // interpolated COLOR_0 (white where the mesh has none)
-  float vertex_alpha = 1;     // interpolated COLOR_0 alpha: multiplies the alpha coverage
+  // KHR_materials_clearcoat: the coat's own unit normal, where it differs from shading_normal
+  // (a normal map on the base or on the coat); zero otherwise.
+  Vector3f coat_normal;
+  Point2f uv;              // texture coordinates (0 where the mesh has none)
+  Point2f uv1;             // the second set (TEXCOORD_1), likewise
+  Rgb vertex_color{1.f};   // interpolated COLOR_0 (white where the mesh has none)
+  float vertex_alpha = 1;  // interpolated COLOR_0 alpha: multiplies the alpha coverage
   uint32_t material = 0;
   uint32_t mesh = 0;       // the Embree geometry id: which mesh (instance) was hit
   uint32_t primitive = 0;  // triangle index within it

@@ -22,6 +22,8 @@ TraceMaterial::TraceMaterial(const Material& material, const std::vector<Texture
     alpha_ = mr->alpha;
     alpha_texture_ = mr->base_color_texture;
     unlit_ = mr->unlit;
+    coat_normal_ = textures && mr->has_clearcoat() &&
+                   (material.normal_texture.valid() || mr->clearcoat_normal_texture.valid());
     if (mr->has_volume() && std::isfinite(mr->attenuation_distance))
       for (int c = 0; c < 3; ++c)  // a black attenuation colour absorbs everything
         absorption_[c] =
@@ -60,11 +62,25 @@ Rgb TraceMaterial::texture_rgb(const TextureRef& ref, const SurfaceHit& hit) con
   return {v.x, v.y, v.z};
 }
 
+float TraceMaterial::texture_alpha(const TextureRef& ref, const SurfaceHit& hit) const {
+  if (!ref.valid() || !textures_) return 1;
+  return sample_texture((*textures_)[ref.texture], ref.transform(texture_uv(hit, ref.uv_set))).w;
+}
+
 Vector3f TraceMaterial::normal_mapped(const SurfaceHit& hit, Vector3f normal,
                                       Vector4f tangent) const {
   if (!has_normal_map()) return normal;
   Rgb texel = texture_rgb(normal_texture_, hit);
   return shading::perturbed_normal(normal, tangent, {texel.r, texel.g, texel.b}, normal_scale_);
+}
+
+Vector3f TraceMaterial::coat_normal_mapped(const SurfaceHit& hit, Vector3f normal,
+                                           Vector4f tangent) const {
+  const auto* mr = std::get_if<MetallicRoughnessMaterial>(&model_);
+  if (!mr || !mr->clearcoat_normal_texture.valid() || !textures_) return normal;
+  Rgb texel = texture_rgb(mr->clearcoat_normal_texture, hit);
+  return shading::perturbed_normal(normal, tangent, {texel.r, texel.g, texel.b},
+                                   mr->clearcoat_normal_scale);
 }
 
 AnyBsdf TraceMaterial::bsdf_at(const SurfaceHit& hit) const {
@@ -109,7 +125,23 @@ AnyBsdf TraceMaterial::bsdf_at(const SurfaceHit& hit) const {
         float t = m.transmission * self.texture_rgb(m.transmission_texture, hit).r;
         if (t > 0) return TransmissiveMetallicRoughnessBsdf(p, t, m.has_volume());
       }
-      return MetallicRoughnessBsdf(p);
+      // KHR_materials_clearcoat and _sheen (not over transmission: docs/scene-format.md).
+      LayerParameters layers;
+      if (m.has_clearcoat()) {
+        layers.clearcoat = m.clearcoat * self.texture_rgb(m.clearcoat_texture, hit).r;
+        layers.clearcoat_roughness =
+            m.clearcoat_roughness * self.texture_rgb(m.clearcoat_roughness_texture, hit).g;
+      }
+      if (m.has_sheen()) {
+        layers.sheen_color = m.sheen_color * self.texture_rgb(m.sheen_color_texture, hit);
+        layers.sheen_roughness =
+            m.sheen_roughness * self.texture_alpha(m.sheen_roughness_texture, hit);
+      }
+      if (layers.clearcoat <= 0 && layers.sheen_color.is_black()) return MetallicRoughnessBsdf(p);
+      LayeredMetallicRoughnessBsdf layered(p, layers);
+      if (layers.clearcoat > 0 && hit.coat_normal != Vector3f())
+        layered.set_coat_normal(hit.coat_normal, to_vector(hit.shading_normal));
+      return layered;
     }
     AnyBsdf operator()(const EmissiveMaterial&) const { return LambertianBsdf{Rgb(0.f)}; }
   };

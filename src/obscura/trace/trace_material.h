@@ -54,15 +54,22 @@ class TraceMaterial {
   // interpolated tangent (xyz, w = handedness), all in world space.
   bool has_normal_map() const { return normal_texture_.valid() && textures_; }
   Vector3f normal_mapped(const SurfaceHit& hit, Vector3f normal, Vector4f tangent) const;
+  // KHR_materials_clearcoat: whether the coat's normal can differ from the shading normal (the
+  // base or the coat has a normal map), and the coat's unit normal at `hit` from the same
+  // unperturbed normal and tangent: its own map's, or the unperturbed normal itself.
+  bool has_coat_normal() const { return coat_normal_; }
+  Vector3f coat_normal_mapped(const SurfaceHit& hit, Vector3f normal, Vector4f tangent) const;
 
  private:
   Rgb texture_rgb(const TextureRef& ref, const SurfaceHit& hit) const;
+  float texture_alpha(const TextureRef& ref, const SurfaceHit& hit) const;
 
   TextureRef emission_texture_;
   bool unlit_ = false;
   Rgb absorption_;  // σ_a per metre: −ln(attenuation_color) / attenuation_distance
   TextureRef normal_texture_;
   float normal_scale_ = 1;
+  bool coat_normal_ = false;
   AlphaMode alpha_mode_ = AlphaMode::kOpaque;
   float alpha_cutoff_ = 0.5f;
   float alpha_ = 1;           // the base colour factor's alpha

@@ -182,7 +182,8 @@ TraceScene::TraceScene(const Scene& scene, std::shared_ptr<const EmbreeDevice> d
   // instances draw one mesh with normal maps on different sets).
   normal_map_uv_set_.assign(scene.meshes.size(), -1);
   for (const Instance& instance : scene.instances) {
-    const TextureRef& normal_map = scene.materials[scene.material_of(instance)].normal_texture;
+    const TextureRef& normal_map =
+        tangent_space_texture(scene.materials[scene.material_of(instance)]);
     if (normal_map.valid() && normal_map_uv_set_[instance.mesh] < 0)
       normal_map_uv_set_[instance.mesh] = int(normal_map.uv_set);
   }
@@ -430,17 +431,25 @@ SurfaceHit TraceScene::surface_hit(const Ray& ray, const RayHit& hit) const {
     if (length_squared(interpolated) > 0) n = normalize(interpolated);
   }
   const TraceMaterial& material = materials_[place.material];
-  if (!mesh.tangents.empty() && material.has_normal_map()) {
+  if (!mesh.tangents.empty() && (material.has_normal_map() || material.has_coat_normal())) {
     Vector4f t =
         mesh.tangents[tri[0]] * b0 + mesh.tangents[tri[1]] * b1 + mesh.tangents[tri[2]] * b2;
     Vector3f tw(t.x, t.y, t.z);
     if (place.object_space) tw = apply(vector_to_world, tw);
     Vector3f g = to_vector(s.geometric_normal);
     Vector3f side = dot(n, g) < 0 ? -g : g;  // the interpolated normal's side of the surface
-    n = material.normal_mapped(s, n, Vector4f(tw.x, tw.y, tw.z, t.w * handedness));
-    // Shading below the geometric surface is kept just above it (shading/normal_map.h says
-    // how); rays still leave along the geometric normal.
-    n = shading::keep_above_surface(n, side);
+    Vector4f tangent(tw.x, tw.y, tw.z, t.w * handedness);
+    // A clear coat ignores the base's normal map (KHR_materials_clearcoat): its own, or none.
+    if (material.has_coat_normal())
+      s.coat_normal = to_vector(face_forward(
+          Normal3f(shading::keep_above_surface(material.coat_normal_mapped(s, n, tangent), side)),
+          g));
+    if (material.has_normal_map()) {
+      n = material.normal_mapped(s, n, tangent);
+      // Shading below the geometric surface is kept just above it (shading/normal_map.h says
+      // how); rays still leave along the geometric normal.
+      n = shading::keep_above_surface(n, side);
+    }
   }
   s.shading_normal = face_forward(Normal3f(n), to_vector(s.geometric_normal));
   return s;

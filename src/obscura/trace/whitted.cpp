@@ -54,6 +54,7 @@ Vertex shade(const TraceScene& scene, const Ray& ray, Sampler& sampler, RayCount
   AnyBsdf bsdf = material.bsdf_at(*hit);
   Normal3f n = bsdf.is_transmissive() ? hit->shading_normal : reflection_normal(*hit, wo);
   ShadingFrame frame = ShadingFrame::from_normal(to_vector(n));
+  bsdf.orient(frame);
   Vector3f wo_local = frame.to_local(wo);
 
   // 1. Direct light: one light sample and its shadow ray.
