@@ -31,7 +31,7 @@ constexpr int kSamples = 64;
 
 // The fidelity suite's "-lambert" reduction: metallic 0, roughness 1, no specular layer (so the
 // tracer's metallic-roughness BSDF is exactly Lambert on base colour × texture × COLOR_0), no
-// metallic-roughness or normal map, no transmission; alpha and emission kept.
+// metallic-roughness or normal map, no transmission, coat or sheen; alpha and emission kept.
 void reduce_to_lambert(Scene& scene) {
   for (Material& material : scene.materials) {
     material.normal_texture = {};
@@ -42,6 +42,8 @@ void reduce_to_lambert(Scene& scene) {
       mr->metallic_roughness_texture = {};
       mr->transmission = 0;
       mr->thickness = 0;
+      mr->clearcoat = 0;
+      mr->sheen_color = Rgb(0.f);
       ASSERT_TRUE(mr->purely_diffuse()) << material.name;
     }
   }
