@@ -20,6 +20,9 @@ void add_scene_choice_options(CLI::App& command, SceneChoiceOptions& options) {
   command.add_option("--gltf-scene", options.gltf_scene,
                      "The glTF scene to show, by index or name (default: the file's own choice, "
                      "else the first)");
+  command.add_option("--gltf-animation", options.gltf_animation,
+                     "The glTF animation that plays, by index or name (default: the first); "
+                     "--time says when in it");
 }
 
 Shutter shutter_at_time(const SceneChoiceOptions& options, const Shutter& shutter) {
@@ -30,7 +33,10 @@ Shutter shutter_at_time(const SceneChoiceOptions& options, const Shutter& shutte
 
 GltfLoadOptions gltf_load_options(const SceneChoiceOptions& options, const Shutter& shutter) {
   const Shutter at = shutter_at_time(options, shutter);
-  return {.scene = options.gltf_scene, .time_s = at.time_at(0.5), .exposure_s = at.duration_s()};
+  return {.scene = options.gltf_scene,
+          .animation = options.gltf_animation,
+          .time_s = at.time_at(0.5),
+          .exposure_s = at.duration_s()};
 }
 
 }  // namespace obscura::app

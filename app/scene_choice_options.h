@@ -15,6 +15,7 @@ namespace obscura::app {
 struct SceneChoiceOptions {
   std::optional<double> time_s;  // --time: the middle of the exposure
   std::string gltf_scene;        // --gltf-scene: an index or a name; empty = the file's default
+  std::string gltf_animation;    // --gltf-animation: an index or a name; empty = the first
 };
 
 void add_scene_choice_options(CLI::App& command, SceneChoiceOptions& options);

@@ -87,19 +87,18 @@ int morph_target_count(const tinygltf::Model& model, int node) {
 }
 
 NodeAnimations::NodeAnimations(const tinygltf::Model& model, const std::string& file,
-                               GltfAccessorReader& accessors, std::vector<std::string>& warnings)
+                               int animation_index, GltfAccessorReader& accessors,
+                               std::vector<std::string>& warnings)
     : model_(&model), file_(file), parent_(model.nodes.size(), -1) {
   for (size_t n = 0; n < model.nodes.size(); ++n)
     for (int child : model.nodes[n].children)
       if (child >= 0 && size_t(child) < parent_.size()) parent_[child] = int(n);
-  if (model.animations.empty()) return;
-  if (model.animations.size() > 1)
-    warnings.push_back(file + ": only the first of " + std::to_string(model.animations.size()) +
-                       " animations is used");
-  const tinygltf::Animation& animation = model.animations[0];
+  if (animation_index < 0 || size_t(animation_index) >= model.animations.size()) return;
+  const tinygltf::Animation& animation = model.animations[size_t(animation_index)];
+  const std::string animation_path = "animations[" + std::to_string(animation_index) + "]";
   for (size_t c = 0; c < animation.channels.size(); ++c) {
     const tinygltf::AnimationChannel& ch = animation.channels[c];
-    std::string channel_path = "animations[0].channels[" + std::to_string(c) + "]";
+    std::string channel_path = animation_path + ".channels[" + std::to_string(c) + "]";
     std::string where = file + ": " + channel_path;
     if (ch.target_node < 0 || size_t(ch.target_node) >= model.nodes.size())
       throw Error(where + ".target.node", "node index " + std::to_string(ch.target_node) +
@@ -128,7 +127,7 @@ NodeAnimations::NodeAnimations(const tinygltf::Model& model, const std::string& 
       continue;
     }
     const tinygltf::AnimationSampler& s = animation.samplers[size_t(ch.sampler)];
-    std::string sampler_path = "animations[0].samplers[" + std::to_string(ch.sampler) + "]";
+    std::string sampler_path = animation_path + ".samplers[" + std::to_string(ch.sampler) + "]";
     if (s.interpolation != "LINEAR" && s.interpolation != "STEP" &&
         s.interpolation != "CUBICSPLINE")
       throw Error(

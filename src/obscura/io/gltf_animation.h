@@ -47,11 +47,12 @@ class NodeAnimations {
   static constexpr size_t kMaxWorldKeys = size_t(1) << 20;
 
   NodeAnimations() = default;
-  // Reads animations[0]; unsupported channels are reported in `warnings`.
+  // Reads animations[animation_index] (none when it is −1, gltf_scene_choice.h chooses it);
+  // unsupported channels are reported in `warnings`.
   // Every accessor is read through `accessors` (which bounds and checks them); throws
   // obscura::Error for inconsistent samplers (counts, times that are not finite or do not
   // increase) and out-of-range node or sampler references.
-  NodeAnimations(const tinygltf::Model& model, const std::string& file,
+  NodeAnimations(const tinygltf::Model& model, const std::string& file, int animation_index,
                  GltfAccessorReader& accessors, std::vector<std::string>& warnings);
 
   // The node's local transform at `time` (its static TRS where no channel animates it).

@@ -265,7 +265,9 @@ Scene GltfImporter::import() {
   auto variants = model_.extensions.find("KHR_materials_variants");
   scene_.material_variants = read_gltf_material_variants(
       variants != model_.extensions.end() ? &variants->second : nullptr, file_);
-  animations_ = NodeAnimations(model_, file_, accessors_, scene_.warnings);
+  animations_ = NodeAnimations(
+      model_, file_, choose_gltf_animation(model_, options_.animation, file_, scene_.warnings),
+      accessors_, scene_.warnings);
   deformer_.emplace(model_, file_, accessors_, animations_);
   int scene_index = choose_gltf_scene(model_, options_.scene, file_);
   if (!model_.scenes.empty()) {

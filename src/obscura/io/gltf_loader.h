@@ -35,6 +35,8 @@ inline constexpr uint64_t kMaxGltfFileBytes = uint64_t(1) << 30;
 struct GltfLoadOptions {
   // The scene to show: its index ("1") or name; empty: the file's `scene`, else the first.
   std::string scene;
+  // The animation that plays: its index ("2") or name; empty: the first.
+  std::string animation;
   // When skins and morph targets are posed (seconds on the animation's clock); rigid node
   // animation is kept whole as keyframes for the renderers to sample over the shutter.
   double time_s = 0;

@@ -1,8 +1,10 @@
 // Which of a glTF file's scenes to show: the one the user names (`--gltf-scene N|NAME`), else
-// the file's `scene`, else the first.
+// the file's `scene`, else the first. Which animation plays: the one the user names
+// (`--gltf-animation N|NAME`), else the first.
 #pragma once
 
 #include <string>
+#include <vector>
 
 namespace tinygltf {
 class Model;
@@ -15,5 +17,10 @@ namespace obscura {
 // listing the scenes the file has when `choice` matches none of them.
 int choose_gltf_scene(const tinygltf::Model& model, const std::string& choice,
                       const std::string& file);
+
+// The index into model.animations (−1 when the file has none), chosen the same way; with no
+// choice and several animations, a warning names them and the option.
+int choose_gltf_animation(const tinygltf::Model& model, const std::string& choice,
+                          const std::string& file, std::vector<std::string>& warnings);
 
 }  // namespace obscura

@@ -28,6 +28,15 @@ std::string lower_extension(const std::string& path) {
   return ext;
 }
 
+// --gltf-scene and --gltf-animation choose inside a glTF file; anything else refuses them.
+void refuse_gltf_choices(const std::string& where, const GltfLoadOptions& gltf) {
+  if (!gltf.scene.empty())
+    throw Error(where, "--gltf-scene " + gltf.scene + " applies to glTF files (.gltf, .glb)");
+  if (!gltf.animation.empty())
+    throw Error(where,
+                "--gltf-animation " + gltf.animation + " applies to glTF files (.gltf, .glb)");
+}
+
 std::filesystem::path executable_directory() {
   std::error_code ec;
   std::filesystem::path exe = std::filesystem::read_symlink("/proc/self/exe", ec);
@@ -43,8 +52,7 @@ Scene load_model_file(const std::string& path, const GltfLoadOptions& gltf) {
     throw Error(path, "is a directory, not a model file");
   std::string ext = lower_extension(path);
   Scene scene;
-  if (!gltf.scene.empty() && ext != ".gltf" && ext != ".glb")
-    throw Error(path, "--gltf-scene " + gltf.scene + " applies to glTF files (.gltf, .glb)");
+  if (ext != ".gltf" && ext != ".glb") refuse_gltf_choices(path, gltf);
   if (ext == ".gltf" || ext == ".glb") scene = load_gltf(path, gltf);
   // Obscura's own readers for the common mesh formats: bounded, fast, and they fail with a
   // message where Assimp's asserts abort the process on hostile input.
@@ -67,8 +75,7 @@ Scene load_model_file(const std::string& path, const GltfLoadOptions& gltf) {
 Scene load_scene_file(const std::string& path, const GltfLoadOptions& gltf) {
   Scene scene;
   if (lower_extension(path) == ".json") {
-    if (!gltf.scene.empty())
-      throw Error(path, "--gltf-scene " + gltf.scene + " applies to glTF files (.gltf, .glb)");
+    refuse_gltf_choices(path, gltf);
     std::error_code ec;
     if (!std::filesystem::exists(path, ec)) throw Error(path, "scene file does not exist");
     scene = load_json_scene(path);  // chooses its own camera
@@ -114,8 +121,7 @@ Scene load_scene(const std::string& name_or_path, const GltfLoadOptions& gltf) {
   for (const BuiltinScene& b : builtins) {
     if (b.name != name) continue;
     if (b.file.empty()) {
-      if (!gltf.scene.empty())
-        throw Error(name, "--gltf-scene " + gltf.scene + " applies to glTF files (.gltf, .glb)");
+      refuse_gltf_choices(name, gltf);
       Scene scene = make_builtin_scene(name);
       scene.validate();
       return scene;
