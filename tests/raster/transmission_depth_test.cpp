@@ -96,5 +96,45 @@ TEST(RasterDepthPrecision, NearPlaneIsNotMovedPastGeometry) {
   EXPECT_EQ(ids.at(0, 0, 0), 1.f);
 }
 
+// A glTF transmissive surface (base colour tint, transmissionFactor 1, metallic 0) before an
+// emitter, no light else: it shows the emitter × tint × (1 − F(0°)), F(0°) = ((η−1)/(η+1))².
+TEST(RasterTransmission, ThinGlassShowsWhatLiesBehindTintedByItsBaseColour) {
+  for (int msaa : {1, 4}) {
+    Scene scene;
+    const Rgb emitted(0.9f, 0.6f, 0.3f), tint(0.2f, 0.8f, 0.5f);
+    MetallicRoughnessMaterial glass;
+    glass.base_color = tint;
+    glass.metallic = 0, glass.roughness = 0.5f;
+    glass.transmission = 1;
+    Material m;
+    m.name = "glass";
+    m.model = glass;
+    m.double_sided = true;
+    scene.materials = {label(emitted), m};
+    // The glass is listed first: it must still be drawn after what it shows.
+    scene.add_meshes({quad(1, 0.5f, 0.f), quad(0, 2.f, -1.f)});
+    scene.camera.world_from_camera = world_from_camera_look_at({0, 0, 5}, {0, 0, 0});
+    scene.camera.projection = Orthographic{2, 2};
+    scene.camera.film.width_px = scene.camera.film.height_px = kSize;
+    scene.camera.film.filter = BoxFilter{1e-6};
+    RasterSettings settings;
+    settings.msaa_samples = msaa;
+    settings.surface_lights = false;
+    SceneRasterizer rasterizer(scene, settings);
+    Film film(kSize, kSize);
+    rasterizer.render(scene.camera, film);
+    Image color = film.to_image();
+    const float exposure = float(scene.camera.exposure_scale());
+    const float f0 = 0.04f;  // η = 1.5
+    for (int y = 16; y < 32; ++y)
+      for (int x = 16; x < 32; ++x)
+        for (int c = 0; c < 3; ++c)
+          ASSERT_NEAR(color.at(x, y, c), emitted[c] * tint[c] * (1 - f0) * exposure, 1e-4f)
+              << x << ", " << y << " channel " << c << " msaa " << msaa;
+    // Outside the glass the emitter is seen directly.
+    EXPECT_NEAR(color.at(2, 2, 0), emitted.r * exposure, 1e-5f);
+  }
+}
+
 }  // namespace
 }  // namespace obscura::raster

@@ -121,6 +121,7 @@ std::vector<bool> used_textures(const Scene& scene) {
             mark_used(model.base_color_texture, used);
             mark_used(model.metallic_roughness_texture, used);
             mark_used(model.occlusion_texture, used);
+            if (model.transmission > 0) mark_used(model.transmission_texture, used);
           }
         },
         m.model);
@@ -195,6 +196,20 @@ Matrix4 crop_from_full_ndc(const Camera& camera) {
                                                       {0, 0, 1, 0},
                                                       {0, 0, 0, 1}}});
   return crop_ndc_from_raster * camera.raster_from_ndc();
+}
+
+// The target's colours resolved to one per pixel (the mean of its samples), row-major.
+std::vector<Rgb> resolved_colors(const RenderTarget& target) {
+  std::vector<Rgb> pixels(size_t(target.width()) * size_t(target.height()));
+  const int samples = target.samples();
+  tbb::parallel_for(0, target.height(), [&](int y) {
+    for (int x = 0; x < target.width(); ++x) {
+      Rgb sum;
+      for (int s = 0; s < samples; ++s) sum += target.color(target.sample_index(x, y, s));
+      pixels[size_t(y) * size_t(target.width()) + size_t(x)] = sum / float(samples);
+    }
+  });
+  return pixels;
 }
 
 // A perspective projection with its near and far planes moved in to the scene's bounds (seen
@@ -457,14 +472,25 @@ void SceneRasterizer::render_frame(const Camera& camera, const RasterFrame& fram
   base.flat = settings_.shading == ShadingMode::kFlat;
   base.force_blinn = settings_.shading == ShadingMode::kBlinnPhong;
 
-  // Opaque and cut-out surfaces first; blended ones over them.
-  std::vector<size_t> blended;
+  // Opaque and cut-out surfaces first; then transmissive ones, which show the frame drawn so far
+  // through them (as glTF's real-time viewers do: glass is not seen through glass); blended ones
+  // over everything.
+  std::vector<size_t> blended, transmissive;
   for (size_t i = 0; i < instances_.size(); ++i) {
-    if (materials_[instances_[i].material].alpha_mode == AlphaMode::kBlend) {
+    const SurfaceMaterial& m = materials_[instances_[i].material];
+    if (m.alpha_mode == AlphaMode::kBlend) {
       blended.push_back(i);
+    } else if (m.transmission > 0) {
+      transmissive.push_back(i);
     } else {
       draw_instance(target, base, clip_from_world, i, frame.time_s);
     }
+  }
+  std::vector<Rgb> behind;
+  if (!transmissive.empty()) {
+    behind = resolved_colors(target);
+    base.behind = {behind.data(), target.width()};
+    for (size_t i : transmissive) draw_instance(target, base, clip_from_world, i, frame.time_s);
   }
   if (!blended.empty()) draw_blended(target, base, clip_from_world, view, blended, frame.time_s);
 }

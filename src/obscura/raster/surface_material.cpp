@@ -97,6 +97,12 @@ SurfaceMaterial compile_material(const Material& material,
       s.metallic_roughness_texture = texture_of(m.metallic_roughness_texture, textures);
       s.metallic_roughness_transform = m.metallic_roughness_texture.transform;
       s.metallic_roughness_uv_set = uv_set_of(m.metallic_roughness_texture);
+      s.transmission = std::clamp(m.transmission, 0.f, 1.f);
+      if (s.transmission > 0) {
+        s.transmission_texture = texture_of(m.transmission_texture, textures);
+        s.transmission_transform = m.transmission_texture.transform;
+        s.transmission_uv_set = uv_set_of(m.transmission_texture);
+      }
     }
     void operator()(const EmissiveMaterial&) const { s.model = SurfaceModel::kBlack; }
   };
@@ -123,6 +129,7 @@ SurfacePoint surface_point_untextured(const SurfaceMaterial& m, Rgb vertex_color
   p.eta = m.eta, p.k = m.k, p.transmittance = m.transmittance;
   p.multiple_scattering = m.multiple_scattering;
   p.occlusion = 1;
+  p.transmission = m.transmission;
   switch (m.model) {
     case SurfaceModel::kPhong:
     case SurfaceModel::kBlinnPhong:
@@ -146,24 +153,25 @@ SurfacePoint surface_point_untextured(const SurfaceMaterial& m, Rgb vertex_color
 SurfacePoint surface_point(const SurfaceMaterial& m, const FragmentUvs& uvs, Rgb vertex_color) {
   Rgb color = vertex_color *
               sample_or_one(m.base_texture, m.base_transform, m.filter, uvs.set[m.base_uv_set]);
-  const TextureCoordinates& occlusion_tc = uvs.set[m.occlusion_uv_set];
+  SurfacePoint p;
   if (m.model == SurfaceModel::kMetallicRoughness && m.metallic_roughness_texture) {
     Rgb mr = sample_or_one(m.metallic_roughness_texture, m.metallic_roughness_transform, m.filter,
                            uvs.set[m.metallic_roughness_uv_set]);
     SurfaceMaterial textured = m;
     textured.roughness *= mr.g;
     textured.metallic *= mr.b;
-    SurfacePoint p = surface_point_untextured(textured, color);
-    p.occlusion =
-        m.occlusion_texture
-            ? sample_or_one(m.occlusion_texture, m.occlusion_transform, m.filter, occlusion_tc).r
-            : 1.f;
-    return p;
+    p = surface_point_untextured(textured, color);
+  } else {
+    p = surface_point_untextured(m, color);
   }
-  SurfacePoint p = surface_point_untextured(m, color);
   if (m.occlusion_texture)
-    p.occlusion =
-        sample_or_one(m.occlusion_texture, m.occlusion_transform, m.filter, occlusion_tc).r;
+    p.occlusion = sample_or_one(m.occlusion_texture, m.occlusion_transform, m.filter,
+                                uvs.set[m.occlusion_uv_set])
+                      .r;
+  if (m.transmission_texture)
+    p.transmission *= sample_or_one(m.transmission_texture, m.transmission_transform, m.filter,
+                                    uvs.set[m.transmission_uv_set])
+                          .r;
   return p;
 }
 

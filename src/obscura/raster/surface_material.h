@@ -12,9 +12,9 @@
 //                       refraction shows only as ambient light passing through
 //   emissive            reflects nothing
 //   unlit (glTF)        KHR_materials_unlit: base colour × texture × vertex colour, as it is
-//   transmission (glTF) KHR_materials_transmission is not refracted nor blended: its share is
-//                       shaded as the diffuse lobe, which is what a uniform surround seen through
-//                       glass tinted by the base colour looks like
+//   transmission (glTF) KHR_materials_transmission as real-time viewers draw it: a thin glass
+//                       wall (no refraction) that shows what was drawn behind it, tinted by the
+//                       base colour (scene_program.h, shade_transmission)
 // Every material adds its emission (× emission texture) on its front face.
 #pragma once
 
@@ -69,6 +69,11 @@ struct SurfaceMaterial {
   uint8_t base_uv_set = 0, metallic_roughness_uv_set = 0, occlusion_uv_set = 0, emission_uv_set = 0,
           normal_uv_set = 0;
   float normal_scale = 1;  // glTF normalTexture.scale
+  // KHR_materials_transmission (metallic-roughness): factor × texture (R); 0 for other models.
+  float transmission = 0;
+  const Texture* transmission_texture = nullptr;
+  UvTransform transmission_transform;
+  uint8_t transmission_uv_set = 0;
   TextureFilter filter = TextureFilter::kTrilinear;
   bool double_sided = true;
   // glTF alpha coverage, for metallic-roughness materials as in the tracer: the base colour
@@ -106,6 +111,7 @@ struct SurfacePoint {
   Rgb eta, k, transmittance;
   Rgb multiple_scattering;  // conductor: the colour of its multiple-scattering lobe
   float occlusion;
+  float transmission;  // KHR_materials_transmission, texture applied
 };
 
 OBSCURA_RASTER_INLINE Rgb sample_or_one(const Texture* t, const UvTransform& m,
