@@ -175,37 +175,74 @@ SurfacePoint surface_point(const SurfaceMaterial& m, const FragmentUvs& uvs, Rgb
   return p;
 }
 
-Rgb ambient_reflectance(const SurfacePoint& s, float n_dot_v) {
-  Rgb r;
+namespace {
+
+// The directional albedo of the GGX lobe with Schlick's Fresnel of normal reflectance f0 (per
+// channel): f0·E(μ) + (1 − f0)·E₅(μ), linear in f0.
+Rgb ggx_schlick_albedo(Rgb f0, float mu, float alpha) {
+  const float e = shading::ggx_albedo(mu, alpha), e5 = shading::ggx_schlick_albedo(0, mu, alpha);
+  return f0 * e + (Rgb(1.f) - f0) * e5;
+}
+
+}  // namespace
+
+EnvironmentResponse environment_response(const SurfacePoint& s, float n_dot_v) {
+  EnvironmentResponse r;
+  const float mu = std::clamp(n_dot_v, 1e-4f, 1.f);
   switch (s.model) {
     case SurfaceModel::kBlack:
     case SurfaceModel::kUnlit:
-      return {};
+      return r;
     case SurfaceModel::kLambert:
-      r = s.base;
+      r.diffuse = s.base;
       break;
     case SurfaceModel::kPhong:
     case SurfaceModel::kBlinnPhong:
-      r = s.base + s.specular;  // a normalized lobe reflects k_s of a uniform surround
+      // A normalized lobe reflects k_s of a uniform surround (at normal incidence, exactly).
+      r.diffuse = s.base, r.specular = s.specular;
+      r.roughness = std::sqrt(std::sqrt(2 / (s.shininess + 2)));
       break;
     case SurfaceModel::kMetallicRoughness: {
-      float f0 = std::max({s.specular.r, s.specular.g, s.specular.b});
-      float fd = s.specular_strength * schlick(f0, n_dot_v);
-      Rgb dielectric = s.base * (1 - fd) + schlick(s.specular, n_dot_v) * s.specular_strength;
-      r = dielectric * (1 - s.metallic) + schlick(s.base, n_dot_v) * s.metallic;
+      // The tracer's diffuse weight (1 − k·E_F(μ_v))(1 − k·E_F(μ_l)) / (1 − k·E_F,avg) reflects
+      // exactly 1 − k·E_F(μ_v) of a uniform surround.
+      const float f0 = std::max({s.specular.r, s.specular.g, s.specular.b});
+      const float left = 1 - s.specular_strength * shading::ggx_schlick_albedo(f0, mu, s.alpha);
+      const Rgb metal =
+          ggx_schlick_albedo(s.base, mu, s.alpha) +
+          shading::multiple_scattering_color(shading::schlick_average(s.base), s.alpha) *
+              (1 - shading::ggx_albedo(mu, s.alpha));
+      r.diffuse = s.base * (left * (1 - s.metallic));
+      r.specular =
+          ggx_schlick_albedo(s.specular, mu, s.alpha) * (s.specular_strength * (1 - s.metallic)) +
+          metal * s.metallic;
+      r.roughness = std::sqrt(s.alpha);
       break;
     }
     case SurfaceModel::kConductor:
-      r = fresnel_conductor_reflectance(n_dot_v, s.eta, s.k);
+      r.specular = ggx_schlick_albedo(fresnel_conductor_reflectance(1.f, s.eta, s.k), mu, s.alpha) +
+                   s.multiple_scattering * (1 - shading::ggx_albedo(mu, s.alpha));
+      r.roughness = std::sqrt(s.alpha);
       break;
     case SurfaceModel::kDielectric: {
       // Reflected surround plus the surround seen through the glass.
-      float f = fresnel_dielectric_reflectance(n_dot_v, s.ior);
-      r = Rgb(f) + s.transmittance * (1 - f);
+      const float f0 = ((s.ior - 1) / (s.ior + 1)) * ((s.ior - 1) / (s.ior + 1));
+      const float reflected = f0 * shading::ggx_albedo(mu, s.alpha) +
+                              (1 - f0) * shading::ggx_schlick_albedo(0, mu, s.alpha);
+      r.specular = Rgb(reflected);
+      r.transmitted = s.transmittance * (1 - reflected);
+      r.roughness = std::sqrt(s.alpha);
       break;
     }
   }
-  return r * s.occlusion;
+  r.diffuse = r.diffuse * s.occlusion;
+  r.specular = r.specular * s.occlusion;
+  r.transmitted = r.transmitted * s.occlusion;
+  return r;
+}
+
+Rgb ambient_reflectance(const SurfacePoint& s, float n_dot_v) {
+  EnvironmentResponse r = environment_response(s, n_dot_v);
+  return r.diffuse + r.specular + r.transmitted;
 }
 
 }  // namespace obscura::raster

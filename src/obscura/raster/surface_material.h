@@ -193,8 +193,22 @@ OBSCURA_RASTER_INLINE Rgb reflected_cosine(const SurfacePoint& s, Vector3f n, Ve
   return {};
 }
 
-// How much of a uniform ambient radiance the surface reflects towards v (its directional
-// albedo, approximated by Fresnel at n·v for the glossy models), occlusion texture applied.
+// How a surface point reflects light arriving from every direction (image-based lighting,
+// environment_lighting.h), split as the split-sum approximation splits it: `diffuse` weighs the
+// irradiance / π, `specular` the surround prefiltered by a GGX lobe of `roughness` about the
+// mirror direction, `transmitted` (glass) the same about −v. Each is a directional albedo of the
+// BRDF above, integrated over a uniform surround: the GGX and Schlick terms from the
+// shading/ggx_energy tables (numerical integration at startup), the diffuse weight and the
+// multiple-scattering lobe as the tracer's metallic-roughness BSDF has them, so that under a
+// uniform radiance L the sum × L is what the tracer converges to for a convex object. Phong's lobe
+// stands in as the GGX width √(2/(n+2)); conductors use Schlick with their own normal
+// reflectance. The occlusion texture multiplies all three.
+struct EnvironmentResponse {
+  Rgb diffuse, specular, transmitted;
+  float roughness = 1;
+};
+EnvironmentResponse environment_response(const SurfacePoint& s, float n_dot_v);
+// Their sum: the directional albedo, what a uniform surround of radiance 1 gives.
 Rgb ambient_reflectance(const SurfacePoint& s, float n_dot_v);
 
 }  // namespace obscura::raster
