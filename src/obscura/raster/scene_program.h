@@ -13,6 +13,7 @@
 
 #include "obscura/math/shading_normal.h"
 #include "obscura/raster/clip_transform.h"
+#include "obscura/raster/environment_lighting.h"
 #include "obscura/raster/lights.h"
 #include "obscura/raster/shaders.h"
 #include "obscura/raster/shadow_map.h"
@@ -67,12 +68,26 @@ struct InstanceUniforms {
   }
 };
 
+// The environment's light reflected towards v (image-based lighting: environment_lighting.h).
+OBSCURA_RASTER_INLINE Rgb environment_light(const SurfacePoint& s, const LightSet& lights,
+                                            Vector3f n, Vector3f v) {
+  const float n_dot_v = dot(n, v);
+  const EnvironmentResponse r = environment_response(s, n_dot_v);
+  if (!lights.environment) return (r.diffuse + r.specular + r.transmitted) * lights.ambient;
+  const EnvironmentLighting& env = *lights.environment;
+  Rgb c;
+  if (!r.diffuse.is_black()) c += r.diffuse * env.irradiance(n) * kBrdfInvPi;
+  if (!r.specular.is_black()) c += r.specular * env.prefiltered(n * (2 * n_dot_v) - v, r.roughness);
+  if (!r.transmitted.is_black()) c += r.transmitted * env.prefiltered(-v, r.roughness);
+  return c;
+}
+
 // Light reflected towards v at p by a surface point with unit normal n (facing v); `geometric`
 // is the true surface's normal facing v: light from behind it is blocked, as in the tracer.
 OBSCURA_RASTER_INLINE Rgb shade_surface(const SurfacePoint& s, const LightSet& lights,
                                         const FrameShadows& shadows, Point3f p, Vector3f n,
                                         Vector3f geometric, Vector3f v) {
-  Rgb sum = ambient_reflectance(s, dot(n, v)) * lights.ambient;
+  Rgb sum = environment_light(s, lights, n, v);
   auto add = [&](const IncidentLight& in, const ShadowMap* shadow) {
     if (dot(geometric, in.to_light) <= 0) return;
     Rgb r = in.strength * reflected_cosine(s, n, v, in.to_light);

@@ -347,6 +347,11 @@ SceneRasterizer::SceneRasterizer(const Scene& scene, RasterSettings settings)
       mean = environment_scale_ * (sum / float(weight));
     }
     lights_.ambient = mean;
+    environment_lighting_ = environment_map_.width > 0
+                                ? std::make_shared<const EnvironmentLighting>(
+                                      environment_map_, environment_scale_, environment_from_world_)
+                                : std::make_shared<const EnvironmentLighting>(environment_scale_);
+    lights_.environment = environment_lighting_.get();
   }
 }
 
