@@ -8,6 +8,7 @@
 #include <variant>
 
 #include "obscura/math/error.h"
+#include "obscura/raster/depth_range.h"
 #include "obscura/raster/msaa.h"
 #include "obscura/raster/pipeline.h"
 #include "obscura/raster/scene_program.h"
@@ -210,40 +211,6 @@ std::vector<Rgb> resolved_colors(const RenderTarget& target) {
     }
   });
   return pixels;
-}
-
-// A perspective projection with its near and far planes moved in to the scene's bounds (seen
-// from `camera_from_world`), where they lie outside them. Window depth is stored as a float,
-// and with depth ∝ 1 − n/z its resolution at distance z is about z²·2⁻²⁴/n: a glTF camera's near
-// plane of 0.06 mm (TransmissionTest) leaves surfaces 1.6 mm apart at 1.5 m fighting over each
-// pixel. Nothing lies between the camera's planes and the bounds, so clipping at the bounds
-// changes no pixel; only depth precision improves. Other projections are returned as they are.
-Matrix4 fit_depth_range(const Matrix4& projection, const Matrix4& camera_from_world,
-                        const Bounds3f& bounds) {
-  const Matrix4& p = projection;
-  // glFrustum's z and w rows (lens shifts and crops touch only the x and y rows).
-  if (bounds.empty() || p[2][0] != 0 || p[2][1] != 0 || p[3][0] != 0 || p[3][1] != 0 ||
-      p[3][2] != -1 || p[3][3] != 0)
-    return projection;
-  const double a = p[2][2], b = p[2][3];
-  if (!(a - 1 < 0) || !(b < 0)) return projection;
-  const double near = b / (a - 1), far = a + 1 < 0 ? b / (a + 1) : HUGE_VAL;  // a = −1: infinite
-  double nearest = HUGE_VAL, farthest = 0;
-  for (int c = 0; c < 8; ++c) {  // view depth is affine, so its extremes are at corners
-    const Point3f q((c & 1 ? bounds.max : bounds.min).x, (c & 2 ? bounds.max : bounds.min).y,
-                    (c & 4 ? bounds.max : bounds.min).z);
-    const double depth = -(camera_from_world[2][0] * q.x + camera_from_world[2][1] * q.y +
-                           camera_from_world[2][2] * q.z + camera_from_world[2][3]);
-    nearest = std::min(nearest, depth), farthest = std::max(farthest, depth);
-  }
-  // A margin for motion between keys and float rounding; the planes never move outwards.
-  const double margin = 0.01 * (farthest - nearest) + 1e-6 * farthest;
-  const double n = std::max(near, nearest - margin), f = std::min(far, farthest + margin);
-  if (!(n < f) || !std::isfinite(f) || (n == near && f == far)) return projection;
-  Matrix4 fitted = projection;
-  fitted[2][2] = -(f + n) / (f - n);
-  fitted[2][3] = -2 * f * n / (f - n);
-  return fitted;
 }
 
 }  // namespace
