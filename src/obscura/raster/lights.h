@@ -45,8 +45,12 @@ struct SurfaceLight {
   bool one_sided = true;
 };
 
+class EnvironmentLighting;  // environment_lighting.h
+
 struct LightSet {
   Rgb ambient;  // multiplies the material's ambient colour
+  // The environment as image-based lighting (null: `ambient` from every direction).
+  const EnvironmentLighting* environment = nullptr;
   std::vector<DirectionalLight> directional;
   std::vector<PointLight> point;
   std::vector<SpotLight> spot;

@@ -13,6 +13,7 @@
 
 #include "obscura/math/shading_normal.h"
 #include "obscura/raster/clip_transform.h"
+#include "obscura/raster/environment_lighting.h"
 #include "obscura/raster/lights.h"
 #include "obscura/raster/shaders.h"
 #include "obscura/raster/shadow_map.h"
@@ -26,6 +27,13 @@ namespace obscura::raster {
 // remaining lights cast no shadows).
 struct FrameShadows {
   std::span<const ShadowMap> directional, spot;
+};
+
+// The frame as drawn before the transmissive surfaces (exposed radiance, one colour per pixel,
+// row-major over the target), which those surfaces show through them; null before it exists.
+struct BehindImage {
+  const Rgb* pixels = nullptr;
+  int width = 0;
 };
 
 // What every draw of one instance shares.
@@ -44,6 +52,7 @@ struct InstanceUniforms {
   float exposure = 1;        // the camera's exposure scale, applied to everything drawn
   bool flat = false;         // flat shading: the face normal instead of the interpolated one
   bool force_blinn = false;  // shade Phong materials with the half-vector lobe
+  BehindImage behind;        // for KHR_materials_transmission
 
   OBSCURA_RASTER_INLINE Vector3f view_direction(Point3f p) const {
     return eye_at_infinity ? to_viewer : normalize(eye - p);
@@ -59,12 +68,31 @@ struct InstanceUniforms {
   }
 };
 
+// The environment's light reflected towards v (image-based lighting: environment_lighting.h).
+OBSCURA_RASTER_INLINE Rgb environment_light(const SurfacePoint& s, const LightSet& lights,
+                                            Vector3f n, Vector3f v) {
+  const float n_dot_v = dot(n, v);
+  const EnvironmentResponse r = environment_response(s, n_dot_v);
+  if (!lights.environment)
+    return (r.diffuse + r.specular + r.transmitted + r.coat) * lights.ambient;
+  const EnvironmentLighting& env = *lights.environment;
+  Rgb c;
+  if (!r.diffuse.is_black()) c += r.diffuse * env.irradiance(n) * kBrdfInvPi;
+  if (!r.specular.is_black()) c += r.specular * env.prefiltered(n * (2 * n_dot_v) - v, r.roughness);
+  if (!r.transmitted.is_black()) c += r.transmitted * env.prefiltered(-v, r.roughness);
+  if (!r.coat.is_black()) {
+    const Vector3f coat_n = s.coat_normal == Vector3f() ? n : s.coat_normal;
+    c += r.coat * env.prefiltered(coat_n * (2 * dot(coat_n, v)) - v, r.coat_roughness);
+  }
+  return c;
+}
+
 // Light reflected towards v at p by a surface point with unit normal n (facing v); `geometric`
 // is the true surface's normal facing v: light from behind it is blocked, as in the tracer.
 OBSCURA_RASTER_INLINE Rgb shade_surface(const SurfacePoint& s, const LightSet& lights,
                                         const FrameShadows& shadows, Point3f p, Vector3f n,
                                         Vector3f geometric, Vector3f v) {
-  Rgb sum = ambient_reflectance(s, dot(n, v)) * lights.ambient;
+  Rgb sum = environment_light(s, lights, n, v);
   auto add = [&](const IncidentLight& in, const ShadowMap* shadow) {
     if (dot(geometric, in.to_light) <= 0) return;
     Rgb r = in.strength * reflected_cosine(s, n, v, in.to_light);
@@ -79,6 +107,31 @@ OBSCURA_RASTER_INLINE Rgb shade_surface(const SurfacePoint& s, const LightSet& l
     add(incident(lights.spot[i], p), i < shadows.spot.size() ? &shadows.spot[i] : nullptr);
   for (const SurfaceLight& l : lights.surface) add(incident(l, p), nullptr);
   return sum;
+}
+
+// KHR_materials_transmission as glTF's real-time viewers draw it, split as the tracer's
+// TransmissiveMetallicRoughnessBsdf splits it: (1 − w)·opaque + w·glass with w = (1 − metallic)·T,
+// `opaque` the material at metallic/(1 − w) and `glass` a thin dielectric wall that reflects
+// lights and surround with the dielectric Fresnel F and the GGX lobe, and lets (1 − F) × base
+// colour of `behind` (the radiance drawn behind it, unexposed) through. Behind is looked up at
+// the fragment's own pixel: no refraction offset and no blur for rough glass.
+OBSCURA_RASTER_INLINE Rgb shade_transmissive(const SurfacePoint& s, const LightSet& lights,
+                                             const FrameShadows& shadows, Point3f p, Vector3f n,
+                                             Vector3f geometric, Vector3f v, Rgb behind) {
+  const float w = std::clamp((1 - s.metallic) * s.transmission, 0.f, 1.f);
+  SurfacePoint glass = s;
+  glass.model = SurfaceModel::kDielectric;
+  glass.alpha = std::max(s.alpha, kMinHighlightAlpha);
+  glass.transmittance = Rgb(0.f);  // the light let through is `behind`, added here
+  const float f = fresnel_dielectric_reflectance(dot(n, v), s.ior);
+  Rgb c =
+      (shade_surface(glass, lights, shadows, p, n, geometric, v) + behind * s.base * (1 - f)) * w;
+  if (w < 1) {
+    SurfacePoint opaque = s;
+    opaque.metallic = s.metallic / (1 - w);
+    c += shade_surface(opaque, lights, shadows, p, n, geometric, v) * (1 - w);
+  }
+  return c;
 }
 
 OBSCURA_RASTER_INLINE Vector3f face_towards(Vector3f n, Vector3f v) {
@@ -144,9 +197,21 @@ struct ScenePixelProgram {
       s.model = SurfaceModel::kBlinnPhong;
       s.lobe_normalization = blinn_phong_lobe_normalization(s.shininess);
     }
-    Rgb c = s.model == SurfaceModel::kUnlit
-                ? s.base
-                : shade_surface(s, *uniforms.lights, uniforms.shadows, a.position, n, geometric, v);
+    Rgb c;
+    if (s.model == SurfaceModel::kUnlit) {
+      c = s.base;
+    } else if (s.transmission > 0 && s.model == SurfaceModel::kMetallicRoughness) {
+      // Behind is exposed radiance (the surround stands in where none was drawn yet).
+      const BehindImage& b = uniforms.behind;
+      Rgb behind = b.pixels && uniforms.exposure > 0
+                       ? b.pixels[size_t(info.y) * size_t(b.width) + size_t(info.x)] *
+                             (1 / uniforms.exposure)
+                       : uniforms.lights->ambient;
+      c = shade_transmissive(s, *uniforms.lights, uniforms.shadows, a.position, n, geometric, v,
+                             behind);
+    } else {
+      c = shade_surface(s, *uniforms.lights, uniforms.shadows, a.position, n, geometric, v);
+    }
     if (info.front_facing)
       c += m.emission * sample_or_one(m.emission_texture, m.emission_transform, m.filter,
                                       uvs.set[m.emission_uv_set]);
@@ -197,8 +262,11 @@ struct SceneGouraudProgram {
       s.model = SurfaceModel::kBlinnPhong;
       s.lobe_normalization = blinn_phong_lobe_normalization(s.shininess);
     }
-    Rgb lit = s.model == SurfaceModel::kUnlit
-                  ? s.base
+    // Transmission: lit at the vertex, with the uniform surround seen through the glass.
+    Rgb lit = s.model == SurfaceModel::kUnlit ? s.base
+              : s.transmission > 0 && s.model == SurfaceModel::kMetallicRoughness
+                  ? shade_transmissive(s, *uniforms.lights, uniforms.shadows, p, n, n, v,
+                                       uniforms.lights->ambient)
                   : shade_surface(s, *uniforms.lights, uniforms.shadows, p, n, n, v);
     return {uniforms.clip_from_object(m.position), {p, n, m.uv.x, m.uv.y, lit, m.uv1.x, m.uv1.y}};
   }

@@ -8,6 +8,7 @@
 #include <variant>
 
 #include "obscura/math/error.h"
+#include "obscura/raster/depth_range.h"
 #include "obscura/raster/msaa.h"
 #include "obscura/raster/pipeline.h"
 #include "obscura/raster/scene_program.h"
@@ -130,6 +131,7 @@ std::vector<bool> used_textures(const Scene& scene) {
                   &model.clearcoat_normal_texture, &model.sheen_color_texture,
                   &model.sheen_roughness_texture})
               mark_used(*r, used);
+            if (model.transmission > 0) mark_used(model.transmission_texture, used);
           }
         },
         m.model);
@@ -204,6 +206,20 @@ Matrix4 crop_from_full_ndc(const Camera& camera) {
                                                       {0, 0, 1, 0},
                                                       {0, 0, 0, 1}}});
   return crop_ndc_from_raster * camera.raster_from_ndc();
+}
+
+// The target's colours resolved to one per pixel (the mean of its samples), row-major.
+std::vector<Rgb> resolved_colors(const RenderTarget& target) {
+  std::vector<Rgb> pixels(size_t(target.width()) * size_t(target.height()));
+  const int samples = target.samples();
+  tbb::parallel_for(0, target.height(), [&](int y) {
+    for (int x = 0; x < target.width(); ++x) {
+      Rgb sum;
+      for (int s = 0; s < samples; ++s) sum += target.color(target.sample_index(x, y, s));
+      pixels[size_t(y) * size_t(target.width()) + size_t(x)] = sum / float(samples);
+    }
+  });
+  return pixels;
 }
 
 }  // namespace
@@ -308,6 +324,11 @@ SceneRasterizer::SceneRasterizer(const Scene& scene, RasterSettings settings)
       mean = environment_scale_ * (sum / float(weight));
     }
     lights_.ambient = mean;
+    environment_lighting_ = environment_map_.width > 0
+                                ? std::make_shared<const EnvironmentLighting>(
+                                      environment_map_, environment_scale_, environment_from_world_)
+                                : std::make_shared<const EnvironmentLighting>(environment_scale_);
+    lights_.environment = environment_lighting_.get();
   }
 }
 
@@ -393,7 +414,8 @@ void SceneRasterizer::render_frame(const Camera& camera, const RasterFrame& fram
                     std::to_string(crop.width()) + "x" + std::to_string(crop.height()) + ")");
   const Matrix4 view = frame.view ? *frame.view : camera.view_matrix(frame.time_s);
   const Matrix4 projection = frame.projection ? *frame.projection : camera.projection_matrix();
-  const Matrix4 clip_from_world = crop_from_full_ndc(camera) * projection * view;
+  const Matrix4 clip_from_world =
+      crop_from_full_ndc(camera) * fit_depth_range(projection, view, bounds_) * view;
   std::optional<Matrix4> world_from_clip = inverse(clip_from_world);
   std::optional<Matrix4> world_from_camera = inverse(view);
   if (!world_from_clip || !world_from_camera)
@@ -432,14 +454,25 @@ void SceneRasterizer::render_frame(const Camera& camera, const RasterFrame& fram
   base.flat = settings_.shading == ShadingMode::kFlat;
   base.force_blinn = settings_.shading == ShadingMode::kBlinnPhong;
 
-  // Opaque and cut-out surfaces first; blended ones over them.
-  std::vector<size_t> blended;
+  // Opaque and cut-out surfaces first; then transmissive ones, which show the frame drawn so far
+  // through them (as glTF's real-time viewers do: glass is not seen through glass); blended ones
+  // over everything.
+  std::vector<size_t> blended, transmissive;
   for (size_t i = 0; i < instances_.size(); ++i) {
-    if (materials_[instances_[i].material].alpha_mode == AlphaMode::kBlend) {
+    const SurfaceMaterial& m = materials_[instances_[i].material];
+    if (m.alpha_mode == AlphaMode::kBlend) {
       blended.push_back(i);
+    } else if (m.transmission > 0) {
+      transmissive.push_back(i);
     } else {
       draw_instance(target, base, clip_from_world, i, frame.time_s);
     }
+  }
+  std::vector<Rgb> behind;
+  if (!transmissive.empty()) {
+    behind = resolved_colors(target);
+    base.behind = {behind.data(), target.width()};
+    for (size_t i : transmissive) draw_instance(target, base, clip_from_world, i, frame.time_s);
   }
   if (!blended.empty()) draw_blended(target, base, clip_from_world, view, blended, frame.time_s);
 }

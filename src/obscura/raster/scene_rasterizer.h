@@ -4,7 +4,7 @@
 // Compiled once from the authoring scene: one object-space vertex array per mesh, one
 // SurfaceMaterial per material (textures as mipmapped raster textures), the lights (point, spot
 // and directional as they are; every emissive instance also as a SurfaceLight, the area light
-// seen as a point; the environment as a constant ambient equal to its mean radiance, and as the
+// seen as a point; the environment as image-based lighting (environment_lighting.h) and as the
 // background). Directional and spot lights cast shadows through shadow maps rendered per frame;
 // point and surface lights do not. Then any number of frames, each at one shutter time and
 // optionally with the camera's matrices replaced (jittered lens positions for accumulated depth of
@@ -12,6 +12,7 @@
 #pragma once
 
 #include <map>
+#include <memory>
 #include <optional>
 #include <span>
 #include <string>
@@ -22,6 +23,7 @@
 #include "obscura/film/film.h"
 #include "obscura/film/image.h"
 #include "obscura/math/matrix4.h"
+#include "obscura/raster/environment_lighting.h"
 #include "obscura/raster/lights.h"
 #include "obscura/raster/render_target.h"
 #include "obscura/raster/shaders.h"
@@ -120,6 +122,8 @@ class SceneRasterizer {
   Image environment_map_;
   Rgb environment_scale_;
   Transform environment_from_world_;
+  // Its image-based lighting, which lights_.environment points to (shared: copies keep it).
+  std::shared_ptr<const EnvironmentLighting> environment_lighting_;
   std::vector<std::string> warnings_;
 };
 

@@ -101,6 +101,12 @@ SurfaceMaterial compile_material(const Material& material,
       s.metallic_roughness_texture = texture_of(m.metallic_roughness_texture, textures);
       s.metallic_roughness_transform = m.metallic_roughness_texture.transform;
       s.metallic_roughness_uv_set = uv_set_of(m.metallic_roughness_texture);
+      s.transmission = std::clamp(m.transmission, 0.f, 1.f);
+      if (s.transmission > 0) {
+        s.transmission_texture = texture_of(m.transmission_texture, textures);
+        s.transmission_transform = m.transmission_texture.transform;
+        s.transmission_uv_set = uv_set_of(m.transmission_texture);
+      }
     }
     void operator()(const EmissiveMaterial&) const { s.model = SurfaceModel::kBlack; }
   };
@@ -146,6 +152,7 @@ SurfacePoint surface_point_untextured(const SurfaceMaterial& m, Rgb vertex_color
   p.eta = m.eta, p.k = m.k, p.transmittance = m.transmittance;
   p.multiple_scattering = m.multiple_scattering;
   p.occlusion = 1;
+  p.transmission = m.transmission;
   switch (m.model) {
     case SurfaceModel::kPhong:
     case SurfaceModel::kBlinnPhong:
@@ -174,7 +181,7 @@ SurfacePoint surface_point_untextured(const SurfaceMaterial& m, Rgb vertex_color
 SurfacePoint surface_point(const SurfaceMaterial& m, const FragmentUvs& uvs, Rgb vertex_color) {
   Rgb color = vertex_color *
               sample_or_one(m.base_texture, m.base_transform, m.filter, uvs.set[m.base_uv_set]);
-  const TextureCoordinates& occlusion_tc = uvs.set[m.occlusion_uv_set];
+  SurfacePoint p;
   if (m.model == SurfaceModel::kLayeredMetallicRoughness) {
     SurfaceMaterial textured = m;
     Rgb mr = sample_or_one(m.metallic_roughness_texture, m.metallic_roughness_transform, m.filter,
@@ -185,77 +192,115 @@ SurfacePoint surface_point(const SurfaceMaterial& m, const FragmentUvs& uvs, Rgb
     textured.clearcoat_roughness *= sample_or_one(m.clearcoat_roughness_texture, m.filter, uvs).g;
     textured.sheen_color *= sample_or_one(m.sheen_color_texture, m.filter, uvs);
     textured.sheen_roughness *= sample_or_one(m.sheen_roughness_texture, m.filter, uvs).r;
-    SurfacePoint p = surface_point_untextured(textured, color);
-    p.occlusion =
-        m.occlusion_texture
-            ? sample_or_one(m.occlusion_texture, m.occlusion_transform, m.filter, occlusion_tc).r
-            : 1.f;
-    return p;
-  }
-  if (m.model == SurfaceModel::kMetallicRoughness && m.metallic_roughness_texture) {
+    p = surface_point_untextured(textured, color);
+  } else if (m.model == SurfaceModel::kMetallicRoughness && m.metallic_roughness_texture) {
     Rgb mr = sample_or_one(m.metallic_roughness_texture, m.metallic_roughness_transform, m.filter,
                            uvs.set[m.metallic_roughness_uv_set]);
     SurfaceMaterial textured = m;
     textured.roughness *= mr.g;
     textured.metallic *= mr.b;
-    SurfacePoint p = surface_point_untextured(textured, color);
-    p.occlusion =
-        m.occlusion_texture
-            ? sample_or_one(m.occlusion_texture, m.occlusion_transform, m.filter, occlusion_tc).r
-            : 1.f;
-    return p;
+    p = surface_point_untextured(textured, color);
+  } else {
+    p = surface_point_untextured(m, color);
   }
-  SurfacePoint p = surface_point_untextured(m, color);
   if (m.occlusion_texture)
-    p.occlusion =
-        sample_or_one(m.occlusion_texture, m.occlusion_transform, m.filter, occlusion_tc).r;
+    p.occlusion = sample_or_one(m.occlusion_texture, m.occlusion_transform, m.filter,
+                                uvs.set[m.occlusion_uv_set])
+                      .r;
+  if (m.transmission_texture)
+    p.transmission *= sample_or_one(m.transmission_texture, m.transmission_transform, m.filter,
+                                    uvs.set[m.transmission_uv_set])
+                          .r;
   return p;
 }
 
-Rgb ambient_reflectance(const SurfacePoint& s, float n_dot_v) {
-  Rgb r;
+namespace {
+
+// The directional albedo of the GGX lobe with Schlick's Fresnel of normal reflectance f0 (per
+// channel): f0·E(μ) + (1 − f0)·E₅(μ), linear in f0.
+Rgb ggx_schlick_albedo(Rgb f0, float mu, float alpha) {
+  const float e = shading::ggx_albedo(mu, alpha), e5 = shading::ggx_schlick_albedo(0, mu, alpha);
+  return f0 * e + (Rgb(1.f) - f0) * e5;
+}
+
+}  // namespace
+
+EnvironmentResponse environment_response(const SurfacePoint& s, float n_dot_v) {
+  EnvironmentResponse r;
+  const float mu = std::clamp(n_dot_v, 1e-4f, 1.f);
   switch (s.model) {
     case SurfaceModel::kBlack:
     case SurfaceModel::kUnlit:
-      return {};
+      return r;
     case SurfaceModel::kLambert:
-      r = s.base;
+      r.diffuse = s.base;
       break;
     case SurfaceModel::kPhong:
     case SurfaceModel::kBlinnPhong:
-      r = s.base + s.specular;  // a normalized lobe reflects k_s of a uniform surround
+      // A normalized lobe reflects k_s of a uniform surround (at normal incidence, exactly).
+      r.diffuse = s.base, r.specular = s.specular;
+      r.roughness = std::sqrt(std::sqrt(2 / (s.shininess + 2)));
       break;
     case SurfaceModel::kMetallicRoughness:
     case SurfaceModel::kLayeredMetallicRoughness: {
-      float f0 = std::max({s.specular.r, s.specular.g, s.specular.b});
-      float fd = s.specular_strength * schlick(f0, n_dot_v);
-      Rgb dielectric = s.base * (1 - fd) + schlick(s.specular, n_dot_v) * s.specular_strength;
-      r = dielectric * (1 - s.metallic) + schlick(s.base, n_dot_v) * s.metallic;
+      // The tracer's diffuse weight (1 − k·E_F(μ_v))(1 − k·E_F(μ_l)) / (1 − k·E_F,avg) reflects
+      // exactly 1 − k·E_F(μ_v) of a uniform surround.
+      const float f0 = std::max({s.specular.r, s.specular.g, s.specular.b});
+      const float left = 1 - s.specular_strength * shading::ggx_schlick_albedo(f0, mu, s.alpha);
+      const Rgb metal =
+          ggx_schlick_albedo(s.base, mu, s.alpha) +
+          shading::multiple_scattering_color(shading::schlick_average(s.base), s.alpha) *
+              (1 - shading::ggx_albedo(mu, s.alpha));
+      r.diffuse = s.base * (left * (1 - s.metallic));
+      r.specular =
+          ggx_schlick_albedo(s.specular, mu, s.alpha) * (s.specular_strength * (1 - s.metallic)) +
+          metal * s.metallic;
+      r.roughness = std::sqrt(s.alpha);
       if (s.model == SurfaceModel::kMetallicRoughness) break;
-      // The layers as for lights, their albedos at the shading normal's n·v: the sheen's
-      // (bounded at 1) replaces what it takes from the base, the coat's over both.
-      float sheen_max = std::max({s.sheen.r, s.sheen.g, s.sheen.b});
+      // The layers as for lights, their albedos at the shading normal's n·v: the sheen (bounded
+      // at 1, broad, so lit by the irradiance) takes its share from what lies beneath, and the
+      // coat from both, reflecting the surround itself at its own roughness.
+      const float sheen_max = std::max({s.sheen.r, s.sheen.g, s.sheen.b});
       if (sheen_max > 0) {
-        float e = std::min(shading::sheen_albedo(n_dot_v, s.sheen_alpha), 1.f);
-        r = r * (1 - sheen_max * e) + s.sheen * e;
+        const float e = std::min(shading::sheen_albedo(mu, s.sheen_alpha), 1.f);
+        r.diffuse = r.diffuse * (1 - sheen_max * e) + s.sheen * e;
+        r.specular = r.specular * (1 - sheen_max * e);
       }
       if (s.clearcoat > 0) {
-        float e = s.clearcoat * shading::ggx_schlick_albedo(0.04f, n_dot_v, s.coat_alpha);
-        r = r * (1 - e) + Rgb(e);
+        const float e = s.clearcoat * shading::ggx_schlick_albedo(0.04f, mu, s.coat_alpha);
+        r.diffuse = r.diffuse * (1 - e);
+        r.specular = r.specular * (1 - e);
+        r.coat = Rgb(e);
+        r.coat_roughness = std::sqrt(s.coat_alpha);
       }
       break;
     }
     case SurfaceModel::kConductor:
-      r = fresnel_conductor_reflectance(n_dot_v, s.eta, s.k);
+      r.specular = ggx_schlick_albedo(fresnel_conductor_reflectance(1.f, s.eta, s.k), mu, s.alpha) +
+                   s.multiple_scattering * (1 - shading::ggx_albedo(mu, s.alpha));
+      r.roughness = std::sqrt(s.alpha);
       break;
     case SurfaceModel::kDielectric: {
       // Reflected surround plus the surround seen through the glass.
-      float f = fresnel_dielectric_reflectance(n_dot_v, s.ior);
-      r = Rgb(f) + s.transmittance * (1 - f);
+      const float f0 = ((s.ior - 1) / (s.ior + 1)) * ((s.ior - 1) / (s.ior + 1));
+      const float reflected = f0 * shading::ggx_albedo(mu, s.alpha) +
+                              (1 - f0) * shading::ggx_schlick_albedo(0, mu, s.alpha);
+      r.specular = Rgb(reflected);
+      r.transmitted = s.transmittance * (1 - reflected);
+      r.roughness = std::sqrt(s.alpha);
       break;
     }
   }
-  return r * s.occlusion;
+  r.diffuse = r.diffuse * s.occlusion;
+  r.specular = r.specular * s.occlusion;
+  r.transmitted = r.transmitted * s.occlusion;
+  r.coat = r.coat * s.occlusion;
+  return r;
+}
+
+Rgb ambient_reflectance(const SurfacePoint& s, float n_dot_v) {
+  EnvironmentResponse r = environment_response(s, n_dot_v);
+  return r.diffuse + r.specular + r.transmitted + r.coat;
 }
 
 }  // namespace obscura::raster

@@ -12,12 +12,13 @@
 //                       refraction shows only as ambient light passing through
 //   emissive            reflects nothing
 //   unlit (glTF)        KHR_materials_unlit: base colour × texture × vertex colour, as it is
-//   transmission (glTF) KHR_materials_transmission is not refracted nor blended: its share is
-//                       shaded as the diffuse lobe, which is what a uniform surround seen through
-//                       glass tinted by the base colour looks like
+//   transmission (glTF) KHR_materials_transmission as real-time viewers draw it: a thin glass
+//                       wall (no refraction) that shows what was drawn behind it, tinted by the
+//                       base colour (scene_program.h, shade_transmission)
 //   clearcoat, sheen    KHR_materials_clearcoat and _sheen: the tracer's layering
-//   (glTF)              (trace/layered_metallic_roughness_bsdf.h) for every light; the ambient
-//                       term takes the coat's albedo at the shading normal's n·v
+//   (glTF)              (trace/layered_metallic_roughness_bsdf.h) for every light; the
+//                       environment reaches the layers through their albedos at the shading
+//                       normal's n·v, the coat reflecting it at its own roughness
 // Every material adds its emission (× emission texture) on its front face.
 #pragma once
 
@@ -81,6 +82,11 @@ struct SurfaceMaterial {
   uint8_t base_uv_set = 0, metallic_roughness_uv_set = 0, occlusion_uv_set = 0, emission_uv_set = 0,
           normal_uv_set = 0;
   float normal_scale = 1;  // glTF normalTexture.scale
+  // KHR_materials_transmission (metallic-roughness): factor × texture (R); 0 for other models.
+  float transmission = 0;
+  const Texture* transmission_texture = nullptr;
+  UvTransform transmission_transform;
+  uint8_t transmission_uv_set = 0;
   TextureFilter filter = TextureFilter::kTrilinear;
   bool double_sided = true;
   // glTF alpha coverage, for metallic-roughness materials as in the tracer: the base colour
@@ -125,6 +131,7 @@ struct SurfacePoint {
   Rgb eta, k, transmittance;
   Rgb multiple_scattering;  // conductor: the colour of its multiple-scattering lobe
   float occlusion;
+  float transmission;  // KHR_materials_transmission, texture applied
   // kLayeredMetallicRoughness: coat weight and GGX width, sheen colour and Charlie width, and
   // the coat's own unit normal facing v (zero: the shading normal), set by the program.
   float clearcoat, coat_alpha;
@@ -258,8 +265,25 @@ OBSCURA_RASTER_INLINE Rgb reflected_cosine(const SurfacePoint& s, Vector3f n, Ve
   return {};
 }
 
-// How much of a uniform ambient radiance the surface reflects towards v (its directional
-// albedo, approximated by Fresnel at n·v for the glossy models), occlusion texture applied.
+// How a surface point reflects light arriving from every direction (image-based lighting,
+// environment_lighting.h), split as the split-sum approximation splits it: `diffuse` weighs the
+// irradiance / π, `specular` the surround prefiltered by a GGX lobe of `roughness` about the
+// mirror direction, `transmitted` (glass) the same about −v. Each is a directional albedo of the
+// BRDF above, integrated over a uniform surround: the GGX and Schlick terms from the
+// shading/ggx_energy tables (numerical integration at startup), the diffuse weight and the
+// multiple-scattering lobe as the tracer's metallic-roughness BSDF has them, so that under a
+// uniform radiance L the sum × L is what the tracer converges to for a convex object. Phong's lobe
+// stands in as the GGX width √(2/(n+2)); conductors use Schlick with their own normal
+// reflectance. A clear coat adds `coat`, its own reflection of the surround at its own roughness
+// (about its own normal where it has one). The occlusion texture multiplies them all.
+struct EnvironmentResponse {
+  Rgb diffuse, specular, transmitted;
+  float roughness = 1;
+  Rgb coat;  // a clear coat's reflection of the surround, at its own roughness
+  float coat_roughness = 0;
+};
+EnvironmentResponse environment_response(const SurfacePoint& s, float n_dot_v);
+// Their sum: the directional albedo, what a uniform surround of radiance 1 gives.
 Rgb ambient_reflectance(const SurfacePoint& s, float n_dot_v);
 
 }  // namespace obscura::raster
