@@ -230,6 +230,10 @@ TEST_F(GltfHostile, RequiredExtensionsMustBeSupportedUsedOnesWarnOnce) {
   Scene scene = load_gltf(write("used.gltf", used));
   EXPECT_EQ(count_warnings(scene, "KHR_texture_transform"), 1);
   EXPECT_EQ(count_warnings(scene, "KHR_lights_punctual"), 0);
+  // Metadata (TransmissionTest carries KHR_xmp): nothing to render, nothing to warn about.
+  json metadata = triangle();
+  metadata["extensionsUsed"] = {"KHR_xmp", "KHR_xmp_json_ld"};
+  EXPECT_TRUE(load_gltf(write("xmp.gltf", metadata)).warnings.empty());
 }
 
 // --- Nodes ---

@@ -7,10 +7,11 @@
 // KHR_materials_ior; KHR_materials_unlit, _transmission, _volume and _variants
 // (gltf_material_extensions.h); KHR_lights_punctual; KHR_mesh_quantization;
 // KHR_draco_mesh_compression and EXT_meshopt_compression (gltf_draco.h, gltf_meshopt.h);
-// EXT_mesh_gpu_instancing (one instance per copy); perspective and orthographic cameras; the
-// first animation's node translation/rotation/scale channels, as instance keyframes for motion
-// blur; skins and morph targets (with 'weights' channels), posed once at GltfLoadOptions::time_s
-// (gltf_deformation.h). Any one of the file's scenes (GltfLoadOptions::scene).
+// EXT_mesh_gpu_instancing (one instance per copy); perspective and orthographic cameras; one
+// animation's (GltfLoadOptions::animation, else the first) node translation/rotation/scale
+// channels, as instance keyframes for motion blur; skins and morph targets (with 'weights'
+// channels), posed once at GltfLoadOptions::time_s (gltf_deformation.h). Any one of the file's
+// scenes (GltfLoadOptions::scene). KHR_materials_clearcoat and _sheen.
 //
 // Hostile files are expected: every accessor is checked against its buffer before anything is
 // allocated (gltf_accessor.h), what a file decodes to is bounded, the spec's structural rules are

@@ -188,7 +188,9 @@ const std::set<std::string>& supported_gltf_extensions() {
       "KHR_materials_volume",
       // Quantized attributes (integer POSITION, TEXCOORD,
       // NORMAL, TANGENT) are read like any other accessor.
-      "KHR_mesh_quantization", "KHR_texture_transform"};
+      "KHR_mesh_quantization", "KHR_texture_transform",
+      // Metadata (XMP licence and authoring records): nothing in them changes the picture.
+      "KHR_xmp", "KHR_xmp_json_ld"};
   return names;
 }
 
