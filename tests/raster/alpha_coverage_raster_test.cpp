@@ -17,6 +17,7 @@
 #include "obscura/trace/direct_lighting.h"
 #include "obscura/trace/render.h"
 #include "obscura/trace/trace_scene.h"
+#include "raster_images.h"
 
 namespace obscura::raster {
 namespace {
@@ -95,17 +96,9 @@ Scene masked_scene(float cutoff) {
   return scene;
 }
 
-struct Rendered {
-  Image color, id;
-};
-Rendered rasterize(const Scene& scene, RasterSettings settings = {}) {
-  settings.aovs = true;
+test_images::RasterImages rasterize(const Scene& scene, RasterSettings settings = {}) {
   settings.surface_lights = false;
-  SceneRasterizer rasterizer(scene, settings);
-  RenderTarget target = rasterizer.make_target(scene.camera);
-  Film film(target.width(), target.height());
-  rasterizer.render(scene.camera, film, &target);
-  return {film.to_image(), id_image(target)};
+  return test_images::rasterize_with_aovs(scene, scene.camera, settings);
 }
 
 Rgb pixel(const Image& image, int x, int y) {
@@ -125,7 +118,7 @@ TEST(RasterAlphaCoverage, MaskCutsAlongTheAlphaTexturesIsoLine) {
   // the surface remains where x + y + 1 ≥ 57.6.
   Scene scene = masked_scene(0.45f);
   const float exposure = float(scene.camera.exposure_scale());
-  Rendered r = rasterize(scene);
+  auto r = rasterize(scene);
   int kept = 0;
   for (int y = 2; y < kSize - 2; ++y)
     for (int x = 2; x < kSize - 2; ++x) {
@@ -153,7 +146,7 @@ TEST(RasterAlphaCoverage, MaskIsTestedPerSampleUnderMsaa) {
     const float exposure = float(scene.camera.exposure_scale());
     RasterSettings settings;
     settings.msaa_samples = 4;
-    Rendered r = rasterize(scene, settings);
+    auto r = rasterize(scene, settings);
     const float f = covered / 4.f;
     for (int y : {5, 30, 58}) {
       expect_rgb_near(pixel(r.color, 32, y), (Rgb(1.f) * f + kBackground * (1 - f)) * exposure,
@@ -173,7 +166,7 @@ TEST(RasterAlphaCoverage, ObjectIdsAgreeWithTheTracerOnAMaskedQuad) {
   scene.add_meshes({quad(1, -1, 1, -1)});
   scene.camera = square_camera(96);
   scene.camera.world_from_camera = world_from_camera_look_at({0.7, 0.4, 5}, {0, 0, 0});
-  Rendered raster = rasterize(scene);
+  auto raster = rasterize(scene);
   TraceScene trace_scene(scene, std::make_shared<EmbreeDevice>());
   Film film(96, 96);
   AovBuffers aovs(96, 96);
@@ -222,7 +215,7 @@ TEST(RasterAlphaCoverage, BlendComposesOverTheBackgroundBackToFront) {
   for (bool near_first : {true, false}) {
     Scene scene = blended_scene(near_first, false);
     const float exposure = float(scene.camera.exposure_scale());
-    Rendered r = rasterize(scene);
+    auto r = rasterize(scene);
     const Rgb far_over_bg = kFar * kFarAlpha + kBackground * (1 - kFarAlpha);
     auto at = [&](float world_x) { return pixel(r.color, int((world_x + 1) / 2 * kSize), 32); };
     expect_rgb_near(at(-0.8f), (kNear * kNearAlpha + kBackground * (1 - kNearAlpha)) * exposure,
@@ -257,7 +250,7 @@ TEST(RasterAlphaCoverage, BlendedSurfacesHideNothingAndAreHiddenByOpaqueOnes) {
     scene.add_meshes(opaque_first ? std::vector<Mesh>{opaque, blended}
                                   : std::vector<Mesh>{blended, opaque});
     const float exposure = float(scene.camera.exposure_scale());
-    Rendered r = rasterize(scene);
+    auto r = rasterize(scene);
     expect_rgb_near(pixel(r.color, 10, 32), Rgb(exposure), 1e-5f, "opaque in front");
     expect_rgb_near(pixel(r.color, 50, 32),
                     (kFar * kFarAlpha + kBackground * (1 - kFarAlpha)) * exposure, 1e-5f,
@@ -289,7 +282,7 @@ TEST(RasterAlphaCoverage, CutOutsCastCutOutShadows) {
   scene.camera.world_from_camera = world_from_camera_look_at({0, 0, -0.5}, {0, 0, -1});
   RasterSettings settings;
   settings.shadow_map_size = 512;
-  Rendered r = rasterize(scene, settings);
+  auto r = rasterize(scene, settings);
   const float exposure = float(scene.camera.exposure_scale());
   // The lit floor reflects E·ρ/π; in the shadow of the kept half, nothing.
   const float lit = 3.f / std::numbers::pi_v<float> * exposure;

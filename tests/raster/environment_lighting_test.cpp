@@ -23,6 +23,7 @@
 #include "obscura/trace/path_tracer.h"
 #include "obscura/trace/render.h"
 #include "obscura/trace/trace_scene.h"
+#include "raster_images.h"
 #include "test_paths.h"
 
 namespace obscura::raster {
@@ -106,17 +107,9 @@ Environment uniform_map_environment(Scene& scene) {
   return env;
 }
 
-struct Images {
-  Image color, normal;
-};
+using Images = test_images::RasterImages;
 Images rasterize(const Scene& scene) {
-  RasterSettings settings;
-  settings.aovs = true;
-  SceneRasterizer rasterizer(scene, settings);
-  RenderTarget target = rasterizer.make_target(scene.camera);
-  Film film(target.width(), target.height());
-  rasterizer.render(scene.camera, film, &target);
-  return {film.to_image(), normal_image(target)};
+  return test_images::rasterize_with_aovs(scene, scene.camera);
 }
 Image trace(const Scene& scene, int spp) {
   TraceScene trace_scene(scene, std::make_shared<EmbreeDevice>());

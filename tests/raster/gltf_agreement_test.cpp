@@ -13,6 +13,7 @@
 #include "obscura/trace/direct_lighting.h"
 #include "obscura/trace/render.h"
 #include "obscura/trace/trace_scene.h"
+#include "raster_images.h"
 
 namespace obscura::raster {
 namespace {
@@ -28,25 +29,7 @@ Image traced_ids(const Scene& scene, Camera camera) {
   return aovs.id();
 }
 
-Image rasterized_ids(const Scene& scene, const Camera& camera) {
-  RasterSettings settings;
-  settings.aovs = true;
-  SceneRasterizer rasterizer(scene, settings);
-  RenderTarget target = rasterizer.make_target(camera);
-  Film film(target.width(), target.height());
-  rasterizer.render(camera, film, &target);
-  return id_image(target);
-}
-
-bool on_silhouette(const Image& id, int x, int y) {
-  for (int dy = -1; dy <= 1; ++dy)
-    for (int dx = -1; dx <= 1; ++dx) {
-      int nx = x + dx, ny = y + dy;
-      if (nx < 0 || ny < 0 || nx >= id.width || ny >= id.height) continue;
-      if (id.at(nx, ny, 0) != id.at(x, y, 0)) return true;
-    }
-  return false;
-}
+using test_images::on_silhouette;
 
 struct Sample {
   const char* name;
@@ -67,7 +50,7 @@ TEST_P(SampleModel, ObjectIdsAgreeWithTheTracerAtPixelCentres) {
   for (Material& material : scene.materials)
     if (material.alpha_mode == AlphaMode::kBlend) material.alpha_mode = AlphaMode::kOpaque;
   Image traced = traced_ids(scene, scene.camera);
-  Image rastered = rasterized_ids(scene, scene.camera);
+  Image rastered = test_images::rasterize_with_aovs(scene, scene.camera).id;
   int agree = 0, seen = 0, off_silhouette = 0, total = traced.width * traced.height;
   for (int y = 0; y < traced.height; ++y)
     for (int x = 0; x < traced.width; ++x) {

@@ -14,6 +14,7 @@
 #include "obscura/trace/direct_lighting.h"
 #include "obscura/trace/render.h"
 #include "obscura/trace/trace_scene.h"
+#include "raster_images.h"
 
 namespace obscura::raster {
 namespace {
@@ -38,25 +39,12 @@ Images trace(const Scene& scene, const Camera& camera) {
   return {film.to_image(), aovs.id()};
 }
 
-Images rasterize(const Scene& scene, const Camera& camera) {
+test_images::RasterImages rasterize(const Scene& scene, const Camera& camera) {
   RasterSettings settings;
-  settings.aovs = true;
   settings.shadow_map_size = 0;  // no sphere shadows another
-  SceneRasterizer rasterizer(scene, settings);
-  RenderTarget target = rasterizer.make_target(camera);
-  Film film(target.width(), target.height());
-  rasterizer.render(camera, film, &target);
-  return {film.to_image(), id_image(target)};
+  return test_images::rasterize_with_aovs(scene, camera, settings);
 }
-
-bool on_silhouette(const Image& id, int x, int y) {
-  for (int dy = -1; dy <= 1; ++dy)
-    for (int dx = -1; dx <= 1; ++dx) {
-      int nx = std::clamp(x + dx, 0, id.width - 1), ny = std::clamp(y + dy, 0, id.height - 1);
-      if (id.at(nx, ny, 0) != id.at(x, y, 0)) return true;
-    }
-  return false;
-}
+using test_images::on_silhouette;
 
 Scene layered_spheres() {
   Scene scene;
@@ -100,7 +88,8 @@ Scene layered_spheres() {
 TEST(LayeredMaterialAgreement, RasterizerShadesCoatAndSheenAsTheTracer) {
   Scene scene = layered_spheres();
   Camera camera = with_film(scene.camera, 240, 120);
-  Images traced = trace(scene, camera), raster = rasterize(scene, camera);
+  Images traced = trace(scene, camera);
+  test_images::RasterImages raster = rasterize(scene, camera);
   double max_relative = 0, sum_relative = 0;
   int compared = 0, lit[3] = {0, 0, 0};
   for (int y = 0; y < 120; ++y)

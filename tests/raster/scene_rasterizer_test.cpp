@@ -16,6 +16,7 @@
 #include "obscura/trace/direct_lighting.h"
 #include "obscura/trace/render.h"
 #include "obscura/trace/trace_scene.h"
+#include "raster_images.h"
 #include "test_paths.h"
 
 namespace obscura::raster {
@@ -46,27 +47,11 @@ TracerImages trace(const Scene& scene, const Camera& camera) {
   return {film.to_image(), aovs.id()};
 }
 
-struct RasterImages {
-  Image color, id;
-};
-RasterImages rasterize(const Scene& scene, const Camera& camera, RasterSettings settings = {}) {
-  settings.aovs = true;
-  SceneRasterizer rasterizer(scene, settings);
-  RenderTarget target = rasterizer.make_target(camera);
-  Film film(target.width(), target.height());
-  rasterizer.render(camera, film, &target);
-  return {film.to_image(), id_image(target)};
-}
-
-// Whether a pixel lies on a silhouette: some 8-neighbour sees another object.
-bool on_silhouette(const Image& id, int x, int y) {
-  for (int dy = -1; dy <= 1; ++dy)
-    for (int dx = -1; dx <= 1; ++dx) {
-      int nx = x + dx, ny = y + dy;
-      if (nx < 0 || ny < 0 || nx >= id.width || ny >= id.height) continue;
-      if (id.at(nx, ny, 0) != id.at(x, y, 0)) return true;
-    }
-  return false;
+using test_images::on_silhouette;
+using test_images::RasterImages;
+test_images::RasterImages rasterize(const Scene& scene, const Camera& camera,
+                                    RasterSettings settings = {}) {
+  return test_images::rasterize_with_aovs(scene, camera, settings);
 }
 
 Scene example_scene(const std::string& name) {

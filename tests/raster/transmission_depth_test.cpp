@@ -10,6 +10,7 @@
 
 #include "obscura/camera/frames.h"
 #include "obscura/raster/scene_rasterizer.h"
+#include "raster_images.h"
 
 namespace obscura::raster {
 namespace {
@@ -42,14 +43,11 @@ Material label(Rgb emission) {
 
 Image render(const Scene& scene, Image* ids = nullptr) {
   RasterSettings settings;
-  settings.aovs = true;
   settings.surface_lights = false;
-  SceneRasterizer rasterizer(scene, settings);
-  RenderTarget target = rasterizer.make_target(scene.camera);
-  Film film(target.width(), target.height());
-  rasterizer.render(scene.camera, film, &target);
-  if (ids) *ids = id_image(target);
-  return film.to_image();
+  test_images::RasterImages images =
+      test_images::rasterize_with_aovs(scene, scene.camera, settings);
+  if (ids) *ids = images.id;
+  return images.color;
 }
 
 TEST(RasterDepthPrecision, BackToBackQuadsMillimetresApartDoNotFightUnderATinyNearPlane) {
