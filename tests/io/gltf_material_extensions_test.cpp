@@ -15,7 +15,9 @@
 #include "obscura/scene/material_variants.h"
 #include "obscura/trace/path_tracer.h"
 #include "obscura/trace/render.h"
+#include "obscura/trace/trace_material.h"
 #include "obscura/trace/trace_scene.h"
+#include "png_bytes.h"
 
 namespace obscura {
 namespace {
@@ -171,6 +173,43 @@ TEST(GltfVariants, BadMappingsNameTheField) {
   } catch (const Error& e) {
     EXPECT_NE(std::string(e.what()).find("mappings[1].variants[0]"), std::string::npos) << e.what();
   }
+}
+
+TEST(GltfSpecular, TexturesScaleStrengthAndColourInTheTracer) {
+  // One texel: sRGB colour (255, 188, 0) and alpha 0.5 (128/255); KHR_materials_specular reads
+  // strength from A and colour from RGB.
+  json doc = quad_document();
+  doc["images"] = {{{"uri", "data:image/png;base64," +
+                                test::base64(test::rgba8_png(1, 1, {255, 188, 0, 128}))}}};
+  doc["textures"] = {{{"source", 0}}};
+  doc["extensionsUsed"] = {"KHR_materials_specular"};
+  doc["materials"] = {
+      {{"pbrMetallicRoughness", {{"metallicFactor", 0}, {"roughnessFactor", 1}}},
+       {"extensions",
+        {{"KHR_materials_specular",
+          {{"specularTexture", {{"index", 0}}}, {"specularColorTexture", {{"index", 0}}}}}}}}};
+  Scene scene = load(doc);
+  const MetallicRoughnessMaterial& m = mr(scene, 0);
+  ASSERT_TRUE(m.specular_texture.valid());
+  ASSERT_TRUE(m.specular_color_texture.valid());
+  EXPECT_EQ(scene.textures[m.specular_texture.texture].encoding, TextureEncoding::kLinear);
+  EXPECT_EQ(scene.textures[m.specular_color_texture.texture].encoding, TextureEncoding::kSrgb);
+  EXPECT_TRUE(scene.warnings.empty()) << ::testing::PrintToString(scene.warnings);
+
+  // The tracer's BSDF equals the untextured one with specular = 128/255 and colour = the
+  // texel decoded (sRGB 188/255 → 0.5029).
+  SurfaceHit hit;
+  hit.shading_normal = hit.geometric_normal = Normal3f(0, 0, 1);
+  AnyBsdf textured = TraceMaterial(scene.materials[0], &scene.textures).bsdf_at(hit);
+  Material expected_material = scene.materials[0];
+  auto& e = std::get<MetallicRoughnessMaterial>(expected_material.model);
+  e.specular_texture = e.specular_color_texture = {};
+  e.specular = 128.f / 255;
+  e.specular_color = Rgb(1.f, 0.50289f, 0.f);
+  AnyBsdf expected = TraceMaterial(expected_material, &scene.textures).bsdf_at(hit);
+  Vector3f wo = normalize(Vector3f(0.3f, 0.1f, 1)), wi = normalize(Vector3f(-0.2f, 0.4f, 1));
+  for (int c = 0; c < 3; ++c) EXPECT_NEAR(textured.f(wo, wi)[c], expected.f(wo, wi)[c], 1e-4f) << c;
+  EXPECT_GT(expected.f(wo, wi).r, expected.f(wo, wi).b);  // the colour reaches the lobe
 }
 
 TEST(GltfTransmission, ReadsTransmissionIorAndVolume) {

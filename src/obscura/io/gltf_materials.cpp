@@ -138,6 +138,13 @@ void GltfImporter::import_materials() {
               Rgb(float(c.Get(0).GetNumberAsDouble()), float(c.Get(1).GetNumberAsDouble()),
                   float(c.Get(2).GetNumberAsDouble()));
         }
+        const std::string at = where + ".extensions.KHR_materials_specular.";
+        if (value.Has("specularTexture"))
+          mr.specular_texture = texture(value.Get("specularTexture"), TextureEncoding::kLinear,
+                                        at + "specularTexture");
+        if (value.Has("specularColorTexture"))
+          mr.specular_color_texture = texture(value.Get("specularColorTexture"),
+                                              TextureEncoding::kSrgb, at + "specularColorTexture");
       } else if (name == "KHR_materials_ior") {
         mr.ior = float(number(value, "ior", 1.5));
       } else if (read_gltf_material_extension(

@@ -342,9 +342,10 @@ class JsonSceneReader {
               shift(v.base_color_texture);
               shift(v.metallic_roughness_texture);
               shift(v.occlusion_texture);
-              for (TextureRef* r : {&v.transmission_texture, &v.clearcoat_texture,
-                                    &v.clearcoat_roughness_texture, &v.clearcoat_normal_texture,
-                                    &v.sheen_color_texture, &v.sheen_roughness_texture})
+              for (TextureRef* r :
+                   {&v.transmission_texture, &v.clearcoat_texture, &v.clearcoat_roughness_texture,
+                    &v.clearcoat_normal_texture, &v.sheen_color_texture, &v.sheen_roughness_texture,
+                    &v.specular_texture, &v.specular_color_texture})
                 shift(*r);
             }
           },

@@ -57,7 +57,9 @@ struct MetallicRoughnessMaterial {
   // BSDF).
   float specular = 1;
   Rgb specular_color{1.f};
-  float ior = 1.5f;  // KHR_materials_ior; glTF's default 1.5 gives F0 = 0.04
+  TextureRef specular_texture;        // its A channel multiplies `specular`
+  TextureRef specular_color_texture;  // its RGB (sRGB-encoded) multiplies `specular_color`
+  float ior = 1.5f;                   // KHR_materials_ior; glTF's default 1.5 gives F0 = 0.04
   // KHR_materials_unlit: the surface shows its base colour (× texture × COLOR_0) as it is, lit
   // by nothing and lighting nothing (docs/scene-format.md says what the tracer does with it).
   bool unlit = false;

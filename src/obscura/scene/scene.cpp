@@ -82,6 +82,8 @@ void validate_material(const Material& m, const std::string& where, size_t textu
     check_texture(mr->clearcoat_normal_texture, where, "clearcoat normal", texture_count);
     check_texture(mr->sheen_color_texture, where, "sheen colour", texture_count);
     check_texture(mr->sheen_roughness_texture, where, "sheen roughness", texture_count);
+    check_texture(mr->specular_texture, where, "specular", texture_count);
+    check_texture(mr->specular_color_texture, where, "specular colour", texture_count);
   }
   Rgb e = m.emission;
   if (!(std::isfinite(e.r) && std::isfinite(e.g) && std::isfinite(e.b)) || e.r < 0 || e.g < 0 ||

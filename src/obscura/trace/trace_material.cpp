@@ -116,6 +116,10 @@ AnyBsdf TraceMaterial::bsdf_at(const SurfaceHit& hit) const {
                                     .specular_color = m.specular_color,
                                     .ior = m.ior};
       p.base_color = p.base_color * self.texture_rgb(m.base_color_texture, hit) * hit.vertex_color;
+      // KHR_materials_specular's textures: strength in A, colour in RGB.
+      if (m.specular_texture.valid()) p.specular *= self.texture_alpha(m.specular_texture, hit);
+      if (m.specular_color_texture.valid())
+        p.specular_color = p.specular_color * self.texture_rgb(m.specular_color_texture, hit);
       if (m.metallic_roughness_texture.valid()) {
         Rgb mr = self.texture_rgb(m.metallic_roughness_texture, hit);  // G roughness, B metal
         p.roughness *= mr.g;
