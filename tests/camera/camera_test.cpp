@@ -200,5 +200,47 @@ TEST(Camera, RaysStartAtTheNearPlaneAndEndAtTheFarPlane) {
   EXPECT_NEAR(ray->t_max * depth_per_t, 10, 1e-12);
 }
 
+// The tracer prepares the camera once per render (screen window, lens radius and a fixed
+// transform computed once); its rays must be the window_from_raster rays bit for bit, for an
+// off-centre window (lens shift) and a non-square film, and the same from a prepared camera
+// reused across calls as from generate_ray.
+TEST(Camera, PreparedCameraRaysAreWindowFromRasterRaysExactly) {
+  Perspective p;
+  p.lens_shift = {0.13, -0.07};
+  Camera c = perspective_camera(p, 173, 91);
+  const PreparedCamera prepared = c.prepare();
+  for (double x : {0.0, 0.37, 17.5, 100.25, 173.0})
+    for (double y : {0.0, 3.5, 45.125, 91.0}) {
+      Point2d w = c.window_from_raster({x, y});
+      Vector3d d = normalize(Vector3d(w.x, w.y, -1));
+      Vector3d expected = d / length(d);  // the identity transform, then the stretch
+      auto ray = prepared.generate_ray({x, y});
+      ASSERT_TRUE(ray);
+      EXPECT_EQ(ray->direction.x, expected.x) << x << ", " << y;
+      EXPECT_EQ(ray->direction.y, expected.y) << x << ", " << y;
+      EXPECT_EQ(ray->direction.z, expected.z) << x << ", " << y;
+    }
+  // Depth of field and a moving camera: reused preparation = per-call preparation.
+  c.lens.depth_of_field = true;
+  c.lens.f_number = 2;
+  c.lens.focus_distance_m = 3;
+  c.world_from_camera = AnimatedTransform({{0, Transform()}, {1, Transform::translate({1, 2, 3})}});
+  const PreparedCamera moving = c.prepare();
+  for (double t : {0.0, 0.25, 1.0})
+    for (Point2d lens : {Point2d(0.1, 0.9), Point2d(0.5, 0.5), Point2d(0.77, 0.31)}) {
+      auto a = moving.generate_ray({60.5, 20.25}, lens, t),
+           b = c.generate_ray({60.5, 20.25}, lens, t);
+      ASSERT_TRUE(a && b);
+      EXPECT_EQ(a->origin.x, b->origin.x);
+      EXPECT_EQ(a->origin.y, b->origin.y);
+      EXPECT_EQ(a->origin.z, b->origin.z);
+      EXPECT_EQ(a->direction.x, b->direction.x);
+      EXPECT_EQ(a->direction.y, b->direction.y);
+      EXPECT_EQ(a->direction.z, b->direction.z);
+      EXPECT_EQ(a->t_min, b->t_min);
+      EXPECT_EQ(a->t_max, b->t_max);
+    }
+}
+
 }  // namespace
 }  // namespace obscura

@@ -8,6 +8,27 @@
 namespace obscura {
 namespace {
 
+// The Sobol sampler mixes the (seed, pixel) half of each pair's key once per sample; its numbers
+// must stay those of the one-piece hash of (seed, pixel, pair), which images depend on.
+TEST(Sampler, SobolNumbersAreThoseOfTheFullPairHash) {
+  for (uint64_t seed : {0ull, 7ull, 0x123456789abcull})
+    for (Point2i pixel : {Point2i(0, 0), Point2i(31, 7), Point2i(-2, 1000)})
+      for (uint32_t index : {0u, 1u, 5u, 1023u}) {
+        Sampler sampler(SamplerType::kSobol, seed, pixel, index);
+        uint64_t pixel_key = (uint64_t(uint32_t(pixel.y)) << 32) | uint32_t(pixel.x);
+        for (uint32_t pair = 0; pair < 4; ++pair) {
+          uint64_t key = hash_words(seed, pixel_key, pair, 0x50b01u);
+          uint32_t shuffled = owen_scramble(index, uint32_t(key));
+          float u0 = fraction_to_float(owen_scramble(sobol_bits(shuffled, 0), uint32_t(key >> 32)));
+          float u1 =
+              fraction_to_float(owen_scramble(sobol_bits(shuffled, 1), uint32_t(mix_bits(key))));
+          Point2f u = sampler.next_2d();
+          EXPECT_EQ(u.x, u0) << "pair " << pair;
+          EXPECT_EQ(u.y, u1) << "pair " << pair;
+        }
+      }
+}
+
 TEST(Sampler, SameKeyGivesTheSameNumbers) {
   for (SamplerType type : {SamplerType::kSobol, SamplerType::kIndependent}) {
     Sampler a(type, 7, {3, 4}, 5), b(type, 7, {3, 4}, 5);

@@ -4,6 +4,8 @@
 
 #include <gtest/gtest.h>
 
+#include "obscura/color/srgb.h"
+
 namespace obscura {
 namespace {
 
@@ -60,6 +62,27 @@ TEST(Texture, SrgbEightBitTexelsAreDecoded) {
   EXPECT_FLOAT_EQ(v.z, 0);
   t.encoding = TextureEncoding::kLinear;
   EXPECT_NEAR(sample_texture(t, {0.5f, 0.5f}).y, 128 / 255.f, 1e-7);
+}
+
+// 8-bit sRGB texels are decoded through a table; it must give exactly srgb_decode's floats for
+// every value, in every channel layout (grey, grey + alpha, RGB, RGBA), alpha left linear.
+TEST(Texture, SrgbEightBitTableIsExactForEveryValue) {
+  for (int channels = 1; channels <= 4; ++channels) {
+    Texture t;
+    t.width = 256, t.height = 1, t.channels = channels;
+    t.filter = TextureFilter::kNearest;
+    for (int i = 0; i < 256; ++i)
+      for (int c = 0; c < channels; ++c) t.texels_8bit.push_back(uint8_t((i + 85 * c) % 256));
+    for (int i = 0; i < 256; ++i) {
+      Vector4f v = sample_texture(t, {(i + 0.5f) / 256, 0.5f});
+      auto encoded = [&](int c) { return uint8_t((i + 85 * c) % 256) * (1.f / 255.f); };
+      float grey = srgb_decode(encoded(0));
+      EXPECT_EQ(v.x, grey) << channels << " channels, texel " << i;
+      EXPECT_EQ(v.y, channels >= 3 ? srgb_decode(encoded(1)) : grey);
+      EXPECT_EQ(v.z, channels >= 3 ? srgb_decode(encoded(2)) : grey);
+      EXPECT_EQ(v.w, channels == 2 ? encoded(1) : channels == 4 ? encoded(3) : 1.f);
+    }
+  }
 }
 
 }  // namespace

@@ -165,6 +165,36 @@ double Camera::circle_of_confusion_px(double depth_m) const {
 
 std::optional<CameraRay> Camera::generate_ray(Point2d film_point, Point2d lens_sample,
                                               double time_s) const {
+  return prepare().generate_ray(film_point, lens_sample, time_s);
+}
+
+PreparedCamera Camera::prepare() const {
+  return PreparedCamera(*this);
+}
+
+PreparedCamera::PreparedCamera(const Camera& camera) : camera_(&camera) {
+  if (camera.has_projection_matrix()) {
+    window_ = camera.screen_window();
+    window_width_ = window_.x_max - window_.x_min;
+    window_height_ = window_.y_max - window_.y_min;
+  }
+  width_px_ = camera.film.width_px;
+  height_px_ = camera.film.height_px;
+  lens_radius_m_ = camera.lens_radius_m();
+  if (!camera.world_from_camera.is_animated())
+    fixed_world_from_camera_ = &camera.world_from_camera.keys().front().transform;
+}
+
+std::optional<CameraRay> PreparedCamera::generate_ray(Point2d film_point, Point2d lens_sample,
+                                                      double time_s) const {
+  const Camera& camera = *camera_;
+  const ThinLens& lens = camera.lens;
+  // Camera::window_from_raster with the window computed once (the same operations, so the
+  // same doubles).
+  auto window_from_raster = [&](Point2d raster) {
+    return Point2d(window_.x_min + raster.x / width_px_ * window_width_,
+                   window_.y_max - raster.y / height_px_ * window_height_);
+  };
   // 1. The ray in camera space. `depth_per_t` turns the clipping range into t: perspective and
   //    orthographic rays clip at planes of constant depth along −Z, spherical ones by distance.
   struct LocalRay {
@@ -178,7 +208,7 @@ std::optional<CameraRay> Camera::generate_ray(Point2d film_point, Point2d lens_s
     // Every lens point aims at the point of the focus plane that the pinhole ray reaches.
     Point3d focus = Point3d(0, 0, 0) + pinhole * lens.focus_distance_m;
     Point2d l = sample_aperture(lens.aperture, lens_sample);
-    Point3d origin(lens_radius_m() * l.x, lens_radius_m() * l.y, 0);
+    Point3d origin(lens_radius_m_ * l.x, lens_radius_m_ * l.y, 0);
     return LocalRay{origin, normalize(focus - origin), 0};
   };
   std::optional<LocalRay> local = std::visit(
@@ -193,29 +223,32 @@ std::optional<CameraRay> Camera::generate_ray(Point2d film_point, Point2d lens_s
             return LocalRay{{w.x, w.y, 0}, {0, 0, -1}, 1};
           },
           [&](const Equirectangular&) -> std::optional<LocalRay> {
-            Point2d uv(film_point.x / film.width_px, film_point.y / film.height_px);
+            Point2d uv(film_point.x / width_px_, film_point.y / height_px_);
             return LocalRay{{0, 0, 0}, equirectangular_direction(uv), 1};
           },
           [&](const Fisheye& f) -> std::optional<LocalRay> {
-            auto d = fisheye_direction(f, fisheye_centered_from_raster(film, film_point));
+            auto d = fisheye_direction(f, fisheye_centered_from_raster(camera.film, film_point));
             if (!d) return std::nullopt;
             return LocalRay{{0, 0, 0}, *d, 1};
           },
       },
-      projection);
+      camera.projection);
   if (!local) return std::nullopt;
 
   // 2. Into the world at this time; t keeps measuring world distance along the unit direction.
-  Transform world = world_from_camera.at(time_s);
-  Vector3d world_direction = world(local->direction);
-  double stretch = length(world_direction);
-  CameraRay ray;
-  ray.origin = world(local->origin);
-  ray.direction = world_direction / stretch;
-  ray.t_min = near_m / local->depth_per_t * stretch;
-  ray.t_max = far_m / local->depth_per_t * stretch;
-  ray.time_s = time_s;
-  return ray;
+  auto into_world = [&](const Transform& world) {
+    Vector3d world_direction = world(local->direction);
+    double stretch = length(world_direction);
+    CameraRay ray;
+    ray.origin = world(local->origin);
+    ray.direction = world_direction / stretch;
+    ray.t_min = camera.near_m / local->depth_per_t * stretch;
+    ray.t_max = camera.far_m / local->depth_per_t * stretch;
+    ray.time_s = time_s;
+    return ray;
+  };
+  if (fixed_world_from_camera_) return into_world(*fixed_world_from_camera_);
+  return into_world(camera.world_from_camera.at(time_s));
 }
 
 std::optional<FilmProjection> Camera::project(Point3d world, double time_s) const {

@@ -23,16 +23,24 @@ constexpr uint64_t mix_bits(uint64_t v) {
 }
 
 // Hash of a key made of several 64-bit words; each word passes the mixer before the next enters.
-constexpr uint64_t hash_words(uint64_t a, uint64_t b, uint64_t c = 0, uint64_t d = 0) {
+// In two halves, so that callers hashing many (c, d) under one (a, b) mix the first two words
+// once: hash_words(a, b, c, d) = hash_words_last(hash_words_first(a, b), c, d).
+constexpr uint64_t hash_words_first(uint64_t a, uint64_t b) {
   uint64_t h = mix_bits(a + 0x9e3779b97f4a7c15ULL);
-  h = mix_bits(h ^ (b + 0x632be59bd9b4e019ULL));
-  h = mix_bits(h ^ (c + 0x8cb92ba72f3d8dd7ULL));
-  h = mix_bits(h ^ (d + 0xd6e8feb86659fd93ULL));
-  return h;
+  return mix_bits(h ^ (b + 0x632be59bd9b4e019ULL));
+}
+constexpr uint64_t hash_words_last(uint64_t first, uint64_t c, uint64_t d) {
+  uint64_t h = mix_bits(first ^ (c + 0x8cb92ba72f3d8dd7ULL));
+  return mix_bits(h ^ (d + 0xd6e8feb86659fd93ULL));
+}
+constexpr uint64_t hash_words(uint64_t a, uint64_t b, uint64_t c = 0, uint64_t d = 0) {
+  return hash_words_last(hash_words_first(a, b), c, d);
 }
 
 // The top 24 bits of a hash as a float uniformly in [0, 1): every value is exactly representable.
-constexpr float bits_to_unit_float(uint64_t bits) { return float(bits >> 40) * 0x1p-24f; }
+constexpr float bits_to_unit_float(uint64_t bits) {
+  return float(bits >> 40) * 0x1p-24f;
+}
 
 // The random number for one (seed, pixel, sample, dimension).
 constexpr float sample_uniform(uint64_t seed, Point2i pixel, uint32_t sample_index,

@@ -29,7 +29,13 @@ std::string_view sampler_type_name(SamplerType type);
 class Sampler {
  public:
   Sampler(SamplerType type, uint64_t seed, Point2i pixel, uint32_t sample_index)
-      : type_(type), seed_(seed), pixel_(pixel), sample_index_(sample_index) {}
+      : type_(type), seed_(seed), pixel_(pixel), sample_index_(sample_index) {
+    // Every pair's key hashes (seed, pixel, pair): mix the part common to all pairs once.
+    if (type_ == SamplerType::kSobol) {
+      uint64_t pixel_key = (uint64_t(uint32_t(pixel_.y)) << 32) | uint32_t(pixel_.x);
+      seed_pixel_hash_ = hash_words_first(seed_, pixel_key);
+    }
+  }
 
   float next_1d() {
     if (type_ == SamplerType::kIndependent)
@@ -48,8 +54,8 @@ class Sampler {
   float sobol_component(uint32_t pair, int component) {
     if (pair != pair_) {
       pair_ = pair;
-      uint64_t pixel_key = (uint64_t(uint32_t(pixel_.y)) << 32) | uint32_t(pixel_.x);
-      pair_key_ = hash_words(seed_, pixel_key, pair, 0x50b01u);
+      // hash_words(seed_, pixel key, pair, 0x50b01u), its first half mixed at construction.
+      pair_key_ = hash_words_last(seed_pixel_hash_, pair, 0x50b01u);
       // Shuffle which Sobol point this sample gets: scrambling the index from its high bits
       // down maps the first 2^k indices onto an aligned block of 2^k, whose points form a net.
       pair_index_ = owen_scramble(sample_index_, uint32_t(pair_key_));
@@ -68,6 +74,7 @@ class Sampler {
   // The current pair's hash and shuffled index, computed once for its two components.
   uint32_t pair_ = ~0u, pair_index_ = 0;
   uint64_t pair_key_ = 0;
+  uint64_t seed_pixel_hash_ = 0;  // hash_words_first(seed, pixel), Sobol only
 };
 
 }  // namespace obscura

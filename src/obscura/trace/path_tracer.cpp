@@ -42,13 +42,6 @@ Rgb PathTracer::radiance(const TraceScene& scene, const Ray& camera_ray, Sampler
   Point3f previous = ray.origin;
 
   for (int depth = 0;; ++depth) {
-    // Numbers for this vertex, drawn up front so dimensions stay aligned path by path.
-    float u_light_select = sampler.next_1d();
-    Point2f u_light = sampler.next_2d();
-    float u_lobe = sampler.next_1d();
-    Point2f u_bsdf = sampler.next_2d();
-    float u_roulette = sampler.next_1d();
-
     depth == 0 ? ++counts.camera : ++counts.bounce;
     std::optional<SurfaceHit> hit = scene.intersect(ray);
 
@@ -88,6 +81,16 @@ Rgb PathTracer::radiance(const TraceScene& scene, const Ray& camera_ray, Sampler
       }
     }
     if (depth + 1 >= settings_.max_depth) break;
+
+    // Numbers for this vertex, all drawn before any is used so dimensions stay aligned path by
+    // path. Drawn only here, past the exits above, which need none: a path that escapes (most
+    // camera rays under an environment) or ends draws nothing more, and as the sampler's numbers
+    // depend only on the dimension, every number used is the same as when drawn up front.
+    float u_light_select = sampler.next_1d();
+    Point2f u_light = sampler.next_2d();
+    float u_lobe = sampler.next_1d();
+    Point2f u_bsdf = sampler.next_2d();
+    float u_roulette = sampler.next_1d();
 
     AnyBsdf bsdf = material.bsdf_at(*hit);
     ShadingFrame frame = frame_for(*hit, bsdf, wo);

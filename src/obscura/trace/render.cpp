@@ -49,6 +49,7 @@ RenderStats render(const TraceScene& scene, const Camera& camera, const Integrat
                               "] s but the camera's is [" + std::to_string(camera.shutter.open_s) +
                               ", " + std::to_string(camera.shutter.close_s) +
                               "] s; build the TraceScene with this camera's shutter");
+  const PreparedCamera prepared_camera = camera.prepare();
   const FilterSampler filter(camera.film.filter);
   const auto exposure = float(camera.exposure_scale());
   auto start = Clock::now();
@@ -75,7 +76,7 @@ RenderStats render(const TraceScene& scene, const Camera& camera, const Integrat
           double time = camera.shutter.time_at(sampler.next_1d());
           // 3. The radiance along the ray, exposed, into this pixel with the filter's weight.
           std::optional<CameraRay> ray =
-              camera.generate_ray(film_point, {u_lens.x, u_lens.y}, time);
+              prepared_camera.generate_ray(film_point, {u_lens.x, u_lens.y}, time);
           FirstHit first;
           Rgb radiance = ray ? integrator.radiance(scene, ray->to_ray(), sampler, counts,
                                                    aovs ? &first : nullptr)
