@@ -135,8 +135,12 @@ def cycles(model, out, name, spp, seed, camera, write_camera=False, threads=2):
     # Transparent film: composite over the background radiance 1, keep RGB, store as half.
     rgba = os.path.join(out, name + ".exr")
     opaque = os.path.join(out, name + ".rgb.exr")
-    run(["oiiotool", rgba, "--pattern", "constant:color=1,1,1,1", "%dx%d" % (SIZE, SIZE), "4",
-         "--over", "--ch", "R,G,B", "-d", "half", "--compression", "zip", "-o", opaque])
+    # --nosoftwareattrib and the two attributes: no command line (with this machine's paths)
+    # is written into a file the project keeps.
+    run(["oiiotool", "--nosoftwareattrib", rgba, "--pattern", "constant:color=1,1,1,1",
+         "%dx%d" % (SIZE, SIZE), "4", "--over", "--ch", "R,G,B", "--sattrib", "Software",
+         "Blender Cycles; composited over radiance 1 by oiiotool", "--sattrib",
+         "Exif:ImageHistory", "", "-d", "half", "--compression", "zip", "-o", opaque])
     return opaque
 
 
