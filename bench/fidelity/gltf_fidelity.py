@@ -123,7 +123,9 @@ def lambert_copy(model, out_dir, name):
 
 # --- renders ---------------------------------------------------------------------------------
 
-def cycles(model, out, name, spp, seed, camera, write_camera=False, threads=2):
+def cycles(model, out, name, spp, seed, camera, write_camera=False, threads=2, depth="half"):
+    """Cycles' render composited over the background, as NAME.rgb.exr (`depth`: half or float);
+    returns its path and Blender's log."""
     script = os.path.join(SHARED, "tools", "peers", "cycles", "gltf_cycles.py")
     # linear_textures.py: Cycles filters colour textures in linear light, as Obscura does.
     cmd = ["blender", "-b", "--factory-startup", "--python",
@@ -131,7 +133,7 @@ def cycles(model, out, name, spp, seed, camera, write_camera=False, threads=2):
            "--out", out, "--name", name, "--spp", str(spp), "--seed", str(seed), "--threads",
            str(threads), "--max-bounces", "64", "--fov", "40", "--size", str(SIZE), "--diffuse"]
     cmd += (["--write-camera", camera] if write_camera else ["--camera", camera])
-    run(cmd)
+    log = run(cmd)
     # Transparent film: composite over the background radiance 1, keep RGB, store as half.
     rgba = os.path.join(out, name + ".exr")
     opaque = os.path.join(out, name + ".rgb.exr")
@@ -140,8 +142,8 @@ def cycles(model, out, name, spp, seed, camera, write_camera=False, threads=2):
     run(["oiiotool", "--nosoftwareattrib", rgba, "--pattern", "constant:color=1,1,1,1",
          "%dx%d" % (SIZE, SIZE), "4", "--over", "--ch", "R,G,B", "--sattrib", "Software",
          "Blender Cycles; composited over radiance 1 by oiiotool", "--sattrib",
-         "Exif:ImageHistory", "", "-d", "half", "--compression", "zip", "-o", opaque])
-    return opaque
+         "Exif:ImageHistory", "", "-d", depth, "--compression", "zip", "-o", opaque])
+    return opaque, log
 
 
 def obscura_scene(model_copy, camera_json, path):
@@ -189,9 +191,9 @@ def main():
         noise_file = os.path.join(REFS, name + ".cycles.json")
         if a.references:
             os.makedirs(REFS, exist_ok=True)
-            r = cycles(model, out, name + "-ref", a.ref_spp, 1, camera, write_camera=True)
+            r, _ = cycles(model, out, name + "-ref", a.ref_spp, 1, camera, write_camera=True)
             shutil.copyfile(r, ref)
-            c = cycles(model, out, name + "-cycles", a.spp, 2, camera)
+            c, _ = cycles(model, out, name + "-cycles", a.spp, 2, camera)
             json.dump({"reference_spp": a.ref_spp, "spp": a.spp,
                        "cycles_rmse": rmse(binary, c, ref)}, open(noise_file, "w"), indent=1)
         copy = lambert_copy(model, out, name)

@@ -26,19 +26,8 @@ import gltf_fidelity as fid  # noqa: E402
 
 
 def cycles_run(model, out, name, spp, seed, camera, threads):
-    script = os.path.join(fid.SHARED, "tools", "peers", "cycles", "gltf_cycles.py")
-    cmd = ["blender", "-b", "--factory-startup", "--python",
-           os.path.join(fid.HERE, "linear_textures.py"), "--python", script, "--", "--model",
-           model, "--out", out, "--name", name, "--spp", str(spp), "--seed", str(seed),
-           "--threads", str(threads), "--max-bounces", "64", "--fov", "40", "--size",
-           str(fid.SIZE), "--diffuse", "--camera", camera]
-    log = fid.run(cmd)
-    seconds = float(re.search(r"render_s=([0-9.]+)", log).group(1))
-    rgba = os.path.join(out, name + ".exr")
-    opaque = os.path.join(out, name + ".rgb.exr")
-    fid.run(["oiiotool", rgba, "--pattern", "constant:color=1,1,1,1",
-             "%dx%d" % (fid.SIZE, fid.SIZE), "4", "--over", "--ch", "R,G,B", "-o", opaque])
-    return seconds, opaque
+    image, log = fid.cycles(model, out, name, spp, seed, camera, threads=threads, depth="float")
+    return float(re.search(r"render_s=([0-9.]+)", log).group(1)), image
 
 
 def obscura_run(binary, scene, out, spp, seed, threads):
@@ -97,6 +86,10 @@ def main():
             mean_t = sum(r[1] for r in rows) / n
             cost = sum((r[0] - mean_s) * (r[1] - mean_t) for r in rows) / \
                 sum((r[0] - mean_s) ** 2 for r in rows)
+            # Render times are reported to 0.1 s: too few samples can leave no slope to fit.
+            if cost <= 0:
+                sys.exit("%s: %s's time does not grow with spp; use larger sample counts" % (
+                    name, renderer))
             fixed = max(mean_t - cost * mean_s, 0.0)
             c = statistics.median(
                 math.sqrt(max(r[2] ** 2 - reference_noise ** 2, 0.0) * r[0]) for r in rows)

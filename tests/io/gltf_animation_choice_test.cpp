@@ -63,11 +63,9 @@ json two_animations() {
 }
 
 Scene load(const std::string& animation) {
-  std::string text = two_animations().dump();
   GltfLoadOptions options;
   options.animation = animation;
-  return load_gltf_bytes({reinterpret_cast<const uint8_t*>(text.data()), text.size()}, "two.gltf",
-                         ".", options);
+  return test::load_gltf_json(two_animations(), options, "two.gltf");
 }
 
 // Where the node's origin is at the end of the animation.

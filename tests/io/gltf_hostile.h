@@ -22,6 +22,26 @@ using nlohmann::json;
 
 constexpr uint64_t kCount2To62 = uint64_t(1) << 62;  // 4611686018427387904
 
+// A glTF document built as JSON in the test, loaded from memory (relative URIs against ".").
+inline Scene load_gltf_json(const json& document, const GltfLoadOptions& options = {},
+                            const std::string& name = "test.gltf") {
+  std::string text = document.dump();
+  return load_gltf_bytes({reinterpret_cast<const uint8_t*>(text.data()), text.size()}, name, ".",
+                         options);
+}
+
+// `load(document)` throws obscura::Error whose message names `field` (e.g.
+// "materials[0].extensions.KHR_materials_sheen.sheenColorFactor").
+template <class Load>
+void expect_error_naming(Load load, const json& document, const std::string& field) {
+  try {
+    load(document);
+    ADD_FAILURE() << "no error for " << field;
+  } catch (const Error& e) {
+    EXPECT_THAT(e.what(), ::testing::HasSubstr(field));
+  }
+}
+
 inline std::string base64(const std::vector<uint8_t>& bytes) {
   static const char* digits = "ABCDEFGHIJKLMNOPQRSTUVWXYZabcdefghijklmnopqrstuvwxyz0123456789+/";
   std::string out;

@@ -154,27 +154,13 @@ void expect_direct_light_agrees(const Scene& scene, RasterSettings settings,
   Camera camera = with_film(scene.camera, 200, 100);
   TracerImages traced = trace(scene, camera);
   RasterImages raster = rasterize(scene, camera, settings);
-  double max_relative = 0, sum_relative = 0;
-  int compared = 0;
-  int lit[3] = {0, 0, 0};
-  for (int y = 0; y < traced.color.height; ++y)
-    for (int x = 0; x < traced.color.width; ++x) {
-      float id = traced.id.at(x, y, 0);
-      if (id < 0 || raster.id.at(x, y, 0) != id || on_silhouette(traced.id, x, y)) continue;
-      for (int c = 0; c < 3; ++c) {
-        double t = traced.color.at(x, y, c), r = raster.color.at(x, y, c);
-        // Relative where lit, absolute (against a tenth of the typical level) in the dark.
-        double relative = std::abs(r - t) / std::max(t, 0.02);
-        max_relative = std::max(max_relative, relative);
-        sum_relative += relative;
-        if (c == 0 && t > 0.05) ++lit[int(id)];
-      }
-      ++compared;
-    }
-  ASSERT_GT(compared, 3000);
-  for (int i = 0; i < 3; ++i) EXPECT_GT(lit[i], 300) << "sphere " << i << " is hardly lit";
-  EXPECT_LT(sum_relative / (3 * compared), mean_relative_bound);
-  EXPECT_LT(max_relative, max_relative_bound);
+  // Relative where lit, absolute (against a tenth of the typical level) in the dark.
+  test_images::ColourAgreement a =
+      test_images::compare_colours(traced.color, traced.id, raster.color, raster.id);
+  ASSERT_GT(a.compared, 3000);
+  for (int i = 0; i < 3; ++i) EXPECT_GT(a.lit[i], 300) << "sphere " << i << " is hardly lit";
+  EXPECT_LT(a.mean_relative, mean_relative_bound);
+  EXPECT_LT(a.max_relative, max_relative_bound);
 }
 
 // Shading alone: no sphere shadows another, and the rasterizer draws without shadow maps (their
