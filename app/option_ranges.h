@@ -17,8 +17,8 @@ namespace obscura::app {
 inline constexpr int64_t kMaxImageSidePx = 65536;
 inline constexpr int64_t kMaxImagePixels = int64_t(1) << 28;
 
-inline constexpr int64_t kMaxRasterSamples = int64_t(1) << 16;    // --raster-samples
-inline constexpr int64_t kMaxTraceDepth = 1024;                   // --max-depth
+inline constexpr int64_t kMaxRasterSamples = int64_t(1) << 16;  // --raster-samples
+inline constexpr int64_t kMaxTraceDepth = 1024;                 // --max-depth
 inline constexpr int64_t kMaxThreads = 4096;
 inline constexpr double kMaxTimeLimitS = 1e7;  // about four months
 // 2^±64 keeps any radiance a scene can hold (≤ 1e15 or so) finite in a float film.

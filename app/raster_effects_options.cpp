@@ -50,9 +50,9 @@ bool wants_raster_effects(const RasterEffectsOptions& o, const Scene& scene) {
 
 RasterRender render_raster_effects(const Scene& scene, const RasterOptions& raster,
                                    const RasterEffectsOptions& effects, bool aovs, uint64_t seed,
-                                   Film& film, const std::string& output,
-                                   const ProgressCallback& progress,
-                                   const std::atomic<bool>* cancel, double time_limit_s) {
+                                   Film& film, const ProgressCallback& progress,
+                                   const std::atomic<bool>* cancel, double time_limit_s,
+                                   const WorkShare& share) {
   auto start = std::chrono::steady_clock::now();
   const Camera& camera = scene.camera;
   const bool post = effects.dof == "post" && camera.lens.depth_of_field;
@@ -67,7 +67,8 @@ RasterRender render_raster_effects(const Scene& scene, const RasterOptions& rast
                                         .aovs = aovs || post,
                                         .depth_of_field = lens_blur,
                                         .cancel = cancel,
-                                        .time_limit_s = time_limit_s};
+                                        .time_limit_s = time_limit_s,
+                                        .share = share};
   raster::RenderTarget middle = rasterizer.make_target(camera);
   raster::AccumulationStats stats = raster::accumulate(
       camera, settings,
@@ -76,15 +77,6 @@ RasterRender render_raster_effects(const Scene& scene, const RasterOptions& rast
             camera, {frame.sample.time_s, frame.lens.view, frame.lens.projection}, target);
       },
       film, progress, &middle);
-
-  if (post) {
-    // The post-process works on the accumulated (motion-blurred) colour with the depth of the
-    // frame nearest mid-shutter.
-    Image blurred = raster::depth_of_field_post(film.to_image(), middle.view_depth_image(), camera);
-    film = Film(film.width(), film.height());
-    for (int y = 0; y < film.height(); ++y)
-      for (int x = 0; x < film.width(); ++x) film.add_sample({x, y}, blurred.rgb(x, y));
-  }
 
   RasterRender result;
   result.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
@@ -95,9 +87,18 @@ RasterRender render_raster_effects(const Scene& scene, const RasterOptions& rast
                      .done = stats.frames,
                      .requested = settings.samples,
                      .unit = "frames"};
-  if (aovs)
-    result.aov_paths = write_raster_aovs(middle, camera, output, partial_metadata(result.progress));
+  if (aovs) result.aovs = raster_aov_images(middle, camera);
+  // The post-process works on the accumulated (motion-blurred) colour with the depth of the
+  // frame nearest mid-shutter, once the frame is whole.
+  if (post) result.post_dof_depth = middle.view_depth_image();
   return result;
+}
+
+void apply_depth_of_field_post(Film& film, const Image& view_depth, const Camera& camera) {
+  Image blurred = raster::depth_of_field_post(film.to_image(), view_depth, camera);
+  film = Film(film.width(), film.height());
+  for (int y = 0; y < film.height(); ++y)
+    for (int x = 0; x < film.width(); ++x) film.add_sample({x, y}, blurred.rgb(x, y));
 }
 
 }  // namespace obscura::app

@@ -33,14 +33,17 @@ void validate(const RasterEffectsOptions& options, const std::string& renderer);
 bool wants_raster_effects(const RasterEffectsOptions& options, const Scene& scene);
 
 // Renders `scene` into `film` (the crop's size) with the effects: `samples` frames through
-// jittered lens points and shutter times (one when nothing needs them), then the post-process
-// when asked for. With `aovs`, writes the id/depth/normal outputs of the frame nearest
-// mid-shutter beside `output`, as render_raster does.
+// jittered lens points and shutter times (one when nothing needs them), drawing the tiles `share`
+// owns. With `aovs`, the id/depth/normal images of the frame nearest mid-shutter, as
+// render_raster gives them; with --raster-dof post, the view depth for the post-process.
 RasterRender render_raster_effects(const Scene& scene, const RasterOptions& raster,
                                    const RasterEffectsOptions& effects, bool aovs, uint64_t seed,
-                                   Film& film, const std::string& output,
-                                   const ProgressCallback& progress = {},
+                                   Film& film, const ProgressCallback& progress = {},
                                    const std::atomic<bool>* cancel = nullptr,
-                                   double time_limit_s = 0);
+                                   double time_limit_s = 0, const WorkShare& share = {});
+
+// The depth-of-field post-process on a whole frame: `film` blurred by the camera's lens with the
+// view depth of RasterRender::post_dof_depth.
+void apply_depth_of_field_post(Film& film, const Image& view_depth, const Camera& camera);
 
 }  // namespace obscura::app

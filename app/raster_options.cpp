@@ -2,7 +2,6 @@
 
 #include <chrono>
 
-#include "obscura/io/image_io.h"
 #include "option_ranges.h"
 #include "usage_error.h"
 
@@ -62,34 +61,25 @@ raster::RasterSettings raster_settings(const RasterOptions& o, bool aovs) {
 }
 
 RasterRender render_raster(const Scene& scene, const RasterOptions& options, bool aovs, Film& film,
-                           const std::string& output) {
+                           const WorkShare& share) {
   auto start = std::chrono::steady_clock::now();
   raster::SceneRasterizer rasterizer(scene, raster_settings(options, aovs));
   raster::RenderTarget target = rasterizer.make_target(scene.camera);
+  target.set_share(share.part, share.parts);
   rasterizer.render(scene.camera, film, &target);
   RasterRender result;
   result.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   result.warnings = rasterizer.warnings();
   result.progress = {.end = RenderEnd::kComplete, .done = 1, .requested = 1, .unit = "frames"};
-  if (aovs) result.aov_paths = write_raster_aovs(target, scene.camera, output);
+  if (aovs) result.aovs = raster_aov_images(target, scene.camera);
   return result;
 }
 
-std::vector<std::string> write_raster_aovs(const raster::RenderTarget& target, const Camera& camera,
-                                           const std::string& output,
-                                           const ImageMetadata& metadata) {
-  std::string stem = output.substr(0, output.find_last_of('.'));
-  std::vector<std::string> paths;
-  auto write = [&](const char* name, const Image& image) {
-    paths.push_back(stem + "." + name + ".exr");
-    ImageWriteOptions write_options;
-    write_options.metadata = metadata;
-    write_image(paths.back(), image, write_options);
-  };
-  write("normal", raster::normal_image(target));
-  write("depth", raster::distance_image(target, camera));
-  write("id", raster::id_image(target));
-  return paths;
+std::vector<NamedImage> raster_aov_images(const raster::RenderTarget& target,
+                                          const Camera& camera) {
+  return {{"normal", raster::normal_image(target)},
+          {"depth", raster::distance_image(target, camera)},
+          {"id", raster::id_image(target)}};
 }
 
 }  // namespace obscura::app

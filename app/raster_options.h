@@ -2,12 +2,15 @@
 // and the render itself (scene → SceneRasterizer → film, plus the id/depth/normal outputs).
 #pragma once
 
+#include <optional>
 #include <string>
 #include <vector>
 
 #include <CLI/CLI.hpp>
 
+#include "aov_images.h"
 #include "obscura/film/film.h"
+#include "obscura/film/work_share.h"
 #include "obscura/raster/scene_rasterizer.h"
 #include "obscura/scene/scene.h"
 #include "partial_render.h"
@@ -32,18 +35,19 @@ void reject_unless_raster(const std::vector<CLI::Option*>& registered, const std
 raster::RasterSettings raster_settings(const RasterOptions& options, bool aovs);
 
 struct RasterRender {
-  double seconds = 0;  // compiling the scene and drawing the frame
-  std::vector<std::string> aov_paths;
+  double seconds = 0;            // compiling the scene and drawing the frame(s)
+  std::vector<NamedImage> aovs;  // with aovs: normal, depth, id
+  // --raster-dof post: the view depth the post-process blurs with. It needs the whole frame, so
+  // it is applied once the frame is assembled (apply_depth_of_field_post).
+  std::optional<Image> post_dof_depth;
   std::vector<std::string> warnings;
   RenderProgress progress;  // frames drawn of those asked for, and how the render ended
 };
-// Renders one frame of `scene` with its camera into `film` (the crop's size); with `aovs`,
-// writes <output>.depth.exr, .normal.exr and .id.exr beside `output`, as the tracer does.
+// Renders one frame of `scene` with its camera into `film` (the crop's size), drawing the tiles
+// `share` owns; with `aovs`, also the normal, depth and id images, as the tracer's.
 RasterRender render_raster(const Scene& scene, const RasterOptions& options, bool aovs, Film& film,
-                           const std::string& output);
-// Writes the target's normal, depth and id images beside `output`; returns their paths.
-std::vector<std::string> write_raster_aovs(const raster::RenderTarget& target, const Camera& camera,
-                                           const std::string& output,
-                                           const ImageMetadata& metadata = {});
+                           const WorkShare& share = {});
+// The target's normal, depth (distance from the eye) and id images.
+std::vector<NamedImage> raster_aov_images(const raster::RenderTarget& target, const Camera& camera);
 
 }  // namespace obscura::app

@@ -16,9 +16,9 @@ namespace {
 
 std::atomic<bool> interrupt_requested{false};
 
-extern "C" void on_sigint(int) {
+extern "C" void on_interrupt(int signal) {
   interrupt_requested.store(true);
-  std::signal(SIGINT, SIG_DFL);  // a second Ctrl-C ends the process at once
+  std::signal(signal, SIG_DFL);  // a second Ctrl-C ends the process at once
 }
 
 }  // namespace
@@ -79,39 +79,16 @@ int samples_per_pixel(const TracerOptions& o, int spp) {
   return o.time_limit_s > 0 && !spp_given ? std::numeric_limits<int>::max() / 2 : spp;
 }
 
-std::vector<std::string> aov_paths(const std::string& output, const std::string& renderer) {
-  std::string stem = output.substr(0, output.find_last_of('.'));
-  std::vector<std::string> paths;
-  for (const char* name : {"albedo", "normal", "depth", "id"})
-    if (renderer != "raster" || std::string(name) != "albedo")
-      paths.push_back(stem + "." + name + ".exr");
-  return paths;
-}
-
-std::vector<std::string> write_aovs(const std::string& output, const AovBuffers& aovs,
-                                    const ImageMetadata& metadata) {
-  std::string stem = output.substr(0, output.find_last_of('.'));
-  std::vector<std::string> paths;
-  auto write = [&](const char* name, const Image& image) {
-    paths.push_back(stem + "." + name + ".exr");
-    ImageWriteOptions write_options;
-    write_options.metadata = metadata;
-    write_image(paths.back(), image, write_options);
-  };
-  write("albedo", aovs.albedo());
-  write("normal", aovs.normal());
-  write("depth", aovs.depth());
-  write("id", aovs.id());
-  return paths;
-}
-
 InterruptGuard::InterruptGuard() {
   interrupt_requested.store(false);
-  std::signal(SIGINT, on_sigint);
+  std::signal(SIGINT, on_interrupt);
+  // What mpirun sends every rank on Ctrl-C, and farm managers to cancel a task.
+  std::signal(SIGTERM, on_interrupt);
 }
 
 InterruptGuard::~InterruptGuard() {
   std::signal(SIGINT, SIG_DFL);
+  std::signal(SIGTERM, SIG_DFL);
 }
 
 const std::atomic<bool>& InterruptGuard::requested() {

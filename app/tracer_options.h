@@ -32,14 +32,9 @@ SamplerType sampler_type(const TracerOptions& options);
 std::unique_ptr<Integrator> make_integrator(const TracerOptions& options);
 // With --time-limit and no --spp, samples are unlimited (until the time is up).
 int samples_per_pixel(const TracerOptions& options, int spp);
-// Writes the AOV images beside `output` (render.png → render.albedo.exr, …); returns the paths.
-std::vector<std::string> write_aovs(const std::string& output, const AovBuffers& aovs,
-                                    const ImageMetadata& metadata = {});
-// The files --aovs writes beside `output` for a renderer ("raster" writes no albedo).
-std::vector<std::string> aov_paths(const std::string& output, const std::string& renderer);
-
-// While alive, SIGINT (Ctrl-C) sets `requested()` instead of killing the process, so the
-// render stops and the image rendered so far is still written. A second Ctrl-C kills.
+// While alive, SIGINT (Ctrl-C) and SIGTERM (what mpirun passes on to every rank for a Ctrl-C,
+// and what farm managers send to cancel) set `requested()` instead of killing the process, so
+// the render stops and the image rendered so far is still written. A second signal kills.
 class InterruptGuard {
  public:
   InterruptGuard();

@@ -40,6 +40,12 @@ class Film {
   // The film as a linear RGB image.
   Image to_image() const;
 
+  // The film's sums exactly as held: Σ w·L as channels R, G, B and Σ w as W. What a process that
+  // rendered part of a frame hands over, and from_sums() takes back, bit for bit.
+  Image sums() const;
+  // Throws obscura::Error unless `sums` has 4 channels and a positive size.
+  static Film from_sums(const Image& sums);
+
  private:
   struct Pixel {
     Rgb weighted_sum;

@@ -11,7 +11,7 @@ namespace obscura {
 
 struct Image {
   int width = 0, height = 0, channels = 0;
-  std::vector<float> data;  // row-major, interleaved channels
+  std::vector<float> data;                 // row-major, interleaved channels
   std::vector<std::string> channel_names;  // e.g. {"R", "G", "B"}; empty means the defaults
 
   Image() = default;

@@ -20,5 +20,9 @@ std::vector<Bounds2i> make_tiles(Bounds2i region, int tile_size);
 void for_each_tile_parallel(Bounds2i region, int tile_size,
                             const std::function<void(const Bounds2i&)>& render_tile,
                             const ProgressCallback& progress = {});
+// The same over a list of tiles (which must not overlap); progress counts them.
+void for_each_tile_parallel(const std::vector<Bounds2i>& tiles,
+                            const std::function<void(const Bounds2i&)>& render_tile,
+                            const ProgressCallback& progress = {});
 
 }  // namespace obscura

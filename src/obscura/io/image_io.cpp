@@ -298,6 +298,45 @@ WriteReport write_image(const std::string& path, const Image& image,
   return {developed.stats};
 }
 
+void write_exr_data(const std::string& path, const Image& image, const ImageMetadata& metadata) {
+  if (image.width <= 0 || image.height <= 0 || image.channels <= 0 ||
+      image.channel_names.size() != size_t(image.channels) ||
+      image.data.size() != size_t(image.width) * image.height * image.channels)
+    throw Error(path, "cannot write " + std::to_string(image.width) + "x" +
+                          std::to_string(image.height) + "x" + std::to_string(image.channels) +
+                          " data: expected a non-empty image with a name for every channel");
+  if (image_format_for_path(path) != ImageFormat::kExr)
+    throw Error(path, "data files are OpenEXR: the name must end in .exr");
+  check_output_path(path);
+  OIIO::ImageSpec spec(image.width, image.height, image.channels, OIIO::TypeDesc::FLOAT);
+  spec.channelnames = image.channel_names;
+  spec.attribute("Software", "Obscura " OBSCURA_VERSION);
+  spec.attribute("compression", "zip");
+  add_metadata(spec, metadata);
+  write_encoded(path, spec, [&](OIIO::ImageOutput& out) {
+    return out.write_image(OIIO::TypeDesc::FLOAT, image.data.data());
+  });
+}
+
+Image read_exr_data(const std::string& path, ImageMetadata& metadata) {
+  CheckedImageInput in = CheckedImageInput::open_file(path);
+  const OIIO::ImageSpec& spec = in.spec();
+  if (std::string(in.format_name()) != "openexr")
+    throw Error(path, "not an OpenEXR file (a " + std::string(in.format_name()) + " file)");
+  Image image(spec.width, spec.height, spec.nchannels);
+  image.channel_names = spec.channelnames;
+  in.read(spec.nchannels, OIIO::TypeDesc::FLOAT, image.data.data());
+  metadata = {};
+  for (const OIIO::ParamValue& p : spec.extra_attribs) {
+    if (p.type() != OIIO::TypeDesc::STRING) continue;
+    if (p.name() == "ImageDescription")
+      metadata.description = p.get_string();
+    else
+      metadata.attributes.emplace_back(p.name().string(), p.get_string());
+  }
+  return image;
+}
+
 Image read_image(const std::string& path) {
   CheckedImageInput in = CheckedImageInput::open_file(path);
   const OIIO::ImageSpec& spec = in.spec();

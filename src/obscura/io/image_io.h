@@ -69,6 +69,14 @@ WriteReport write_image(const std::string& path, const Image& linear_image,
 void write_display_image(const std::string& path, const DisplayImage& image,
                          const ImageMetadata& metadata = {});
 
+// Writes named float channels (any number) to an OpenEXR file exactly as they are, NaN and ±Inf
+// included, with `metadata`: data passed between Obscura's own commands (the partial films of
+// `render --shard`), not an image for viewing. Atomic like write_image. Throws obscura::Error.
+void write_exr_data(const std::string& path, const Image& image, const ImageMetadata& metadata);
+// Reads every channel of an OpenEXR file as float, with its string attributes (and description)
+// into `metadata`. Throws obscura::Error naming the file.
+Image read_exr_data(const std::string& path, ImageMetadata& metadata);
+
 // Reads an image as stored: 8/16-bit files give values in [0, 1] still encoded (no decoding is
 // applied), float files their float values. Formats: PNG, JPEG, EXR, HDR, TIFF, PFM, and anything
 // else OpenImageIO reads.

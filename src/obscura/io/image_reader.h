@@ -48,6 +48,8 @@ class CheckedImageInput {
 
   const OIIO::ImageSpec& spec() const { return input_->spec(); }
   const std::string& source() const { return source_; }
+  // The reader's format: "openexr", "png", …
+  const char* format_name() const { return input_->format_name(); }
 
   // Decodes subimage 0's channels [0, channels) as `type` into `pixels`, which holds
   // width × height × channels values. Throws obscura::Error naming the source on failure.

@@ -60,15 +60,21 @@ AccumulationStats accumulate(const Camera& camera, const AccumulationSettings& s
   };
   AccumulationStats stats;
   RenderTarget target(film.width(), film.height(), settings.msaa_samples, settings.aovs);
+  target.set_share(settings.share.part, settings.share.parts);
   for (int i = 0; i < settings.samples; ++i) {
-    if (i > 0 && settings.cancel && settings.cancel->load()) {
-      stats.cancelled = true;
-      break;
-    }
-    if (i > 0 && settings.time_limit_s > 0) {
-      double now = elapsed();
-      if (now + now / i > settings.time_limit_s) {
-        stats.time_limited = true;
+    if (i > 0) {
+      // Stop before this frame? This process's verdict, then the team's.
+      StopVerdict own = StopVerdict::kGoOn;
+      if (settings.cancel && settings.cancel->load()) {
+        own = StopVerdict::kCancelled;
+      } else if (settings.time_limit_s > 0) {
+        double now = elapsed();
+        if (now + now / i > settings.time_limit_s) own = StopVerdict::kTimeLimit;
+      }
+      const StopVerdict verdict = settings.share.agree(own);
+      if (verdict != StopVerdict::kGoOn) {
+        stats.cancelled = verdict == StopVerdict::kCancelled;
+        stats.time_limited = verdict == StopVerdict::kTimeLimit;
         break;
       }
     }

@@ -24,6 +24,7 @@
 #include "obscura/camera/lens_view.h"
 #include "obscura/film/film.h"
 #include "obscura/film/tiles.h"
+#include "obscura/film/work_share.h"
 #include "obscura/raster/render_target.h"
 
 namespace obscura::raster {
@@ -55,6 +56,10 @@ struct AccumulationSettings {
   // frame that would end past time_limit_s seconds (0 = none), predicted from the mean frame time.
   const std::atomic<bool>* cancel = nullptr;
   double time_limit_s = 0;
+  // Several processes drawing the frames together: each rasterizes its share's tiles of every
+  // frame (RenderTarget::set_share) and settles with the others after each frame, so that all
+  // stop after the same frame. Default: alone.
+  WorkShare share = {};
 };
 
 // What accumulate() did: frames drawn (== settings.samples unless it stopped early) and why it

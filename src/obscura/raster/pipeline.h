@@ -115,6 +115,7 @@ template <Program P, DepthFunc F>
 void rasterize_tiles(const TileJob<P>& job) {
   [[maybe_unused]] const bool avx2 = use_avx2().load(std::memory_order_relaxed);
   tbb::parallel_for(0, job.grid.count(), [&](int tile) {
+    if (!job.target.draws_tile(tile)) return;
 #if defined(__x86_64__) && defined(__GNUC__)
     if (avx2) return rasterize_tile_avx2<P, F>(job, tile);
 #endif

@@ -31,6 +31,14 @@ RenderTarget::RenderTarget(int width, int height, int samples, bool aovs)
   }
 }
 
+void RenderTarget::set_share(int part, int parts) {
+  if (parts < 1 || part < 0 || part >= parts)
+    throw Error("render target", "part " + std::to_string(part) + " of " + std::to_string(parts) +
+                                     " does not exist");
+  share_part_ = part;
+  share_parts_ = parts;
+}
+
 void RenderTarget::clear(Rgb color, float depth) {
   for (size_t g = 0; g < color_.size(); g += 3 * kRowAlignment) {
     std::fill_n(color_.begin() + g, kRowAlignment, color.r);

@@ -35,6 +35,13 @@ class RenderTarget {
   int stride() const { return stride_; }
   bool has_aovs() const { return aovs_; }
 
+  // When several processes draw one frame together (film/work_share.h): draws rasterize only the
+  // tiles of the pipeline's grid (kTileSize pixels, numbered row by row) that `part` of `parts`
+  // owns, and leave the others as clear() made them. Every pixel drawn is bit-identical to the
+  // same pixel drawn alone. Default: part 0 of 1, every tile.
+  void set_share(int part, int parts);
+  bool draws_tile(int tile) const { return tile % share_parts_ == share_part_; }
+
   // Sets every sample's colour and depth; ids to kNoObject, view depth to +∞, normals to zero.
   void clear(Rgb color = {}, float depth = 1.f);
 
@@ -89,6 +96,7 @@ class RenderTarget {
  private:
   int width_, height_, samples_, stride_;
   bool aovs_;
+  int share_part_ = 0, share_parts_ = 1;
   std::vector<float> color_;  // planar groups, see above
   std::vector<float> depth_;
   std::vector<uint32_t> object_id_, primitive_id_;

@@ -6,6 +6,7 @@
 #include <limits>
 #include <mutex>
 #include <string>
+#include <vector>
 
 #include "obscura/camera/pixel_filter.h"
 #include "obscura/math/error.h"
@@ -55,7 +56,17 @@ RenderStats render(const TraceScene& scene, const Camera& camera, const Integrat
   auto start = Clock::now();
   RenderStats stats;
   std::mutex stats_mutex;
-  const int tile_count = int(make_tiles(film.bounds(), settings.tile_size).size());
+  if (settings.share.parts < 1 || settings.share.part < 0 ||
+      settings.share.part >= settings.share.parts)
+    throw Error("render", "part " + std::to_string(settings.share.part) + " of " +
+                              std::to_string(settings.share.parts) + " does not exist");
+  std::vector<Bounds2i> tiles;
+  {
+    std::vector<Bounds2i> all = make_tiles(film.bounds(), settings.tile_size);
+    for (size_t t = 0; t < all.size(); ++t)
+      if (settings.share.owns_tile(int(t))) tiles.push_back(all[t]);
+  }
+  const int tile_count = int(tiles.size());
   const int spp = settings.samples_per_pixel;
 
   auto render_samples = [&](const Bounds2i& tile, int first_sample, int end_sample) {
@@ -99,7 +110,7 @@ RenderStats render(const TraceScene& scene, const Camera& camera, const Integrat
     double pass_start = seconds_since(start);
     int pass_first = done;
     for_each_tile_parallel(
-        film.bounds(), settings.tile_size,
+        tiles,
         [&](const Bounds2i& tile) {
           if (!cancelled(settings)) render_samples(tile, pass_first, end);
         },
@@ -113,17 +124,26 @@ RenderStats render(const TraceScene& scene, const Camera& camera, const Integrat
           progress(int(now / scale), int(total / scale));
         })
                  : ProgressCallback());
+    // This process's verdict, then the team's: cancelled, or would the next pass (about twice as
+    // long as this one) overrun the time limit?
+    StopVerdict own = StopVerdict::kGoOn;
+    const int next_pass_size = end > 1 ? std::min(64, pass_size * 2) : pass_size;
     if (cancelled(settings)) {
+      own = StopVerdict::kCancelled;
+    } else if (end < spp && settings.time_limit_s > 0) {
+      double now = seconds_since(start), pass_seconds = now - pass_start;
+      double next_seconds =
+          pass_seconds * std::min(spp - end, next_pass_size) / std::max(1, end - pass_first);
+      if (now + next_seconds > settings.time_limit_s) own = StopVerdict::kTimeLimit;
+    }
+    const StopVerdict verdict = settings.share.agree(own);
+    if (verdict == StopVerdict::kCancelled) {
       stats.cancelled = stats.partial = true;
       break;
     }
     done = end;
-    double now = seconds_since(start), pass_seconds = now - pass_start;
-    if (done > 1) pass_size = std::min(64, pass_size * 2);
-    // Would the next pass (about twice as long as this one) overrun the limit?
-    double next_seconds =
-        pass_seconds * std::min(spp - done, pass_size) / std::max(1, end - pass_first);
-    if (done < spp && settings.time_limit_s > 0 && now + next_seconds > settings.time_limit_s) {
+    pass_size = next_pass_size;
+    if (verdict == StopVerdict::kTimeLimit) {
       stats.partial = true;
       break;
     }

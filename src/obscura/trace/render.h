@@ -9,6 +9,7 @@
 #include "obscura/film/aov_buffers.h"
 #include "obscura/film/film.h"
 #include "obscura/film/tiles.h"
+#include "obscura/film/work_share.h"
 #include "obscura/trace/integrator.h"
 
 namespace obscura {
@@ -23,6 +24,9 @@ struct RenderSettings {
   double time_limit_s = 0;
   // Set from another thread (a signal handler) to stop: tiles not yet started are skipped.
   const std::atomic<bool>* cancel = nullptr;
+  // The tiles this process renders when several render the frame together (tiles of tile_size,
+  // dealt as TileDeal deals them), and how they agree to stop. Default: all of them, alone.
+  WorkShare share = {};
 };
 
 struct RenderStats {
@@ -42,6 +46,9 @@ struct RenderStats {
 // cancellation leaves an evenly sampled image. Deterministic: every random number is a function
 // of (seed, pixel, sample, dimension) and each pixel sums its own samples in order, so the image
 // is bit-identical for any thread count (for time-limited renders: for the same pass count).
+// With a share of the work, only the share's tiles are rendered (the others stay empty) and each
+// of them is bit-identical to the same tile of a lone render; every part calls share.settle once
+// per pass.
 RenderStats render(const TraceScene& scene, const Camera& camera, const Integrator& integrator,
                    const RenderSettings& settings, Film& film,
                    const ProgressCallback& progress = {}, AovBuffers* aovs = nullptr);

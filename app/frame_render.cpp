@@ -1,0 +1,183 @@
+#include "frame_render.h"
+
+#include <cstdio>
+#include <memory>
+
+#include "image_limit_option.h"
+#include "obscura/film/aov_buffers.h"
+#include "obscura/film/film.h"
+#include "obscura/io/default_environment.h"
+#include "obscura/io/image_io.h"
+#include "obscura/io/scene_loader.h"
+#include "obscura/raster/binner.h"
+#include "obscura/scene/material_variants.h"
+#include "obscura/trace/render.h"
+#include "option_ranges.h"
+#include "usage_error.h"
+
+namespace obscura::app {
+
+namespace {
+
+// The scene file's suggested settings, where the command line did not give them.
+void apply_scene_settings(const SceneRenderSettings& s, RenderOptions& o) {
+  if (s.width && !o.width_given) o.width = *s.width;
+  if (s.height && !o.height_given) o.height = *s.height;
+  if (s.samples_per_pixel && !o.spp_given) o.spp = *s.samples_per_pixel;
+  if (s.seed && !o.seed_given) o.seed = *s.seed;
+}
+
+void validate(const RenderOptions& o) {
+  if (o.width <= 0)
+    throw UsageError("--width must be a positive number of pixels; got " + std::to_string(o.width));
+  if (o.height <= 0)
+    throw UsageError("--height must be a positive number of pixels; got " +
+                     std::to_string(o.height));
+  if (o.spp <= 0)
+    throw UsageError("--spp must be a positive number of samples per pixel; got " +
+                     std::to_string(o.spp));
+  // The sides were range-checked as they were parsed; their product is checked here.
+  if (o.width_given && o.height_given) check_image_size(o.width, o.height, true);
+  if (o.threads < 0)
+    throw UsageError("--threads must be 0 (all cores) or positive; got " +
+                     std::to_string(o.threads));
+  if (o.environment.empty())
+    throw UsageError("--environment: expected auto, none, studio, white or a file");
+  if (!(o.environment_intensity >= 0 && o.environment_intensity <= 1e6))
+    throw UsageError("--environment-intensity must be in [0, 1e6]; got " +
+                     std::to_string(o.environment_intensity));
+}
+
+constexpr int kTracerTileSize = 16;  // RenderSettings' default
+
+RenderedFrame render_with_rasterizer(const Scene& scene, const RenderOptions& options,
+                                     const WorkShare& share, const ProgressCallback& progress,
+                                     Film& film) {
+  const bool effects = wants_raster_effects(options.raster_effects, scene);
+  RasterRender r = effects ? render_raster_effects(scene, options.raster, options.raster_effects,
+                                                   options.tracer.aovs, options.seed, film,
+                                                   progress, &InterruptGuard::requested(),
+                                                   options.tracer.time_limit_s, share)
+                           : render_raster(scene, options.raster, options.tracer.aovs, film, share);
+  RenderedFrame frame;
+  frame.aovs = std::move(r.aovs);
+  frame.post_dof_depth = std::move(r.post_dof_depth);
+  frame.progress = r.progress;
+  frame.warnings = std::move(r.warnings);
+  frame.seconds = r.seconds;
+  return frame;
+}
+
+RenderedFrame render_with_tracer(const Scene& scene, const RenderOptions& options,
+                                 const WorkShare& share, const ProgressCallback& progress,
+                                 Film& film) {
+  auto device = std::make_shared<EmbreeDevice>();
+  TraceScene trace_scene(scene, device);
+  const int requested_spp = samples_per_pixel(options.tracer, options.spp);
+  RenderSettings settings{.samples_per_pixel = requested_spp,
+                          .seed = options.seed,
+                          .sampler = sampler_type(options.tracer),
+                          .tile_size = kTracerTileSize,
+                          .time_limit_s = options.tracer.time_limit_s,
+                          .cancel = &InterruptGuard::requested(),
+                          .share = share};
+  std::optional<AovBuffers> aovs;
+  if (options.tracer.aovs) aovs.emplace(film.width(), film.height());
+  RenderStats stats = render(trace_scene, scene.camera, *make_integrator(options.tracer), settings,
+                             film, progress, aovs ? &*aovs : nullptr);
+  // Without --spp, a time limit asks for as many samples as fit: reaching it completes the render.
+  const bool open_ended = requested_spp != options.spp;
+  RenderedFrame frame;
+  frame.progress = {.end = stats.cancelled                ? RenderEnd::kInterrupted
+                           : stats.partial && !open_ended ? RenderEnd::kTimeLimit
+                                                          : RenderEnd::kComplete,
+                    .done = stats.samples_per_pixel,
+                    .requested = requested_spp,
+                    .unit = "samples per pixel"};
+  frame.time_limit_reached = open_ended && stats.partial && !stats.cancelled;
+  frame.seconds = stats.seconds;
+  frame.rays = double(stats.rays.total());
+  if (aovs) frame.aovs = tracer_aov_images(*aovs);
+  return frame;
+}
+
+}  // namespace
+
+Scene prepare_scene(RenderOptions& options, bool writes_output) {
+  validate(options);
+  validate(options.tracer);
+  validate(options.raster, options.tracer.renderer);
+  validate(options.raster_effects, options.tracer.renderer);
+  if (writes_output) check_output_path(options.output);  // fail before rendering, not after
+
+  // Skins and morph targets are posed when the file is read, at the shutter's middle.
+  const Shutter shutter = shutter_option(options.camera);
+  Scene scene = obscura::load_scene(options.scene, gltf_load_options(options.choice, shutter));
+  if (!options.gltf_variant.empty()) select_material_variant(scene, options.gltf_variant);
+  EnvironmentChoice environment = parse_environment_choice(options.environment);
+  environment.intensity = float(options.environment_intensity);
+  apply_environment(scene, environment);
+  // Before rendering: no output may replace the scene file, a model, buffer or texture.
+  if (writes_output) {
+    check_not_an_input(options.output, scene.input_files);
+    if (options.tracer.aovs)
+      for (const std::string& aov : aov_paths(options.output, options.tracer.renderer))
+        check_not_an_input(aov, scene.input_files);
+  }
+  apply_scene_settings(scene.render, options);
+  check_image_size(options.width, options.height, options.width_given || options.height_given);
+  scene.camera = resolve_camera(scene, options.camera, options.width, options.height);
+  scene.camera.shutter = shutter_at_time(options.choice, scene.camera.shutter);
+  scene.validate();
+  return scene;
+}
+
+TileDeal tile_deal(const std::string& renderer, int width, int height, int parts) {
+  return {.width = width,
+          .height = height,
+          .tile_size = renderer == "raster" ? raster::kTileSize : kTracerTileSize,
+          .parts = parts};
+}
+
+RenderedFrame render_frame(const Scene& scene, const RenderOptions& options, const WorkShare& share,
+                           const ProgressCallback& progress) {
+  Bounds2i crop = scene.camera.film.crop_pixels();
+  Film film(crop.width(), crop.height());
+  RenderedFrame frame = options.tracer.renderer == "raster"
+                            ? render_with_rasterizer(scene, options, share, progress, film)
+                            : render_with_tracer(scene, options, share, progress, film);
+  frame.renderer = options.tracer.renderer;
+  frame.film_sums = film.sums();
+  return frame;
+}
+
+void gather_frame(Team& team, RenderedFrame& frame) {
+  if (team.alone()) return;
+  const TileDeal deal =
+      tile_deal(frame.renderer, frame.film_sums.width, frame.film_sums.height, team.size());
+  team.gather(deal, frame.film_sums);
+  for (NamedImage& aov : frame.aovs) team.gather(deal, aov.image);
+  if (frame.post_dof_depth) team.gather(deal, *frame.post_dof_depth);
+}
+
+Image finished_image(const RenderedFrame& frame, const Camera& camera) {
+  Film film = Film::from_sums(frame.film_sums);
+  if (frame.post_dof_depth) apply_depth_of_field_post(film, *frame.post_dof_depth, camera);
+  return film.to_image();
+}
+
+void write_frame(const RenderOptions& options, const std::string& output,
+                 const RenderedFrame& frame, const Camera& camera) {
+  ImageWriteOptions write_options = image_write_options(options.display);
+  write_options.metadata = partial_metadata(frame.progress);
+  report_write(output, write_image(output, finished_image(frame, camera), write_options),
+               options.quiet);
+  warn_if_unmarked(output, frame.progress, options.quiet);
+  std::printf("%s\n", output.c_str());
+  for (const std::string& path :
+       write_aov_images(output, frame.aovs, partial_metadata(frame.progress)))
+    std::printf("%s\n", path.c_str());
+  set_exit_status(exit_status_for(frame.progress.end));
+}
+
+}  // namespace obscura::app

@@ -1,0 +1,58 @@
+// One frame of `obscura render`, from a loaded scene to the images to write, as either renderer
+// leaves it: the film's sums and the auxiliary images. A frame rendered in parts (MPI ranks,
+// --shard) is assembled from its parts' frames before it is finished and written.
+#pragma once
+
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "aov_images.h"
+#include "obscura/film/image.h"
+#include "obscura/film/tiles.h"
+#include "obscura/film/work_share.h"
+#include "obscura/scene/scene.h"
+#include "partial_render.h"
+#include "render_options.h"
+#include "team.h"
+
+namespace obscura::app {
+
+struct RenderedFrame {
+  std::string renderer;  // path, whitted, direct, raster
+  Image film_sums;       // Film::sums(): Σ w·L and Σ w per pixel
+  std::vector<NamedImage> aovs;
+  std::optional<Image> post_dof_depth;  // rasterizer, --raster-dof post (raster_effects_options.h)
+  RenderProgress progress;
+  std::vector<std::string> warnings;
+  double seconds = 0;               // this process's
+  double rays = 0;                  // tracer: rays this process traced
+  bool time_limit_reached = false;  // a time limit without --spp ended the (complete) render
+};
+
+// Checks the options, loads the scene and resolves its camera as the options say; with
+// `writes_output`, checks before any work that the output (and the auxiliary images) can be
+// written and would not replace an input. The scene file's own settings (size, samples, seed)
+// fill in what the command line did not give.
+Scene prepare_scene(RenderOptions& options, bool writes_output);
+
+// How the renderer's tiles are dealt to `parts` parts (the tracer's 16-pixel tiles, the
+// rasterizer's 64-pixel bins).
+TileDeal tile_deal(const std::string& renderer, int width, int height, int parts);
+
+// Renders the scene with its camera (resolved by the options), the tiles `share` owns.
+RenderedFrame render_frame(const Scene& scene, const RenderOptions& options, const WorkShare& share,
+                           const ProgressCallback& progress = {});
+
+// Rank 0 receives every rank's pixels of the film and the auxiliary images (rank = part).
+void gather_frame(Team& team, RenderedFrame& frame);
+
+// The whole frame's film as the image to write: the post-process applied where asked for.
+Image finished_image(const RenderedFrame& frame, const Camera& camera);
+
+// Writes the image (marked partial when it is) and the auxiliary images beside it; prints the
+// paths on stdout (the image first) and sets the exit status that says how the render ended.
+void write_frame(const RenderOptions& options, const std::string& output,
+                 const RenderedFrame& frame, const Camera& camera);
+
+}  // namespace obscura::app

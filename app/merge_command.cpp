@@ -1,0 +1,54 @@
+#include "merge_command.h"
+
+#include <cstdio>
+#include <memory>
+
+#include "display_options.h"
+#include "frame_render.h"
+#include "obscura/io/image_io.h"
+#include "shard_file.h"
+
+namespace obscura::app {
+
+namespace {
+
+struct MergeOptions {
+  std::vector<std::string> parts;
+  RenderOptions render;  // the output, display options and --quiet
+};
+
+void run_merge(const MergeOptions& options) {
+  check_output_path(options.render.output);
+  check_not_an_input(options.render.output, options.parts);
+  std::vector<ShardFile> shards;
+  for (const std::string& path : options.parts) shards.push_back(read_shard(path));
+  RenderedFrame frame = merge_shards(shards);
+  if (!frame.aovs.empty())
+    for (const std::string& aov : aov_paths(options.render.output, frame.renderer))
+      check_not_an_input(aov, options.parts);
+  if (!options.render.quiet && frame.progress.partial())
+    std::fprintf(stderr, "warning: the parts were stopped early%s\n",
+                 partial_note(frame.progress).c_str());
+  // The camera matters only for a post-process, which --shard refuses.
+  write_frame(options.render, options.render.output, frame, Camera());
+}
+
+}  // namespace
+
+void add_merge_command(CLI::App& app) {
+  auto options = std::make_shared<MergeOptions>();
+  CLI::App* merge = app.add_subcommand(
+      "merge", "Assemble the parts of `obscura render --shard I/N` into the whole image");
+  merge->add_option("parts", options->parts, "The N partial films (.exr), in any order")
+      ->required()
+      ->check(CLI::ExistingFile);
+  merge
+      ->add_option("-o,--output", options->render.output,
+                   "Output image; the format follows the extension: .png, .exr, …")
+      ->required();
+  merge->add_flag("-q,--quiet", options->render.quiet, "No warnings on stderr");
+  add_display_options(merge, options->render.display);
+  merge->callback([options] { run_merge(*options); });
+}
+
+}  // namespace obscura::app

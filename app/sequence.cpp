@@ -1,0 +1,283 @@
+#include "sequence.h"
+
+#include <algorithm>
+#include <cctype>
+#include <charconv>
+#include <cmath>
+#include <cstdio>
+#include <cstring>
+#include <filesystem>
+#include <numeric>
+#include <optional>
+
+#include <tbb/global_control.h>
+
+#include "frame_render.h"
+#include "obscura/color/develop.h"
+#include "obscura/io/image_io.h"
+#include "obscura/io/image_reader.h"
+#include "obscura/io/y4m_writer.h"
+#include "obscura/math/error.h"
+#include "progress_bar.h"
+#include "usage_error.h"
+
+namespace obscura::app {
+
+namespace {
+
+constexpr int kMaxFrame = 100'000'000;
+
+int parse_frame_number(const std::string& text, const std::string& range) {
+  int value = 0;
+  const char* end = text.data() + text.size();
+  auto [at, error] = std::from_chars(text.data(), end, value);
+  if (text.empty() || error != std::errc() || at != end || value < -kMaxFrame || value > kMaxFrame)
+    throw UsageError("--frames: expected FIRST:LAST[:STEP] with whole frame numbers (|n| ≤ " +
+                     std::to_string(kMaxFrame) + "); got '" + range + "'");
+  return value;
+}
+
+// Where the pattern's integer conversion is: [start, end) of "%d" / "%04d".
+std::pair<size_t, size_t> conversion_in(const std::string& pattern) {
+  std::optional<std::pair<size_t, size_t>> found;
+  for (size_t i = 0; i < pattern.size(); ++i) {
+    if (pattern[i] != '%') continue;
+    if (i + 1 < pattern.size() && pattern[i + 1] == '%') {
+      ++i;  // "%%" is a literal percent sign
+      continue;
+    }
+    size_t j = i + 1;
+    if (j < pattern.size() && pattern[j] == '0') ++j;
+    size_t digits = j;
+    while (j < pattern.size() && std::isdigit(static_cast<unsigned char>(pattern[j])) &&
+           j - digits < 2)
+      ++j;
+    if (j >= pattern.size() || pattern[j] != 'd' || found)
+      throw UsageError(
+          "--frames: the output must name each frame with one integer conversion "
+          "such as out_%04d.exr (or be a .y4m video); got '" +
+          pattern + "'");
+    found = {i, j + 1};
+    i = j;
+  }
+  if (!found)
+    throw UsageError(
+        "--frames: the output must name each frame with one integer conversion such "
+        "as out_%04d.exr (or be a .y4m video); got '" +
+        pattern + "'");
+  return *found;
+}
+
+// A developed video frame as bytes — its width and height (32 bits each), then its 8-bit codes —
+// and back: what a rank keeps and sends rank 0 for the video.
+std::vector<uint8_t> to_bytes(const DisplayImage& image) {
+  std::vector<uint8_t> bytes(8 + image.codes.size());
+  const int32_t size[2] = {image.width, image.height};
+  std::memcpy(bytes.data(), size, sizeof size);
+  for (size_t i = 0; i < image.codes.size(); ++i) bytes[8 + i] = uint8_t(image.codes[i]);
+  return bytes;
+}
+DisplayImage from_bytes(const std::vector<uint8_t>& bytes) {
+  DisplayImage image;
+  int32_t size[2] = {0, 0};
+  if (bytes.size() >= 8) std::memcpy(size, bytes.data(), sizeof size);
+  image.width = size[0], image.height = size[1], image.channels = 3, image.bits = 8;
+  if (size[0] <= 0 || size[1] <= 0 || bytes.size() != 8 + size_t(size[0]) * size[1] * 3)
+    throw Error("sequence", "a video frame of " + std::to_string(bytes.size()) +
+                                " bytes arrived, which is not a frame of the size it names");
+  image.codes.assign(bytes.begin() + 8, bytes.end());
+  return image;
+}
+
+// The frame rate as the stream header's ratio, in thousandths reduced (24 → 24:1, 29.97 →
+// 2997:100).
+Y4mSettings video_settings(double fps) {
+  Y4mSettings settings;
+  const long long thousandths = std::max(1LL, std::llround(fps * 1000));
+  const long long divisor = std::gcd(thousandths, 1000LL);
+  settings.fps_numerator = int(thousandths / divisor);
+  settings.fps_denominator = int(1000 / divisor);
+  return settings;
+}
+
+}  // namespace
+
+std::vector<int> parse_frame_range(const std::string& text) {
+  std::vector<std::string> parts;
+  for (size_t at = 0;;) {
+    size_t colon = text.find(':', at);
+    parts.push_back(text.substr(at, colon - at));
+    if (colon == std::string::npos) break;
+    at = colon + 1;
+  }
+  if (parts.size() < 2 || parts.size() > 3)
+    throw UsageError("--frames: expected FIRST:LAST[:STEP] (e.g. 1:48 or 0:100:4); got '" + text +
+                     "'");
+  const int first = parse_frame_number(parts[0], text), last = parse_frame_number(parts[1], text);
+  const int step = parts.size() == 3 ? parse_frame_number(parts[2], text) : 1;
+  if (step < 1) throw UsageError("--frames: STEP must be at least 1; got '" + text + "'");
+  if (last < first) throw UsageError("--frames: LAST is before FIRST in '" + text + "'");
+  std::vector<int> frames;
+  for (long long n = first; n <= last; n += step) frames.push_back(int(n));
+  return frames;
+}
+
+std::string frame_path(const std::string& pattern, int frame) {
+  auto [start, end] = conversion_in(pattern);
+  char number[32];
+  std::snprintf(number, sizeof number, pattern.substr(start, end - start).c_str(), frame);
+  std::string path;
+  // "%%" elsewhere in the pattern stands for one "%".
+  for (size_t i = 0; i < pattern.size(); ++i) {
+    if (i == start) {
+      path += number;
+      i = end - 1;
+    } else {
+      path += pattern[i];
+      if (pattern[i] == '%' && i + 1 < pattern.size() && pattern[i + 1] == '%') ++i;
+    }
+  }
+  return path;
+}
+
+bool finished_frame_exists(const std::string& path, int width, int height) {
+  std::error_code error;
+  if (!std::filesystem::is_regular_file(path, error) ||
+      std::filesystem::file_size(path, error) == 0)
+    return false;
+  try {
+    CheckedImageInput in = CheckedImageInput::open_file(path);
+    const OIIO::ImageSpec& spec = in.spec();
+    return spec.width == width && spec.height == height &&
+           spec.find_attribute("obscura:partial") == nullptr;
+  } catch (const Error&) {
+    return false;  // unreadable: rendered again
+  }
+}
+
+void run_sequence(RenderOptions options, Team& team) {
+  const std::vector<int> frames = parse_frame_range(options.frames);
+  if (options.choice.time_s)
+    throw UsageError("--time and --frames: each frame's time is frame / fps; give one of them");
+  if (!options.shard.empty())
+    throw UsageError(
+        "--shard splits one frame; a sequence is split by frames (use mpirun, or "
+        "give each task its own --frames range)");
+  if (!(options.fps > 0 && options.fps <= 1e6))
+    throw UsageError("--fps must be in (0, 1e6] frames per second");
+  const bool video = image_format_for_path(options.output) == ImageFormat::kY4m;
+  if (!video) frame_path(options.output, frames.front());  // checks the pattern
+  if (video && team.leads()) check_output_path(options.output);
+
+  std::optional<tbb::global_control> thread_limit;
+  if (options.threads > 0)
+    thread_limit.emplace(tbb::global_control::max_allowed_parallelism, size_t(options.threads));
+  const bool speaks = team.leads() && !options.quiet;
+  InterruptGuard interrupt;
+
+  // The video: opened by rank 0 once the frame size is known.
+  std::unique_ptr<Y4mWriter> video_writer;
+  std::vector<std::vector<uint8_t>> kept;         // MPI: this rank's video frames, in frame order
+  std::optional<std::pair<int, int>> frame_size;  // known after the first scene this rank loads
+  int rendered = 0, skipped = 0;
+  RenderEnd worst = RenderEnd::kComplete;
+  std::vector<int64_t> mine;
+
+  team.open_counter();
+  for (;;) {
+    const int64_t ticket = team.take_ticket();
+    if (ticket >= int64_t(frames.size()) || worst == RenderEnd::kInterrupted) break;
+    mine.push_back(ticket);
+    const int n = frames[size_t(ticket)];
+    RenderOptions frame_options = options;
+    frame_options.choice.time_s = n / options.fps;
+    if (!video) frame_options.output = frame_path(options.output, n);
+    if (!video && frame_size &&
+        finished_frame_exists(frame_options.output, frame_size->first, frame_size->second)) {
+      ++skipped;
+      continue;
+    }
+    frame_options.quiet = options.quiet || !team.leads();
+    Scene scene = prepare_scene(frame_options, !video);
+    Bounds2i crop = scene.camera.film.crop_pixels();
+    frame_size = {crop.width(), crop.height()};
+    if (!video && finished_frame_exists(frame_options.output, crop.width(), crop.height())) {
+      ++skipped;
+      continue;
+    }
+    ProgressBar bar("frame " + std::to_string(n), !speaks);
+    RenderedFrame frame = render_frame(scene, frame_options, {},
+                                       [&](int done, int total) { bar.update(done, total); });
+    bar.finish();
+    worst = std::max(worst, frame.progress.end);
+    ++rendered;
+    if (!video) {
+      if (frame.progress.partial() &&
+          !format_keeps_metadata(image_format_for_path(frame_options.output))) {
+        std::fprintf(stderr,
+                     "obscura: %sframe %d stopped early and %s cannot say so: not written\n",
+                     rank_prefix().c_str(), n, frame_options.output.c_str());
+        continue;
+      }
+      write_frame(frame_options, frame_options.output, frame, scene.camera);
+      continue;
+    }
+    DisplaySettings display = image_write_options(options.display).display;
+    display.bits = 8;
+    DisplayImage developed = develop(pixels_of(finished_image(frame, scene.camera)), display);
+    if (team.alone()) {
+      if (!video_writer)
+        video_writer = std::make_unique<Y4mWriter>(options.output, developed.width,
+                                                   developed.height, video_settings(options.fps));
+      video_writer->write_frame(developed);
+    } else {
+      kept.push_back(to_bytes(developed));
+    }
+  }
+  team.close_counter();
+
+  // How the sequence ended, the same on every rank.
+  const StopVerdict verdict = team.settle(worst == RenderEnd::kInterrupted ? StopVerdict::kCancelled
+                                          : worst == RenderEnd::kTimeLimit ? StopVerdict::kTimeLimit
+                                                                           : StopVerdict::kGoOn);
+  const RenderEnd end = verdict == StopVerdict::kCancelled   ? RenderEnd::kInterrupted
+                        : verdict == StopVerdict::kTimeLimit ? RenderEnd::kTimeLimit
+                                                             : RenderEnd::kComplete;
+  if (video && !team.alone() && end != RenderEnd::kInterrupted) {
+    // Rank 0 writes the frames in order, each from the rank that rendered it; every other rank
+    // sends its frames in the order it took them, which is frame order.
+    const std::vector<int> owners = team.ticket_owners(mine, int64_t(frames.size()));
+    if (team.leads()) {
+      size_t next_own = 0;
+      for (int owner : owners) {
+        DisplayImage developed =
+            from_bytes(owner == 0 ? std::move(kept[next_own++]) : team.receive(owner));
+        if (!video_writer)
+          video_writer = std::make_unique<Y4mWriter>(options.output, developed.width,
+                                                     developed.height, video_settings(options.fps));
+        video_writer->write_frame(developed);
+      }
+    } else {
+      for (const std::vector<uint8_t>& bytes : kept) team.send(0, bytes);
+    }
+  }
+  if (video) {
+    if (end == RenderEnd::kInterrupted) {
+      if (team.leads())
+        std::fprintf(stderr,
+                     "obscura: interrupted: %s is not written (a video is written whole; "
+                     "render numbered frames to resume a sequence)\n",
+                     options.output.c_str());
+    } else if (video_writer) {
+      video_writer->close();
+      std::printf("%s\n", options.output.c_str());
+    }
+  }
+  if (speaks)
+    std::fprintf(stderr, "sequence: %zu frames, %d rendered here, %d already there%s\n",
+                 frames.size(), rendered, skipped,
+                 end == RenderEnd::kInterrupted ? " [interrupted]" : "");
+  set_exit_status(exit_status_for(end));
+}
+
+}  // namespace obscura::app

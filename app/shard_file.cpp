@@ -1,0 +1,268 @@
+#include "shard_file.h"
+
+#include <algorithm>
+#include <charconv>
+#include <map>
+
+#include "obscura/io/image_io.h"
+#include "obscura/math/error.h"
+#include "usage_error.h"
+
+namespace obscura::app {
+
+namespace {
+
+constexpr const char* kFormat = "obscura partial film 1";
+
+bool parse_int(const std::string& text, int& value) {
+  const char* end = text.data() + text.size();
+  auto [at, error] = std::from_chars(text.data(), end, value);
+  return error == std::errc() && at == end && !text.empty();
+}
+
+const char* end_name(RenderEnd end) {
+  return end == RenderEnd::kInterrupted ? "interrupted"
+         : end == RenderEnd::kTimeLimit ? "time limit"
+                                        : "complete";
+}
+
+std::string attribute(const ImageMetadata& m, const std::string& path, const std::string& name) {
+  for (const auto& [key, value] : m.attributes)
+    if (key == name) return value;
+  throw Error(path, "not a partial film of `obscura render --shard`: no " + name + " attribute");
+}
+
+int int_attribute(const ImageMetadata& m, const std::string& path, const std::string& name, int min,
+                  int max) {
+  int value = 0;
+  std::string text = attribute(m, path, name);
+  if (!parse_int(text, value) || value < min || value > max)
+    throw Error(path, name + ": expected a whole number in [" + std::to_string(min) + ", " +
+                          std::to_string(max) + "]; got '" + text + "'");
+  return value;
+}
+
+// The channel names an auxiliary image is stored under: "albedo.R", … (its own names, or numbers).
+std::vector<std::string> stored_channels(const NamedImage& aov) {
+  std::vector<std::string> names;
+  for (int c = 0; c < aov.image.channels; ++c)
+    names.push_back(aov.name + "." +
+                    (size_t(c) < aov.image.channel_names.size() ? aov.image.channel_names[size_t(c)]
+                                                                : std::to_string(c)));
+  return names;
+}
+
+// "albedo=R,G,B;depth=Z" ↔ the auxiliary images' names and channels, in order (OpenEXR files
+// keep channels sorted by name, so the order is kept here).
+std::string aov_layout(const std::vector<NamedImage>& aovs) {
+  std::string layout;
+  for (const NamedImage& aov : aovs) {
+    if (!layout.empty()) layout.push_back(';');
+    layout.append(aov.name).push_back('=');
+    std::vector<std::string> names = stored_channels(aov);
+    for (size_t c = 0; c < names.size(); ++c) {
+      if (c) layout.push_back(',');
+      layout.append(names[c].substr(aov.name.size() + 1));
+    }
+  }
+  return layout;
+}
+
+std::vector<std::string> split(const std::string& text, char separator) {
+  std::vector<std::string> parts;
+  if (text.empty()) return parts;
+  for (size_t at = 0;;) {
+    size_t next = text.find(separator, at);
+    parts.push_back(text.substr(at, next - at));
+    if (next == std::string::npos) return parts;
+    at = next + 1;
+  }
+}
+
+}  // namespace
+
+ShardSpec parse_shard(const std::string& text) {
+  size_t slash = text.find('/');
+  ShardSpec spec;
+  if (slash == std::string::npos || !parse_int(text.substr(0, slash), spec.part) ||
+      !parse_int(text.substr(slash + 1), spec.parts) || spec.parts < 1 || spec.parts > 65536 ||
+      spec.part < 0 || spec.part >= spec.parts)
+    throw UsageError(
+        "--shard: expected I/N, part I of N counted from 0 (0/4 … 3/4, N ≤ 65536); "
+        "got '" +
+        text + "'");
+  return spec;
+}
+
+void write_shard(const std::string& path, const RenderedFrame& frame, ShardSpec spec,
+                 const std::string& job) {
+  const Image& sums = frame.film_sums;
+  int channels = sums.channels;
+  for (const NamedImage& aov : frame.aovs) channels += aov.image.channels;
+  Image data(sums.width, sums.height, channels);
+  data.channel_names = {"R", "G", "B", "W"};
+  for (const NamedImage& aov : frame.aovs)
+    for (const std::string& name : stored_channels(aov)) data.channel_names.push_back(name);
+  for (size_t p = 0; p < size_t(sums.width) * sums.height; ++p) {
+    float* out = &data.data[p * size_t(channels)];
+    out = std::copy_n(&sums.data[p * 4], 4, out);
+    for (const NamedImage& aov : frame.aovs)
+      out = std::copy_n(&aov.image.data[p * size_t(aov.image.channels)], aov.image.channels, out);
+  }
+  const TileDeal deal = tile_deal(frame.renderer, sums.width, sums.height, spec.parts);
+  ImageMetadata metadata;
+  metadata.description = "Part " + std::to_string(spec.part) + " of " + std::to_string(spec.parts) +
+                         " of a frame (obscura render --shard); " +
+                         "`obscura merge` assembles the parts";
+  metadata.attributes = {
+      {"obscura:format", kFormat},
+      {"obscura:shard", std::to_string(spec.part) + "/" + std::to_string(spec.parts)},
+      {"obscura:tile_size", std::to_string(deal.tile_size)},
+      {"obscura:renderer", frame.renderer},
+      {"obscura:job", job},
+      {"obscura:aovs", aov_layout(frame.aovs)},
+      {"obscura:end", end_name(frame.progress.end)},
+      {"obscura:done", std::to_string(frame.progress.done)},
+      {"obscura:requested", std::to_string(frame.progress.requested)},
+      {"obscura:unit", frame.progress.unit}};
+  write_exr_data(path, data, metadata);
+}
+
+ShardFile read_shard(const std::string& path) {
+  ImageMetadata m;
+  Image data = read_exr_data(path, m);
+  if (attribute(m, path, "obscura:format") != kFormat)
+    throw Error(path, "obscura:format: expected '" + std::string(kFormat) + "'");
+  ShardFile shard;
+  shard.path = path;
+  std::string text = attribute(m, path, "obscura:shard");
+  try {
+    shard.spec = parse_shard(text);
+  } catch (const UsageError&) {
+    throw Error(path, "obscura:shard: expected I/N with 0 ≤ I < N; got '" + text + "'");
+  }
+  shard.job = attribute(m, path, "obscura:job");
+  RenderedFrame& frame = shard.frame;
+  frame.renderer = attribute(m, path, "obscura:renderer");
+  if (frame.renderer != "path" && frame.renderer != "whitted" && frame.renderer != "direct" &&
+      frame.renderer != "raster")
+    throw Error(path, "obscura:renderer: unknown renderer '" + frame.renderer + "'");
+  const int tile_size = int_attribute(m, path, "obscura:tile_size", 1, 1 << 20);
+  if (tile_size != tile_deal(frame.renderer, 1, 1, 1).tile_size)
+    throw Error(path, "obscura:tile_size: " + std::to_string(tile_size) + " is not the " +
+                          frame.renderer + " renderer's tiles");
+
+  std::string end = attribute(m, path, "obscura:end");
+  frame.progress.end = end == "interrupted"  ? RenderEnd::kInterrupted
+                       : end == "time limit" ? RenderEnd::kTimeLimit
+                       : end == "complete"
+                           ? RenderEnd::kComplete
+                           : throw Error(path,
+                                         "obscura:end: expected complete, time limit or "
+                                         "interrupted; got '" +
+                                             end + "'");
+  frame.progress.done = int_attribute(m, path, "obscura:done", 0, 1 << 30);
+  frame.progress.requested = int_attribute(m, path, "obscura:requested", 1, 1 << 30);
+  frame.progress.unit = attribute(m, path, "obscura:unit");
+
+  // The channels: R, G, B, W, then each auxiliary image's, as obscura:aovs lists them.
+  std::string aovs = attribute(m, path, "obscura:aovs");
+  std::vector<std::pair<std::string, std::vector<std::string>>> layout;
+  for (const std::string& entry : split(aovs, ';')) {
+    size_t equals = entry.find('=');
+    std::vector<std::string> names = equals == std::string::npos
+                                         ? std::vector<std::string>()
+                                         : split(entry.substr(equals + 1), ',');
+    if (equals == 0 || names.empty() || names.size() > 4)
+      throw Error(path, "obscura:aovs: expected name=channel,…;…; got '" + aovs + "'");
+    layout.emplace_back(entry.substr(0, equals), names);
+  }
+  int channels = 4;
+  for (const auto& entry : layout) channels += int(entry.second.size());
+  if (data.channels != channels)
+    throw Error(path, "has " + std::to_string(data.channels) + " channels; its header (" +
+                          (aovs.empty() ? "no auxiliary images" : aovs) + ") says " +
+                          std::to_string(channels));
+  // OpenEXR keeps channels sorted by name: each is found by its name, not its position.
+  auto column = [&](const std::string& name) {
+    auto at = std::find(data.channel_names.begin(), data.channel_names.end(), name);
+    if (at == data.channel_names.end())
+      throw Error(path, "has no channel '" + name + "', which its header (obscura:aovs) names");
+    return size_t(at - data.channel_names.begin());
+  };
+  const size_t pixels = size_t(data.width) * data.height;
+  auto copy_channels = [&](const std::vector<std::string>& names, Image& into) {
+    for (size_t c = 0; c < names.size(); ++c) {
+      const size_t from = column(names[c]);
+      for (size_t p = 0; p < pixels; ++p)
+        into.data[p * names.size() + c] = data.data[p * size_t(channels) + from];
+    }
+  };
+  frame.film_sums = Image(data.width, data.height, 4);
+  frame.film_sums.channel_names = {"R", "G", "B", "W"};
+  copy_channels(frame.film_sums.channel_names, frame.film_sums);
+  for (const auto& [name, names] : layout) {
+    NamedImage aov{name, Image(data.width, data.height, int(names.size()))};
+    aov.image.channel_names = names;
+    std::vector<std::string> stored;
+    for (const std::string& channel : names) stored.push_back(name + "." + channel);
+    copy_channels(stored, aov.image);
+    frame.aovs.push_back(std::move(aov));
+  }
+  return shard;
+}
+
+RenderedFrame merge_shards(const std::vector<ShardFile>& shards) {
+  if (shards.empty()) throw Error("merge", "no parts given");
+  const ShardFile& first = shards.front();
+  const int parts = first.spec.parts;
+  std::map<int, const ShardFile*> by_part;
+  for (const ShardFile& s : shards) {
+    auto differs = [&](const std::string& what) {
+      return Error(s.path, "part " + std::to_string(s.spec.part) + " " + what + " than " +
+                               first.path + " (part " + std::to_string(first.spec.part) + ")");
+    };
+    if (s.spec.parts != parts)
+      throw differs("is one of " + std::to_string(s.spec.parts) + " parts, not " +
+                    std::to_string(parts) + ":");
+    if (s.job != first.job)
+      throw differs("was rendered with other settings (scene, size, samples, seed, options)");
+    if (s.frame.renderer != first.frame.renderer) throw differs("has another renderer");
+    if (s.frame.film_sums.width != first.frame.film_sums.width ||
+        s.frame.film_sums.height != first.frame.film_sums.height)
+      throw differs("has another size");
+    if (aov_layout(s.frame.aovs) != aov_layout(first.frame.aovs))
+      throw differs("has other auxiliary images");
+    if (!by_part.emplace(s.spec.part, &s).second)
+      throw Error(s.path, "part " + std::to_string(s.spec.part) + " is given twice (also " +
+                              by_part[s.spec.part]->path + ")");
+  }
+  std::string missing;
+  for (int p = 0; p < parts; ++p)
+    if (!by_part.count(p)) missing += (missing.empty() ? "" : ", ") + std::to_string(p);
+  if (!missing.empty())
+    throw Error("merge", "parts of " + std::to_string(parts) + " missing: " + missing +
+                             " (every part 0 … " + std::to_string(parts - 1) + " is needed once)");
+
+  RenderedFrame whole = first.frame;
+  const TileDeal deal =
+      tile_deal(whole.renderer, whole.film_sums.width, whole.film_sums.height, parts);
+  for (const auto& [part, shard] : by_part) {
+    if (part == first.spec.part) continue;
+    auto take = [&](const Image& from, Image& into) {
+      unpack_owned_pixels(deal, part, pack_owned_pixels(deal, part, from), into);
+    };
+    take(shard->frame.film_sums, whole.film_sums);
+    for (size_t a = 0; a < whole.aovs.size(); ++a)
+      take(shard->frame.aovs[a].image, whole.aovs[a].image);
+    // The least done and the most severe ending of any part.
+    const RenderProgress& p = shard->frame.progress;
+    whole.progress.done = std::min(whole.progress.done, p.done);
+    whole.progress.end = std::max(whole.progress.end, p.end);
+    if (p.done != first.frame.progress.done && whole.progress.end == RenderEnd::kComplete)
+      whole.progress.end = RenderEnd::kTimeLimit;
+  }
+  return whole;
+}
+
+}  // namespace obscura::app
