@@ -37,7 +37,10 @@ int main(int argc, char** argv) {
     if (!rank || std::string(rank) == "0") std::fprintf(stderr, "obscura: error: %s\n", e.what());
     return 2;
   }
-  const int status = run(argc, argv);
+  // Under mpirun only `render` works as a team; any other command runs once, on rank 0.
+  int status = 0;
+  const char* command = argc > 1 ? argv[1] : "";
+  if (obscura::app::team().leads() || std::string(command) == "render") status = run(argc, argv);
   obscura::app::leave_team();
   return status;
 }

@@ -59,9 +59,9 @@ std::string job_key(const CLI::App& render) {
   return text;
 }
 
+// `ranks`: "" alone, else " on N ranks, X MB to rank 0".
 void print_summary(const RenderOptions& options, const Scene& scene, const RenderedFrame& frame,
-                   const Team& team, double rays, double seconds) {
-  std::string ranks = team.alone() ? "" : " on " + std::to_string(team.size()) + " ranks";
+                   const std::string& ranks, double rays, double seconds) {
   if (frame.renderer == "raster") {
     std::fprintf(stderr, "rendered %s: %dx%d (raster%s) in %s%s\n", scene.name.c_str(),
                  options.width, options.height, ranks.c_str(), format_seconds(seconds).c_str(),
@@ -79,6 +79,7 @@ void print_summary(const RenderOptions& options, const Scene& scene, const Rende
 
 void run_render(RenderOptions options, const std::string& job) {
   if (options.list_scenes) {
+    if (!team().leads()) return;
     for (const BuiltinScene& b : builtin_scenes())
       std::printf("%-20s %s\n", b.name.c_str(), b.description.c_str());
     return;
@@ -133,6 +134,13 @@ void run_render(RenderOptions options, const std::string& job) {
   bar.finish();
   const double rays = team.sum(frame.rays), seconds = frame.seconds;
   gather_frame(team, frame);
+  std::string ranks;
+  if (!team.alone()) {
+    char note[96];
+    std::snprintf(note, sizeof note, " on %d ranks, %.2f MB to rank 0", team.size(),
+                  team.sum(double(team.bytes_sent())) * 1e-6);
+    ranks = note;
+  }
 
   if (shard) {
     write_shard(options.output, frame, *shard, job);
@@ -147,7 +155,7 @@ void run_render(RenderOptions options, const std::string& job) {
   if (team.leads()) {
     if (speaks) {
       for (const std::string& w : frame.warnings) std::fprintf(stderr, "warning: %s\n", w.c_str());
-      print_summary(options, scene, frame, team, rays, seconds);
+      print_summary(options, scene, frame, ranks, rays, seconds);
     }
     write_frame(options, options.output, frame, scene.camera);
   } else {

@@ -15,12 +15,11 @@
 #include "obscura/raster/clipper.h"
 #include "obscura/raster/depth_test.h"
 #include "obscura/raster/fill_rule.h"
+#include "obscura/raster/render_target.h"
 #include "obscura/raster/shaded_vertex.h"
 
 namespace obscura::raster {
 
-inline constexpr int kTileSizeLog2 = 6;
-inline constexpr int kTileSize = 1 << kTileSizeLog2;  // 64 × 64 pixels
 inline constexpr int kChunkTriangles = 2048;
 
 // Vertex references with this bit set index the chunk's own vertices (made by clipping).

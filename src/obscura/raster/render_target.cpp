@@ -4,6 +4,8 @@
 #include <limits>
 #include <string>
 
+#include <tbb/parallel_for.h>
+
 #include "obscura/math/error.h"
 #include "obscura/raster/msaa.h"
 
@@ -71,9 +73,16 @@ void RenderTarget::accumulate_into(Film& film, float weight) const {
     throw Error("render target", "film size " + std::to_string(film.width()) + "x" +
                                      std::to_string(film.height()) + " differs from " +
                                      std::to_string(width_) + "x" + std::to_string(height_));
-  Image resolved = resolve_color();
-  for (int y = 0; y < height_; ++y)
-    for (int x = 0; x < width_; ++x) film.add_sample({x, y}, resolved.rgb(x, y), weight);
+  // Rows in parallel: each pixel's sum is its own, so the film is the same for any thread count.
+  const float inv = 1.f / float(samples_);
+  tbb::parallel_for(0, height_, [&](int y) {
+    for (int x = 0; x < width_; ++x) {
+      if (!draws_pixel(x, y)) continue;
+      Rgb sum;
+      for (int s = 0; s < samples_; ++s) sum += color(sample_index(x, y, s));
+      film.add_sample({x, y}, sum * inv, weight);
+    }
+  });
 }
 
 Image RenderTarget::depth_image() const {

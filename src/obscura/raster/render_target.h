@@ -23,6 +23,9 @@ namespace obscura::raster {
 
 inline constexpr uint32_t kNoObject = 0;  // object id of the background
 inline constexpr int kRowAlignment = 8;   // pixels
+// The pipeline bins triangles into square tiles of the target, rasterized in parallel.
+inline constexpr int kTileSizeLog2 = 6;
+inline constexpr int kTileSize = 1 << kTileSizeLog2;  // 64 × 64 pixels
 
 class RenderTarget {
  public:
@@ -39,8 +42,14 @@ class RenderTarget {
   // tiles of the pipeline's grid (kTileSize pixels, numbered row by row) that `part` of `parts`
   // owns, and leave the others as clear() made them. Every pixel drawn is bit-identical to the
   // same pixel drawn alone. Default: part 0 of 1, every tile.
+  // clear() still covers every pixel; the scene's background and accumulate_into() only the
+  // drawn tiles'.
   void set_share(int part, int parts);
   bool draws_tile(int tile) const { return tile % share_parts_ == share_part_; }
+  bool draws_pixel(int x, int y) const {
+    const int columns = (width_ + kTileSize - 1) >> kTileSizeLog2;
+    return draws_tile((y >> kTileSizeLog2) * columns + (x >> kTileSizeLog2));
+  }
 
   // Sets every sample's colour and depth; ids to kNoObject, view depth to +∞, normals to zero.
   void clear(Rgb color = {}, float depth = 1.f);

@@ -361,6 +361,7 @@ void SceneRasterizer::draw_background(const Matrix4& world_from_clip, RenderTarg
   const int w = target.width(), h = target.height();
   tbb::parallel_for(0, h, [&](int y) {
     for (int x = 0; x < w; ++x) {
+      if (!target.draws_pixel(x, y)) continue;  // another process's pixel
       double nx = 2 * (x + 0.5) / w - 1, ny = 1 - 2 * (y + 0.5) / h;
       Vector4d a = world_from_clip * Vector4d(nx, ny, -1, 1);
       Vector4d b = world_from_clip * Vector4d(nx, ny, 0, 1);
