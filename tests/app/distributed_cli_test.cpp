@@ -21,7 +21,6 @@ namespace {
 namespace fs = std::filesystem;
 using test::files_in;
 using test::image_attribute;
-using test::mpirun_obscura;
 using test::same_pixels;
 
 struct RendererCase {
@@ -147,9 +146,9 @@ TEST_F(DistributedCli, ARankThatCannotReadTheSceneFailsTheJobAndNamesItself) {
   const std::string frame = " --width 64 --height 48 --spp 4 -q -o " + path("out.exr");
   const std::string scene = test::quoted(test::source_path("scenes/depth-of-field.json"));
   const std::string missing = path("missing.json");
-  auto r = test::run_shell(test::mpirun_command() + " -np 1 " + test::quoted(test::cli_path()) +
-                           " render " + scene + frame + " : -np 1 " +
-                           test::quoted(test::cli_path()) + " render " + missing + frame);
+  auto r = test::run_shell(mpirun() + " -np 1 " + test::quoted(test::cli_path()) + " render " +
+                           scene + frame + " : -np 1 " + test::quoted(test::cli_path()) +
+                           " render " + missing + frame);
   EXPECT_NE(r.exit_code, 0) << r.output;
   EXPECT_NE(r.output.find("rank 1: " + missing), std::string::npos) << r.output;
   EXPECT_NE(r.output.find("does not exist"), std::string::npos) << r.output;

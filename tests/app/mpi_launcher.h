@@ -3,6 +3,7 @@
 // cannot start a job on this machine, the tests that need it skip and say why.
 #pragma once
 
+#include <filesystem>
 #include <string>
 
 #include <gtest/gtest.h>
@@ -20,29 +21,30 @@ inline std::string quoted(const std::string& text) {
   return out;
 }
 
-// mpirun with what this suite needs of it whoever runs it: root is allowed (CI runs as root), and
-// more ranks than cores (CI has two). Set through Open MPI's variables, which other MPIs ignore.
-inline std::string mpirun_command() {
+// mpirun as this suite needs it whoever runs it: root is allowed (CI runs as root) and more ranks
+// than cores (CI has two), set through Open MPI's variables, which other MPIs ignore; and the job
+// keeps its session files in `session_dir`, an empty directory of its own. (Open MPI 4 creates
+// one directory per user under TMPDIR, and of two jobs starting at once one can fail creating it
+// — "mkdir … File exists" — as tests running side by side do.)
+inline std::string mpirun_command(const std::string& session_dir) {
 #ifdef OBSCURA_MPIEXEC
-  return "env OMPI_ALLOW_RUN_AS_ROOT=1 OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=1 "
-         "OMPI_MCA_rmaps_base_oversubscribe=1 " +
+  return "env TMPDIR=" + quoted(session_dir) +
+         " OMPI_ALLOW_RUN_AS_ROOT=1 OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=1"
+         " OMPI_MCA_rmaps_base_oversubscribe=1 " +
          quoted(OBSCURA_MPIEXEC);
 #else
+  (void)session_dir;
   return "";
 #endif
-}
-
-// `mpirun -np RANKS obscura ARGUMENTS` as a shell command line.
-inline std::string mpirun_obscura(int ranks, const std::string& arguments) {
-  return mpirun_command() + " -np " + std::to_string(ranks) + " " + quoted(cli_path()) + " " +
-         arguments;
 }
 
 // Why MPI jobs cannot run here, or empty when they can (probed once: `mpirun -np 1 true`).
 inline const std::string& why_mpi_cannot_run() {
   static const std::string why = [] {
 #ifdef OBSCURA_MPIEXEC
-    CommandResult probe = run_shell(mpirun_command() + " -np 1 true");
+    const std::string session_dir = make_temp_dir("ompi");
+    CommandResult probe = run_shell(mpirun_command(session_dir) + " -np 1 true");
+    std::filesystem::remove_all(session_dir);
     if (probe.exit_code == 0) return std::string();
     return "`mpirun -np 1 true` fails here (exit " + std::to_string(probe.exit_code) + "):\n" +
            probe.output;
@@ -61,7 +63,28 @@ class MpiCliTest : public TempDirTest {
   void SetUp() override {
     TempDirTest::SetUp();
     if (!why_mpi_cannot_run().empty()) GTEST_SKIP() << why_mpi_cannot_run();
+    // Beside the test's directory, not in it: the tests check what a command left there.
+    sessions_ = make_temp_dir("ompi");
   }
+  void TearDown() override {
+    if (!sessions_.empty()) std::filesystem::remove_all(sessions_);
+    TempDirTest::TearDown();
+  }
+
+  // `mpirun` as a shell command line, with session files of its own (see mpirun_command).
+  std::string mpirun() {
+    const std::string session_dir = sessions_ + "/" + std::to_string(jobs_++);
+    std::filesystem::create_directory(session_dir);
+    return mpirun_command(session_dir);
+  }
+  // `mpirun -np RANKS obscura ARGUMENTS` as a shell command line.
+  std::string mpirun_obscura(int ranks, const std::string& arguments) {
+    return mpirun() + " -np " + std::to_string(ranks) + " " + quoted(cli_path()) + " " + arguments;
+  }
+
+ private:
+  std::string sessions_;
+  int jobs_ = 0;
 };
 
 }  // namespace obscura::test

@@ -215,9 +215,9 @@ class SequenceOnRanks : public test::MpiCliTest {};
 TEST_F(SequenceOnRanks, TwoRanksWriteTheSameFramesAndTheSameVideo) {
   const std::vector<test::CommandResult> results = test::run_shells_concurrently({
       test::cli_command_line(sequence_arguments() + " -q -o " + path("one_%04d.exr")),
-      test::mpirun_obscura(2, sequence_arguments() + " -o " + path("two_%04d.exr")),
+      mpirun_obscura(2, sequence_arguments() + " -o " + path("two_%04d.exr")),
       test::cli_command_line(sequence_arguments() + " -q -o " + path("one.y4m")),
-      test::mpirun_obscura(2, sequence_arguments() + " -q -o " + path("two.y4m")),
+      mpirun_obscura(2, sequence_arguments() + " -q -o " + path("two.y4m")),
   });
   for (const test::CommandResult& r : results) ASSERT_EQ(r.exit_code, 0) << r.output;
   EXPECT_NE(results[1].output.find("sequence: 6 frames, "), std::string::npos) << results[1].output;

@@ -226,7 +226,7 @@ TEST_F(ShardMergeCliErrors, ShardOptionsThatCannotWorkAreRefusedBeforeRendering)
 class ShardUnderMpirun : public test::MpiCliTest {};
 
 TEST_F(ShardUnderMpirun, IsRefusedBecauseTheRanksShareTheFrameAlready) {
-  auto r = test::run_shell(test::mpirun_obscura(
+  auto r = test::run_shell(mpirun_obscura(
       2, "render --width 64 --height 48 --spp 2 --shard 0/2 -o " + path("part.exr")));
   EXPECT_NE(r.exit_code, 0) << r.output;
   EXPECT_NE(r.output.find("leave --shard out"), std::string::npos) << r.output;
