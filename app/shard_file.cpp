@@ -13,6 +13,9 @@ namespace obscura::app {
 namespace {
 
 constexpr const char* kFormat = "obscura partial film 1";
+// obscura:aovs of a part without auxiliary images: an empty string attribute is not kept in an
+// OpenEXR file (OpenImageIO drops it), and a missing one must stay an error.
+constexpr const char* kNoAovs = "none";
 
 bool parse_int(const std::string& text, int& value) {
   const char* end = text.data() + text.size();
@@ -120,7 +123,7 @@ void write_shard(const std::string& path, const RenderedFrame& frame, ShardSpec 
       {"obscura:tile_size", std::to_string(deal.tile_size)},
       {"obscura:renderer", frame.renderer},
       {"obscura:job", job},
-      {"obscura:aovs", aov_layout(frame.aovs)},
+      {"obscura:aovs", frame.aovs.empty() ? kNoAovs : aov_layout(frame.aovs)},
       {"obscura:end", end_name(frame.progress.end)},
       {"obscura:done", std::to_string(frame.progress.done)},
       {"obscura:requested", std::to_string(frame.progress.requested)},
@@ -167,6 +170,7 @@ ShardFile read_shard(const std::string& path) {
 
   // The channels: R, G, B, W, then each auxiliary image's, as obscura:aovs lists them.
   std::string aovs = attribute(m, path, "obscura:aovs");
+  if (aovs == kNoAovs) aovs.clear();
   std::vector<std::pair<std::string, std::vector<std::string>>> layout;
   for (const std::string& entry : split(aovs, ';')) {
     size_t equals = entry.find('=');

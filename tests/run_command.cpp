@@ -13,16 +13,25 @@
 namespace obscura::test {
 
 CommandResult run_cli(const std::string& arguments) {
+  return run_shell(cli_command_line(arguments));
+}
+
+std::string cli_command_line(const std::string& arguments) {
   // (Appended piece by piece: GCC 12 warns falsely (-Wrestrict) on `"'" + std::string`.)
   std::string command(1, '\'');
   command.append(cli_path()).append("' ").append(arguments);
-  return run_shell(command);
+  return command;
 }
 
-CommandResult run_shell(const std::string& command_line) {
-  CommandResult result;
+namespace {
+
+FILE* start_shell(const std::string& command_line) {
   std::string command = "{ " + command_line + "; } 2>&1";
-  FILE* pipe = popen(command.c_str(), "r");
+  return popen(command.c_str(), "r");
+}
+
+CommandResult finish_shell(FILE* pipe) {
+  CommandResult result;
   if (!pipe) return result;
   std::array<char, 4096> buffer;
   size_t n;
@@ -31,6 +40,22 @@ CommandResult run_shell(const std::string& command_line) {
   int status = pclose(pipe);
   result.exit_code = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
   return result;
+}
+
+}  // namespace
+
+CommandResult run_shell(const std::string& command_line) {
+  return finish_shell(start_shell(command_line));
+}
+
+std::vector<CommandResult> run_shells_concurrently(const std::vector<std::string>& command_lines) {
+  // All started before any is read: a command blocked on a full pipe waits only until its turn
+  // (popen closes the other commands' pipes in each child, so every pipe ends with its command).
+  std::vector<FILE*> pipes;
+  for (const std::string& line : command_lines) pipes.push_back(start_shell(line));
+  std::vector<CommandResult> results;
+  for (FILE* pipe : pipes) results.push_back(finish_shell(pipe));
+  return results;
 }
 
 std::string make_temp_dir(const std::string& prefix) {

@@ -3,6 +3,7 @@
 
 #include <filesystem>
 #include <string>
+#include <vector>
 
 #include <gtest/gtest.h>
 
@@ -15,8 +16,14 @@ struct CommandResult {
 
 // Runs `obscura <arguments>` (arguments are passed to the shell as written).
 CommandResult run_cli(const std::string& arguments);
+// The shell command line run_cli runs.
+std::string cli_command_line(const std::string& arguments);
 // Runs a shell command line (e.g. with `ulimit` before the CLI); stdout and stderr captured.
 CommandResult run_shell(const std::string& command_line);
+// Runs the shell command lines side by side and waits for them all; their results in the order
+// given. For independent commands that spend much of their time starting processes (the CLI
+// loading its libraries, mpirun starting ranks) rather than computing.
+std::vector<CommandResult> run_shells_concurrently(const std::vector<std::string>& command_lines);
 
 // Whether this build runs under AddressSanitizer, whose shadow memory needs terabytes of address
 // space: `ulimit -v` cannot be used there (the process could not start).
