@@ -231,5 +231,34 @@ TEST_F(DistributedCli, CtrlCToMpirunWritesThePartialImageMarkedInterrupted) {
   EXPECT_GT(hits, ids.width * ids.height / 2);
 }
 
+// A CLI built without MPI that mpirun starts anyway says so and renders nothing, instead of N
+// processes each rendering the whole frame over one another's output. Open MPI's launcher tells
+// its processes the job's size in OMPI_COMM_WORLD_SIZE, which is all such a build can see, so the
+// launch is imitated with that variable (a real mpirun needs an MPI build to be installed).
+TEST(DistributedCliWithoutMpi, StartedAsOneOfSeveralRanksSaysItWasBuiltWithoutMpi) {
+#ifdef OBSCURA_MPIEXEC
+  GTEST_SKIP() << "this build has MPI; the message is for builds without it";
+#else
+  const std::string dir = test::make_temp_dir("no-mpi");
+  const std::string out = (fs::path(dir) / "out.png").string();
+  auto r = test::run_shell("OMPI_COMM_WORLD_SIZE=2 OMPI_COMM_WORLD_RANK=0 " +
+                           test::cli_command_line("render --width 8 --height 8 -o " + out));
+  EXPECT_EQ(r.exit_code, 2) << r.output;
+  EXPECT_NE(r.output.find("built without MPI"), std::string::npos) << r.output;
+  EXPECT_FALSE(fs::exists(out));
+  // Rank 1 stays silent: one message for the job.
+  r = test::run_shell("OMPI_COMM_WORLD_SIZE=2 OMPI_COMM_WORLD_RANK=1 " +
+                      test::cli_command_line("render --width 8 --height 8 -o " + out));
+  EXPECT_EQ(r.exit_code, 2);
+  EXPECT_EQ(r.output, "");
+  // One rank is no team: it renders as a lone process.
+  r = test::run_shell("OMPI_COMM_WORLD_SIZE=1 OMPI_COMM_WORLD_RANK=0 " +
+                      test::cli_command_line("render --width 8 --height 8 -q -o " + out));
+  EXPECT_EQ(r.exit_code, 0) << r.output;
+  EXPECT_TRUE(fs::exists(out));
+  fs::remove_all(dir);
+#endif
+}
+
 }  // namespace
 }  // namespace obscura

@@ -43,7 +43,9 @@ inline const std::string& why_mpi_cannot_run() {
   static const std::string why = [] {
 #ifdef OBSCURA_MPIEXEC
     const std::string session_dir = make_temp_dir("ompi");
-    CommandResult probe = run_shell(mpirun_command(session_dir) + " -np 1 true");
+    // Bounded: an MPI that cannot reach its own processes (a sandbox, a broken install) may
+    // wait forever rather than fail.
+    CommandResult probe = run_shell("timeout 60 " + mpirun_command(session_dir) + " -np 1 true");
     std::filesystem::remove_all(session_dir);
     if (probe.exit_code == 0) return std::string();
     return "`mpirun -np 1 true` fails here (exit " + std::to_string(probe.exit_code) + "):\n" +
