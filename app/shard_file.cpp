@@ -251,7 +251,11 @@ RenderedFrame merge_shards(const std::vector<ShardFile>& shards) {
   RenderedFrame whole = first.frame;
   const TileDeal deal =
       tile_deal(whole.renderer, whole.film_sums.width, whole.film_sums.height, parts);
-  for (const auto& [part, shard] : by_part) {
+  for (const auto& entry : by_part) {
+    // (Not a structured binding: the lambda below captures the part, which C++20 allows but
+    // Clang 14 does not.)
+    const int part = entry.first;
+    const ShardFile* shard = entry.second;
     if (part == first.spec.part) continue;
     auto take = [&](const Image& from, Image& into) {
       unpack_owned_pixels(deal, part, pack_owned_pixels(deal, part, from), into);

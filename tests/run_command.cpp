@@ -58,6 +58,19 @@ std::vector<CommandResult> run_shells_concurrently(const std::vector<std::string
   return results;
 }
 
+void expect_refusals(const std::string& prefix, const std::vector<Refusal>& refusals) {
+  std::vector<std::string> commands;
+  for (const Refusal& refusal : refusals)
+    commands.push_back(cli_command_line(prefix + refusal.arguments));
+  const std::vector<CommandResult> results = run_shells_concurrently(commands);
+  for (size_t i = 0; i < refusals.size(); ++i) {
+    EXPECT_NE(results[i].exit_code, 0) << refusals[i].arguments << "\n" << results[i].output;
+    EXPECT_NE(results[i].output.find(refusals[i].expected), std::string::npos)
+        << refusals[i].arguments << "\n"
+        << results[i].output;
+  }
+}
+
 std::string make_temp_dir(const std::string& prefix) {
   std::string pattern = (std::filesystem::temp_directory_path() / (prefix + "-XXXXXX")).string();
   char* made = mkdtemp(pattern.data());

@@ -25,6 +25,14 @@ CommandResult run_shell(const std::string& command_line);
 // loading its libraries, mpirun starting ranks) rather than computing.
 std::vector<CommandResult> run_shells_concurrently(const std::vector<std::string>& command_lines);
 
+// A command line the CLI must refuse, and what its message must say.
+struct Refusal {
+  std::string arguments, expected;
+};
+// Runs `obscura <prefix><refusal.arguments>` for every refusal, side by side: each must exit
+// non-zero with its expected text in the output (checked with EXPECT, naming the arguments).
+void expect_refusals(const std::string& prefix, const std::vector<Refusal>& refusals);
+
 // Whether this build runs under AddressSanitizer, whose shadow memory needs terabytes of address
 // space: `ulimit -v` cannot be used there (the process could not start).
 #if defined(__SANITIZE_ADDRESS__)

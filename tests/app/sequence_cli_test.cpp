@@ -183,11 +183,8 @@ TEST_F(SequenceCli, ARunAgainRendersOnlyTheFramesThatAreNotFinished) {
 }
 
 TEST_F(SequenceCli, OptionsThatDoNotMakeASequenceAreRefused) {
-  struct Refusal {
-    std::string arguments, expected;
-  };
   const std::string frames = " --frames 0:5 -o " + path("f_%04d.exr");
-  const std::vector<Refusal> refusals = {
+  const std::vector<test::Refusal> refusals = {
       {" --frames 5:1 -o " + path("f_%04d.exr"), "LAST is before FIRST"},
       {" --frames a:b -o " + path("f_%04d.exr"), "'a:b'"},
       {" --frames 0:4:0 -o " + path("f_%04d.exr"), "STEP must be at least 1"},
@@ -197,16 +194,7 @@ TEST_F(SequenceCli, OptionsThatDoNotMakeASequenceAreRefused) {
       {frames + " --time 0.1", "--time and --frames"},
       {frames + " --shard 0/2", "--shard splits one frame"},
   };
-  std::vector<std::string> commands;
-  for (const Refusal& refusal : refusals)
-    commands.push_back(test::cli_command_line("render " + scene_arguments() + refusal.arguments));
-  const std::vector<test::CommandResult> results = test::run_shells_concurrently(commands);
-  for (size_t i = 0; i < refusals.size(); ++i) {
-    EXPECT_NE(results[i].exit_code, 0) << refusals[i].arguments << "\n" << results[i].output;
-    EXPECT_NE(results[i].output.find(refusals[i].expected), std::string::npos)
-        << refusals[i].arguments << "\n"
-        << results[i].output;
-  }
+  test::expect_refusals("render " + scene_arguments(), refusals);
   EXPECT_TRUE(files_in(dir_).empty());
 }
 

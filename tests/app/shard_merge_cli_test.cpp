@@ -199,27 +199,14 @@ TEST_F(ShardMergeCliErrors, FilesThatAreNotPartialFilmsAreRefusedNamingTheFile) 
 }
 
 TEST_F(ShardMergeCliErrors, ShardOptionsThatCannotWorkAreRefusedBeforeRendering) {
-  struct OptionRefusal {
-    std::string arguments, expected;
-  };
-  const std::vector<OptionRefusal> refusals = {
+  const std::vector<test::Refusal> refusals = {
       {"--shard 0/2 -o " + path("part.png"), "OpenEXR"},
       {"--shard 3/2 -o " + path("part.exr"), "'3/2'"},
       {"--shard 2 -o " + path("part.exr"), "--shard"},
       {"--renderer raster --fstop 2 --raster-dof post --shard 0/2 -o " + path("part.exr"),
        "--raster-dof post"},
   };
-  std::vector<std::string> commands;
-  for (const OptionRefusal& refusal : refusals)
-    commands.push_back(
-        test::cli_command_line("render --width 64 --height 48 --spp 2 " + refusal.arguments));
-  const std::vector<test::CommandResult> results = test::run_shells_concurrently(commands);
-  for (size_t i = 0; i < refusals.size(); ++i) {
-    EXPECT_NE(results[i].exit_code, 0) << refusals[i].arguments << "\n" << results[i].output;
-    EXPECT_NE(results[i].output.find(refusals[i].expected), std::string::npos)
-        << refusals[i].arguments << "\n"
-        << results[i].output;
-  }
+  test::expect_refusals("render --width 64 --height 48 --spp 2 ", refusals);
   EXPECT_TRUE(files_in(dir_).empty());
 }
 
