@@ -199,9 +199,13 @@ void run_sequence(RenderOptions options, Team& team) {
     }
     frame_options.quiet = options.quiet || !team.leads();
     Scene scene = prepare_scene(frame_options, !video);
+    // The first scene this rank loads tells the frame size (the same for every frame): only then
+    // is the check above still to be made.
+    const bool size_was_known = frame_size.has_value();
     Bounds2i crop = scene.camera.film.crop_pixels();
     frame_size = {crop.width(), crop.height()};
-    if (!video && finished_frame_exists(frame_options.output, crop.width(), crop.height())) {
+    if (!video && !size_was_known &&
+        finished_frame_exists(frame_options.output, crop.width(), crop.height())) {
       ++skipped;
       continue;
     }
