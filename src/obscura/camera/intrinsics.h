@@ -7,17 +7,14 @@
 // Obscura's pixel centres are half-integers, so raster = (u + ½, v + ½). fx = f·W / film width.
 #pragma once
 
+#include "obscura/camera/calibrated_projection.h"
 #include "obscura/camera/camera.h"
 
 namespace obscura {
 
-struct Intrinsics {
-  double fx = 0, fy = 0;  // focal length in pixels, > 0
-  double cx = 0, cy = 0;  // principal point, pixels (integer pixel centres)
-};
-
-// The intrinsics of a perspective camera (at its current focus: fx uses the image distance).
-// Throws obscura::Error for other projections.
+// The intrinsics of a perspective camera (at its current focus: fx uses the image distance), or
+// a calibrated camera's K scaled to the film's resolution. Throws obscura::Error for other
+// projections.
 Intrinsics intrinsics(const Camera& camera);
 
 // A perspective camera reproducing K on a width × height image: horizontal sensor fit on a

@@ -8,6 +8,7 @@ std::string_view projection_name(const Projection& p) {
                         [](const Orthographic&) { return "orthographic"; },
                         [](const Equirectangular&) { return "spherical"; },
                         [](const Fisheye&) { return "fisheye"; },
+                        [](const CalibratedProjection&) { return "calibrated"; },
                     },
                     p);
 }
