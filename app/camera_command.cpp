@@ -135,6 +135,10 @@ void print_equivalents(const Camera& c) {
     row("glTF", "(glTF has no " + std::string(projection_name(c.projection)) + " camera)");
   }
   BlenderCamera b = to_blender(c);
+  if (std::string(b.type) == "NONE") {
+    row("Blender", "(Blender has no " + std::string(projection_name(c.projection)) + " camera)");
+    return;
+  }
   std::string blender = std::string("type ") + b.type;
   if (std::string(b.type) == "PERSP")
     blender += ", lens " + short_num(b.lens_mm) + " mm, sensor " + short_num(b.sensor_width_mm) +

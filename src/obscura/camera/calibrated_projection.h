@@ -19,6 +19,7 @@ struct Intrinsics {
   double fx = 0, fy = 0;  // focal length in pixels, > 0
   double cx = 0, cy = 0;  // principal point, pixels (integer pixel centres)
   double skew = 0;        // K[0][1]: pixels per unit of y' added to u (0 for square sensors)
+  bool operator==(const Intrinsics&) const = default;
 };
 
 struct CalibratedProjection {
@@ -33,5 +34,12 @@ struct CalibratedProjection {
 // Throws obscura::Error naming the first invalid field (fx, fy ≤ 0, non-finite values, a lens
 // model without a valid region, a field angle outside (0, 180]).
 void validate(const CalibratedProjection& p);
+
+// The lens map of `p` (its validity region found once per thread and lens, then reused: cameras
+// that project many points one call at a time stay cheap).
+const LensMap& lens_map(const CalibratedProjection& p);
+
+// The field-angle limit lens maps use, in radians (0: the model's own).
+double max_field_angle_rad(const CalibratedProjection& p);
 
 }  // namespace obscura

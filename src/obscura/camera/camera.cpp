@@ -32,6 +32,41 @@ Point2d raster_from_fisheye_centered(const FilmGeometry& film, Point2d c) {
   return {0.5 * film.width_px + c.x * r / film.pixel_aspect, 0.5 * film.height_px - c.y * r};
 }
 
+// A calibrated camera's pixels (OpenCV's (u, v) on the calibration's image) against the film's
+// raster, and the lens model's normalized image point against (u, v) through K.
+Vector2d calibration_scale(const CalibratedProjection& c, const FilmGeometry& film) {
+  if (c.width_px == 0) return {1, 1};
+  return {double(c.width_px) / film.width_px, double(c.height_px) / film.height_px};
+}
+
+Point2d lens_image_from_raster(const CalibratedProjection& c, const FilmGeometry& film,
+                               Point2d raster) {
+  Vector2d s = calibration_scale(c, film);
+  double u = raster.x * s.x - 0.5, v = raster.y * s.y - 0.5;
+  double y = (v - c.k.cy) / c.k.fy;
+  return {(u - c.k.cx - c.k.skew * y) / c.k.fx, y};
+}
+
+Point2d raster_from_lens_image(const CalibratedProjection& c, const FilmGeometry& film,
+                               Point2d image) {
+  Vector2d s = calibration_scale(c, film);
+  double u = c.k.fx * image.x + c.k.skew * image.y + c.k.cx, v = c.k.fy * image.y + c.k.cy;
+  return {(u + 0.5) / s.x, (v + 0.5) / s.y};
+}
+
+// OpenCV's camera frame (Y down, Z forward) and Obscura's (Y up, looking down −Z) differ by a
+// half turn about X; the map is its own inverse.
+Vector3d flip_yz(Vector3d v) {
+  return {v.x, -v.y, -v.z};
+}
+
+// Whether depth is measured along the optical axis (planes of constant depth) rather than as
+// distance from the camera.
+bool planar_depth(const Projection& p) {
+  if (auto* c = std::get_if<CalibratedProjection>(&p)) return is_planar(c->lens);
+  return std::holds_alternative<Perspective>(p) || std::holds_alternative<Orthographic>(p);
+}
+
 // Inside the film rectangle, edges included, with a hair of slack so that points exactly on the
 // frustum's boundary survive the rounding of tan() and friends.
 bool on_film(const FilmGeometry& film, Point2d p) {
@@ -58,6 +93,7 @@ void Camera::validate() const {
                  [](const Orthographic& o) { obscura::validate(o); },
                  [](const Equirectangular&) {},
                  [](const Fisheye& f) { obscura::validate(f); },
+                 [](const CalibratedProjection& c) { obscura::validate(c); },
              },
              projection);
   bool orthographic = std::holds_alternative<Orthographic>(projection);
@@ -139,6 +175,20 @@ Vector2d Camera::fov_degrees() const {
                 f.fov_degrees * std::min(1.0, film.width_px * film.pixel_aspect / (2 * r)),
                 f.fov_degrees * std::min(1.0, film.height_px / (2 * r)));
           },
+          [&](const CalibratedProjection& c) {
+            // The angles the film's middle row and column span through the lens centre; an edge
+            // the lens does not reach counts as its widest field angle.
+            const LensMap& map = lens_map(c);
+            auto angle_at = [&](Point2d raster) {
+              auto ray = map.inverse(lens_image_from_raster(c, film, raster));
+              return ray ? std::acos(std::clamp(ray->z, -1.0, 1.0)) : map.max_field_angle();
+            };
+            double w = film.width_px, h = film.height_px;
+            Point2d centre = raster_from_lens_image(c, film, {0, 0});
+            return Vector2d(
+                (angle_at({0, centre.y}) + angle_at({w, centre.y})) * kDegreesPerRadian,
+                (angle_at({centre.x, 0}) + angle_at({centre.x, h})) * kDegreesPerRadian);
+          },
       },
       projection);
 }
@@ -181,6 +231,8 @@ PreparedCamera::PreparedCamera(const Camera& camera) : camera_(&camera) {
   width_px_ = camera.film.width_px;
   height_px_ = camera.film.height_px;
   lens_radius_m_ = camera.lens_radius_m();
+  if (auto* c = std::get_if<CalibratedProjection>(&camera.projection))
+    lens_map_.emplace(c->lens, max_field_angle_rad(*c));
   if (!camera.world_from_camera.is_animated())
     fixed_world_from_camera_ = &camera.world_from_camera.keys().front().transform;
 }
@@ -231,6 +283,12 @@ std::optional<CameraRay> PreparedCamera::generate_ray(Point2d film_point, Point2
             if (!d) return std::nullopt;
             return LocalRay{{0, 0, 0}, *d, 1};
           },
+          [&](const CalibratedProjection& c) -> std::optional<LocalRay> {
+            auto d = lens_map_->inverse(lens_image_from_raster(c, camera.film, film_point));
+            if (!d) return std::nullopt;
+            Vector3d direction = flip_yz(*d);
+            return LocalRay{{0, 0, 0}, direction, is_planar(c.lens) ? -direction.z : 1};
+          },
       },
       camera.projection);
   if (!local) return std::nullopt;
@@ -256,7 +314,7 @@ std::optional<FilmProjection> Camera::project(Point3d world, double time_s) cons
   Vector3d d = to_vector(q);
   // Depth along −Z for the planar projections, distance for the spherical ones; then the film
   // point, or nothing outside a fisheye's circle.
-  bool planar = has_projection_matrix();
+  bool planar = planar_depth(projection);
   double depth = planar ? -q.z : length(d);
   if (!(depth >= near_m && depth <= far_m) || (!planar && depth == 0)) return std::nullopt;
   std::optional<Point2d> film_point =
@@ -275,6 +333,11 @@ std::optional<FilmProjection> Camera::project(Point3d world, double time_s) cons
                        auto c = fisheye_centered(f, d);
                        if (!c) return std::nullopt;
                        return raster_from_fisheye_centered(film, *c);
+                     },
+                     [&](const CalibratedProjection& c) -> std::optional<Point2d> {
+                       auto image = lens_map(c).forward(flip_yz(d));
+                       if (!image) return std::nullopt;
+                       return raster_from_lens_image(c, film, *image);
                      },
                  },
                  projection);
@@ -301,6 +364,13 @@ std::optional<Point3d> Camera::unproject(Point2d film_point, double depth_m, dou
             auto d = fisheye_direction(f, fisheye_centered_from_raster(film, film_point));
             if (!d) return std::nullopt;
             return Point3d(0, 0, 0) + *d * depth_m;
+          },
+          [&](const CalibratedProjection& c) -> std::optional<Point3d> {
+            auto d = lens_map(c).inverse(lens_image_from_raster(c, film, film_point));
+            if (!d) return std::nullopt;
+            Vector3d direction = flip_yz(*d);
+            double scale = is_planar(c.lens) ? depth_m / -direction.z : depth_m;
+            return Point3d(0, 0, 0) + direction * scale;
           },
       },
       projection);

@@ -41,8 +41,9 @@ struct CameraRay {
 // Where a world point lands on the film.
 struct FilmProjection {
   Point2d film_point;  // raster coordinates (pixels)
-  // Perspective and orthographic: depth in front of the camera, along its −Z axis (the
-  // rasterizer's eye depth). Spherical cameras: distance from the camera.
+  // Perspective, orthographic and calibrated pinhole: depth in front of the camera, along its −Z
+  // axis (the rasterizer's eye depth). Spherical and calibrated fisheye cameras: distance from
+  // the camera.
   double depth_m = 0;
 };
 
@@ -132,6 +133,7 @@ class PreparedCamera {
   double width_px_ = 0, height_px_ = 0;
   double lens_radius_m_ = 0;
   const Transform* fixed_world_from_camera_ = nullptr;  // a camera that does not move
+  std::optional<LensMap> lens_map_;                     // a calibrated camera's
 };
 
 }  // namespace obscura

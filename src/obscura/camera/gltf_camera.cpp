@@ -101,6 +101,8 @@ BlenderCamera to_blender(const Camera& camera) {
                    b.panorama_type = "FISHEYE_EQUIDISTANT";
                    b.fisheye_fov_degrees = f.fov_degrees;
                  },
+                 // Blender's cameras have no lens distortion and no K with skew.
+                 [&](const CalibratedProjection&) { b.type = "NONE"; },
              },
              camera.projection);
   return b;

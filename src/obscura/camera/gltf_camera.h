@@ -43,7 +43,7 @@ GltfCamera to_gltf(const Camera& camera);
 
 // Blender's camera settings for the same camera (Camera data block + depth of field).
 struct BlenderCamera {
-  const char* type = "PERSP";  // PERSP, ORTHO, PANO
+  const char* type = "PERSP";  // PERSP, ORTHO, PANO; NONE: Blender has no such camera
   double lens_mm = 50, sensor_width_mm = 36, sensor_height_mm = 24;
   const char* sensor_fit = "AUTO";  // AUTO, HORIZONTAL, VERTICAL
   double shift_x = 0, shift_y = 0;

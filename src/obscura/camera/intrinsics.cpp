@@ -9,6 +9,17 @@
 namespace obscura {
 
 Intrinsics intrinsics(const Camera& camera) {
+  if (auto* c = std::get_if<CalibratedProjection>(&camera.projection)) {
+    if (c->width_px == 0) return c->k;
+    // K scales with the image: u + ½ = (u_cal + ½) · W / W_cal.
+    double sx = double(camera.film.width_px) / c->width_px;
+    double sy = double(camera.film.height_px) / c->height_px;
+    return {.fx = c->k.fx * sx,
+            .fy = c->k.fy * sy,
+            .cx = (c->k.cx + 0.5) * sx - 0.5,
+            .cy = (c->k.cy + 0.5) * sy - 0.5,
+            .skew = c->k.skew * sx};
+  }
   if (!std::holds_alternative<Perspective>(camera.projection))
     throw Error("camera.intrinsics", "K describes a perspective camera; this camera is " +
                                          std::string(projection_name(camera.projection)));

@@ -29,6 +29,7 @@ struct PinholeDistortion {
   double k1 = 0, k2 = 0, p1 = 0, p2 = 0, k3 = 0, k4 = 0, k5 = 0, k6 = 0;
   double s1 = 0, s2 = 0, s3 = 0, s4 = 0;
   double tau_x = 0, tau_y = 0;
+  bool operator==(const PinholeDistortion&) const = default;
 };
 
 // OpenCV's fisheye model (cv::fisheye), Kannala–Brandt with four coefficients: θ the angle between
@@ -37,6 +38,7 @@ struct PinholeDistortion {
 // Unlike cv::fisheye (which divides by Z), rays beyond 90° are mapped too: θ runs to 180°.
 struct KannalaBrandt {
   double k1 = 0, k2 = 0, k3 = 0, k4 = 0;
+  bool operator==(const KannalaBrandt&) const = default;
 };
 
 // The polynomial f-theta model of automotive and robotics fisheyes: the image radius (in the
@@ -45,6 +47,7 @@ struct KannalaBrandt {
 // c = (1, 0, …) is the equidistant fisheye; Kannala–Brandt is the odd-power special case.
 struct FThetaPolynomial {
   std::array<double, 6> c = {1, 0, 0, 0, 0, 0};
+  bool operator==(const FThetaPolynomial&) const = default;
 };
 
 // The four textbook fisheye mappings, r(θ) in focal-length units:
@@ -52,6 +55,7 @@ struct FThetaPolynomial {
 enum class FisheyeMapping { equidistant, equisolid, stereographic, orthographic };
 struct ClassicFisheye {
   FisheyeMapping mapping = FisheyeMapping::equidistant;
+  bool operator==(const ClassicFisheye&) const = default;
 };
 
 using LensModel = std::variant<PinholeDistortion, KannalaBrandt, FThetaPolynomial, ClassicFisheye>;
