@@ -10,15 +10,13 @@
 
 namespace obscura::app {
 
-namespace {
+namespace {}  // namespace
 
 bool scene_moves(const Scene& scene) {
   for (const Instance& instance : scene.instances)
     if (instance.animated() || scene.meshes[instance.mesh].deforms()) return true;
   return false;
 }
-
-}  // namespace
 
 void add_raster_effects_options(CLI::App& render, RasterEffectsOptions& o) {
   o.registered = {
@@ -44,6 +42,9 @@ void validate(const RasterEffectsOptions& o, const std::string& renderer) {
 }
 
 bool wants_raster_effects(const RasterEffectsOptions& o, const Scene& scene) {
+  // Cameras without a projection matrix are drawn through lens views, at mid-shutter
+  // (render_raster says so when something moves).
+  if (!scene.camera.has_projection_matrix()) return false;
   bool lens = scene.camera.lens.depth_of_field && o.dof != "off";
   return lens || raster::has_motion_blur(scene.camera, scene_moves(scene));
 }

@@ -30,6 +30,8 @@ void validate(const RasterEffectsOptions& options, const std::string& renderer);
 // Whether the render needs more than one sharp frame at mid-shutter: the camera has depth of
 // field (and --raster-dof is not off), or the shutter is open while the camera or an instance
 // moves.
+// Whether an instance moves or a mesh deforms over the shutter.
+bool scene_moves(const Scene& scene);
 bool wants_raster_effects(const RasterEffectsOptions& options, const Scene& scene);
 
 // Renders `scene` into `film` (the crop's size) with the effects: `samples` frames through

@@ -2,7 +2,10 @@
 
 #include <chrono>
 
+#include "obscura/raster/accumulation.h"
+#include "obscura/raster/lens_warp.h"
 #include "option_ranges.h"
+#include "raster_effects_options.h"
 #include "usage_error.h"
 
 namespace obscura::app {
@@ -60,10 +63,39 @@ raster::RasterSettings raster_settings(const RasterOptions& o, bool aovs) {
   return s;
 }
 
+namespace {
+
+// A camera without a projection matrix (calibrated lens, fisheye, panorama): pinhole views
+// resampled along its rays (raster/lens_warp.h), at mid-shutter.
+RasterRender render_through_lens(const Scene& scene, const raster::SceneRasterizer& rasterizer,
+                                 Film& film, const WorkShare& share,
+                                 std::chrono::steady_clock::time_point start) {
+  raster::LensWarpSettings settings{.part = share.part, .parts = share.parts};
+  raster::LensRender lens = raster::render_through_lens(rasterizer, scene.camera, settings, film);
+  RasterRender result;
+  result.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  result.warnings = rasterizer.warnings();
+  result.warnings.insert(result.warnings.end(), lens.warnings.begin(), lens.warnings.end());
+  if (raster::has_motion_blur(scene.camera, scene_moves(scene)))
+    result.warnings.push_back("the rasterizer draws a " +
+                              std::string(projection_name(scene.camera.projection)) +
+                              " camera at mid-shutter, without motion blur (the tracer blurs it)");
+  result.progress = {.end = RenderEnd::kComplete, .done = 1, .requested = 1, .unit = "frames"};
+  if (lens.normal)
+    result.aovs = {{"normal", std::move(*lens.normal)},
+                   {"depth", std::move(*lens.distance)},
+                   {"id", std::move(*lens.id)}};
+  return result;
+}
+
+}  // namespace
+
 RasterRender render_raster(const Scene& scene, const RasterOptions& options, bool aovs, Film& film,
                            const WorkShare& share) {
   auto start = std::chrono::steady_clock::now();
   raster::SceneRasterizer rasterizer(scene, raster_settings(options, aovs));
+  if (!scene.camera.has_projection_matrix())
+    return render_through_lens(scene, rasterizer, film, share, start);
   raster::RenderTarget target = rasterizer.make_target(scene.camera);
   target.set_share(share.part, share.parts);
   rasterizer.render(scene.camera, film, &target);
