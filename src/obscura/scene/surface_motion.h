@@ -21,6 +21,7 @@ class SurfaceMotion {
   // instance whose motion keys are invalid.
   explicit SurfaceMotion(const Scene& scene);
 
+  const Scene& scene() const { return *scene_; }
   // The instance's object→world transform at `time_s`.
   Transform world_from_object(uint32_t instance, double time_s) const;
   // Triangle `triangle` of the instance's mesh in world space at `time_s` (deformation included).
