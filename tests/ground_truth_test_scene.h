@@ -78,6 +78,28 @@ inline Scene ground_truth_scene(bool camera_moves) {
   return scene;
 }
 
+// A square 3 m in front of a still camera whose right edge stretches from x = 0.4 to 0.6 m over
+// the shutter while its left edge stays at −0.4 (a deforming mesh, two time steps): a material
+// point at x moves to −0.4 + (x + 0.4) · 1.0 / 0.8.
+inline Scene stretching_square_scene() {
+  Scene scene = ground_truth_scene(false);
+  Mesh& square = scene.meshes[1];
+  const float h = float(GroundTruthScene::kHalfSide);
+  std::vector<Point3f> stretched = square.positions;
+  stretched[1].x = stretched[2].x = h + 0.2f;
+  square.deformation.open_s = GroundTruthScene::kOpen;
+  square.deformation.close_s = GroundTruthScene::kClose;
+  square.deformation.positions = {square.positions, stretched};
+  scene.instances[1].motion.clear();
+  scene.instances[1].world_from_object = Transform::translate({0, 0, GroundTruthScene::kSquareZ});
+  return scene;
+}
+
+inline double stretched_x(double x) {
+  const double h = GroundTruthScene::kHalfSide;
+  return -h + (x + h) * (2 * h + 0.2) / (2 * h);
+}
+
 // The analytic camera: where the camera (at open: identity; at close: moved and turned when it
 // moves) is and which way a raster point's ray goes, written out by hand.
 struct AnalyticCamera {

@@ -58,6 +58,21 @@ TEST(RasterGroundTruth, AnAnimatedObjectsFlowIsItsProjectedTravel) {
   EXPECT_GT(square, 20);
 }
 
+TEST(RasterGroundTruth, APointOnADeformingMeshMovesWithItsTriangle) {
+  const GroundTruthBuffer gt = render(testing::stretching_square_scene());
+  int square = 0;
+  for (int y = 0; y < S::kHeight; ++y)
+    for (int x = 0; x < S::kWidth; ++x) {
+      if (gt.value(x, y, "instance") != 1.f) continue;
+      const double px = gt.value(x, y, "P.X");
+      const double expected = S::fx() * (testing::stretched_x(px) - px) / -S::kSquareZ;
+      EXPECT_NEAR(gt.value(x, y, "flow.forward.X"), expected, 1e-3);
+      EXPECT_NEAR(gt.value(x, y, "flow.forward.Y"), 0, 1e-3);
+      ++square;
+    }
+  EXPECT_GT(square, 20);
+}
+
 TEST(RasterGroundTruth, NeedsIdsAndOneSamplePerPixel) {
   const Scene scene = testing::ground_truth_scene(false);
   EXPECT_THROW(render(scene, settings(false)), Error);
