@@ -129,6 +129,10 @@ Scene prepare_scene(RenderOptions& options, bool writes_output) {
   scene.camera = resolve_camera(scene, options.camera, options.width, options.height);
   scene.camera.shutter = shutter_at_time(options.choice, scene.camera.shutter);
   scene.validate();
+  if (!options.ground_truth.path.empty() || options.ground_truth.flow_times) {
+    ground_truth_times(options.ground_truth, scene.camera);  // a bad value fails here, early
+    if (writes_output) check_ground_truth_output(options.ground_truth, options.output, scene);
+  }
   return scene;
 }
 

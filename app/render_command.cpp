@@ -85,6 +85,10 @@ void run_render(RenderOptions options, const std::string& job) {
     return;
   }
   Team& team = app::team();
+  if (!options.ground_truth.path.empty() && !options.frames.empty())
+    throw UsageError(
+        "--ground-truth writes one frame's file; it does not take --frames (render each "
+        "frame with its own --ground-truth file)");
   if (!options.frames.empty()) return run_sequence(options, team);
   std::optional<ShardSpec> shard;
   if (!options.shard.empty()) {
@@ -98,6 +102,10 @@ void run_render(RenderOptions options, const std::string& job) {
           "--shard: --raster-dof post blurs the whole frame, which no part has; "
           "use --raster-dof accumulate, or render the frame in one process or "
           "under mpirun");
+    if (!options.ground_truth.path.empty())
+      throw UsageError(
+          "--ground-truth is not written by --shard parts: render the ground truth in one "
+          "process (it costs one ray per pixel), or under mpirun");
     if (image_format_for_path(options.output) != ImageFormat::kExr)
       throw UsageError(
           "--shard writes a partial film, an OpenEXR file: give -o PART.exr (then "
@@ -158,6 +166,11 @@ void run_render(RenderOptions options, const std::string& job) {
       print_summary(options, scene, frame, ranks, rays, seconds);
     }
     write_frame(options, options.output, frame, scene.camera);
+    // Rank 0 alone: the ground truth is one ray per pixel, not worth dealing out.
+    if (!options.ground_truth.path.empty())
+      std::printf("%s\n", write_ground_truth_file(options.ground_truth, frame.renderer,
+                                                  options.raster, scene)
+                              .c_str());
   } else {
     set_exit_status(exit_status_for(frame.progress.end));
   }
@@ -213,6 +226,7 @@ void add_render_command(CLI::App& app) {
   add_tracer_options(*render, options->tracer);
   add_raster_options(*render, options->raster);
   add_raster_effects_options(*render, options->raster_effects);
+  add_ground_truth_options(*render, options->ground_truth);
   render->add_option("--shard", options->shard,
                      "Render part I of N of the frame (I counted from 0) to a partial film, an "
                      ".exr file; `obscura merge` assembles the N parts into the image one "

@@ -90,6 +90,7 @@ class RenderTarget {
   const float* depth() const { return depth_.data(); }
   const uint32_t* object_ids() const { return object_id_.data(); }
   const uint32_t* primitive_ids() const { return primitive_id_.data(); }
+  const Vector3f* normals() const { return normal_.data(); }
 
   // The colour with samples averaged (a box filter over the pixel): width × height RGB.
   Image resolve_color() const;

@@ -1,0 +1,81 @@
+#include "ground_truth_output.h"
+
+#include <algorithm>
+#include <filesystem>
+#include <memory>
+#include <sstream>
+#include <vector>
+
+#include "camera_options.h"
+#include "obscura/io/ground_truth_file.h"
+#include "obscura/io/image_io.h"
+#include "obscura/raster/ground_truth_render.h"
+#include "obscura/scene/surface_motion.h"
+#include "obscura/trace/ground_truth_render.h"
+#include "obscura/trace/trace_scene.h"
+#include "usage_error.h"
+
+namespace obscura::app {
+
+void add_ground_truth_options(CLI::App& render, GroundTruthOptions& options) {
+  render.add_option("--ground-truth", options.path,
+                    "Also write per-pixel ground truth (depth, range, position, normals, "
+                    "instance and material ids, forward and backward optical flow, time) and the "
+                    "exact camera to this .exr file (docs/ground_truth.md)");
+  render.add_option("--flow-times", options.flow_times,
+                    "The two times A:B (seconds, fractions allowed) of --ground-truth: values at "
+                    "A, optical flow from A to B and back; default: the shutter's open and close");
+}
+
+GroundTruthTimes ground_truth_times(const GroundTruthOptions& options, const Camera& camera) {
+  if (!options.flow_times) return default_ground_truth_times(camera);
+  if (options.path.empty())
+    throw UsageError("--flow-times sets the times of --ground-truth: give --ground-truth FILE.exr");
+  const std::string& text = *options.flow_times;
+  const size_t colon = text.find(':');
+  if (colon == std::string::npos || text.find(':', colon + 1) != std::string::npos)
+    throw UsageError("--flow-times expects A:B in seconds (0:1/60); got '" + text + "'");
+  return {parse_seconds(text.substr(0, colon), "--flow-times"),
+          parse_seconds(text.substr(colon + 1), "--flow-times")};
+}
+
+void check_ground_truth_output(const GroundTruthOptions& options, const std::string& image_output,
+                               const Scene& scene) {
+  if (options.path.empty()) return;
+  if (image_format_for_path(options.path) != ImageFormat::kExr)
+    throw UsageError("--ground-truth writes an OpenEXR file: the name must end in .exr; got '" +
+                     options.path + "'");
+  check_output_path(options.path);
+  std::error_code error;
+  if (options.path == image_output || std::filesystem::weakly_canonical(options.path, error) ==
+                                          std::filesystem::weakly_canonical(image_output, error))
+    throw UsageError("--ground-truth '" + options.path + "' is the image's own output (-o)");
+  check_not_an_input(options.path, scene.input_files);
+}
+
+std::string write_ground_truth_file(const GroundTruthOptions& options, const std::string& renderer,
+                                    const RasterOptions& raster, const Scene& scene) {
+  const Camera& camera = scene.camera;
+  const GroundTruthTimes times = ground_truth_times(options, camera);
+  const SurfaceMotion motion(scene);
+  std::optional<GroundTruthBuffer> buffer;
+  if (renderer == "raster") {
+    raster::RasterSettings settings = raster_settings(raster, true);
+    settings.msaa_samples = 1;     // visibility at the pixel centre
+    settings.shadow_map_size = 0;  // shading plays no part
+    const raster::SceneRasterizer rasterizer(scene, settings);
+    buffer = raster::render_ground_truth(rasterizer, motion, camera, times);
+  } else {
+    // Motion compiled over an interval holding both times (which may lie outside the shutter).
+    Shutter interval{.open_s = std::min({times.first_s, times.second_s, camera.shutter.open_s}),
+                     .close_s = std::max({times.first_s, times.second_s, camera.shutter.close_s})};
+    TraceSceneOptions trace_options;
+    trace_options.shutter = interval;
+    const TraceScene trace(scene, std::make_shared<EmbreeDevice>(), trace_options);
+    buffer = render_ground_truth(trace, motion, camera, times);
+  }
+  write_ground_truth(options.path, *buffer, camera, times);
+  return options.path;
+}
+
+}  // namespace obscura::app
