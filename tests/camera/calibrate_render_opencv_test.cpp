@@ -15,7 +15,7 @@
 #include "obscura/raster/lens_warp.h"
 #include "obscura/raster/scene_rasterizer.h"
 #include "obscura/scene/scene.h"
-#include "obscura/trace/direct_lighting.h"
+#include "obscura/trace/integrator.h"
 #include "obscura/trace/render.h"
 
 namespace obscura {
@@ -63,18 +63,25 @@ std::vector<cv::Point3f> inner_corners() {
 }
 
 const CalibratedProjection kCamera{
-    .k = {.fx = 610, .fy = 616.1, .cx = 323.4, .cy = 236.7},
+    .k = {.fx = 1220, .fy = 1232.2, .cx = 647.4, .cy = 473.7},
     .lens = PinholeDistortion{.k1 = -0.28, .k2 = 0.09, .p1 = 0.003, .p2 = -0.002}};
 
 Camera camera_at(Point3d eye, Point3d target) {
   Camera c;
   c.projection = kCamera;
-  c.film.width_px = 640;
-  c.film.height_px = 480;
+  c.film.width_px = 1280;
+  c.film.height_px = 960;
   c.near_m = 0.01;
   c.world_from_camera = world_from_camera_look_at(eye, target);
   c.validate();
   return c;
+}
+
+cv::Mat gray_float(const Image& image) {
+  cv::Mat m(image.height, image.width, CV_32F);
+  for (int y = 0; y < image.height; ++y)
+    for (int x = 0; x < image.width; ++x) m.at<float>(y, x) = image.at(x, y, 1);
+  return m;
 }
 
 cv::Mat gray(const Image& image) {
@@ -85,15 +92,28 @@ cv::Mat gray(const Image& image) {
   return m;
 }
 
+// The board is all that emits and nothing else is lit: what a camera ray hits first is white.
+class FirstHitWhite final : public Integrator {
+ public:
+  Rgb radiance(const TraceScene& scene, const Ray& ray, Sampler&, RayCounts& counts,
+               FirstHit*) const override {
+    ++counts.camera;
+    return scene.occluded(ray) ? Rgb(1) : Rgb(0);
+  }
+};
+
 Image trace_board(const Scene& scene, const Camera& camera) {
   TraceScene trace(scene, std::make_shared<EmbreeDevice>());
   Film film(camera.film.width_px, camera.film.height_px);
-  render(trace, camera, DirectLightingIntegrator(), {.samples_per_pixel = 16, .seed = 1}, film);
+  render(trace, camera, FirstHitWhite(), {.samples_per_pixel = 64, .seed = 1}, film);
   return film.to_image();
 }
 
 Image raster_board(const Scene& scene, const Camera& camera) {
-  raster::SceneRasterizer rasterizer(scene, {.msaa_samples = 4, .surface_lights = false});
+  raster::RasterSettings settings;
+  settings.msaa_samples = 8;
+  settings.surface_lights = false;
+  raster::SceneRasterizer rasterizer(scene, settings);
   Film film(camera.film.width_px, camera.film.height_px);
   raster::render_through_lens(rasterizer, camera, {}, film);
   return film.to_image();
@@ -107,7 +127,7 @@ std::vector<cv::Point2f> detect_corners(const Image& image, const Camera& camera
   std::vector<cv::Point2f> found;
   if (!cv::findChessboardCorners(g, kInnerCorners, found, cv::CALIB_CB_ADAPTIVE_THRESH))
     return {};
-  cv::cornerSubPix(g, found, cv::Size(5, 5), cv::Size(-1, -1),
+  cv::cornerSubPix(gray_float(image), found, cv::Size(5, 5), cv::Size(-1, -1),
                    cv::TermCriteria(cv::TermCriteria::EPS + cv::TermCriteria::COUNT, 100, 1e-5));
   std::vector<cv::Point2f> ordered;
   for (const cv::Point3f& p : inner_corners()) {
@@ -127,8 +147,8 @@ std::vector<cv::Point2f> detect_corners(const Image& image, const Camera& camera
 std::vector<Camera> poses() {
   std::vector<Camera> cameras;
   for (int k = 0; k < 18; ++k) {
-    double azimuth = (k % 6 - 2.5) * 0.13, elevation = (k / 6 - 1) * 0.22;
-    double distance = 1.25 + 0.12 * (k % 3);
+    double azimuth = (k % 6 - 2.5) * 0.2, elevation = (k / 6 - 1) * 0.35;
+    double distance = 1.3 + 0.12 * (k % 3);
     Point3d eye(distance * std::sin(azimuth) * std::cos(elevation),
                 distance * std::sin(elevation), distance * std::cos(azimuth) * std::cos(elevation));
     Point3d target(0.06 * ((k * 7) % 5 - 2), 0.05 * ((k * 3) % 5 - 2), 0);
@@ -149,7 +169,7 @@ TEST(CalibrateWhatWeRender, CalibrateCameraRecoversTheDistortedCamera) {
   }
   cv::Mat K, D;
   std::vector<cv::Mat> rvecs, tvecs;
-  double rms = cv::calibrateCamera(object_points, image_points, cv::Size(640, 480), K, D, rvecs,
+  double rms = cv::calibrateCamera(object_points, image_points, cv::Size(1280, 960), K, D, rvecs,
                                    tvecs, cv::CALIB_FIX_K3);
   const Intrinsics& k = kCamera.k;
   const auto& d = std::get<PinholeDistortion>(kCamera.lens);
@@ -178,8 +198,13 @@ TEST(CalibrateWhatWeRender, RasterizerAndTracerPutTheCornersInTheSamePlaces) {
     std::vector<cv::Point2f> drawn = detect_corners(raster_board(scene, camera), camera, {});
     ASSERT_EQ(traced.size(), inner_corners().size());
     ASSERT_EQ(drawn.size(), inner_corners().size());
-    for (size_t i = 0; i < traced.size(); ++i)
+    cv::Point2f mean;
+    for (size_t i = 0; i < traced.size(); ++i) {
       worst = std::max(worst, double(cv::norm(traced[i] - drawn[i])));
+      mean += (drawn[i] - traced[i]) / float(traced.size());
+    }
+    std::printf("pose %d: mean corner offset rasterizer - tracer (%.4f, %.4f) px\n", k, mean.x,
+                mean.y);
   }
   std::printf("worst corner difference, rasterizer vs tracer: %.4f px\n", worst);
   EXPECT_LE(worst, 0.1);
