@@ -1,7 +1,7 @@
 #include "obscura/io/camera_calibration.h"
 
+#include <charconv>
 #include <cmath>
-#include <cstdio>
 
 #include "obscura/camera/intrinsics.h"
 #include "obscura/camera/number_text.h"
@@ -109,9 +109,11 @@ void validate_calibration(const CameraCalibration& c, const std::string& where) 
 }
 
 std::string exact_number(double value) {
+  if (value == 0) return "0";  // not "-0"
   char buffer[40];
-  std::snprintf(buffer, sizeof buffer, "%.17g", value);
-  return buffer;
+  auto [end, error] = std::to_chars(buffer, buffer + sizeof buffer, value);
+  (void)error;  // 40 characters hold any double
+  return std::string(buffer, end);
 }
 
 }  // namespace obscura

@@ -50,7 +50,7 @@ Transform world_from_camera_of(const CvExtrinsics& extrinsics, const std::string
 void validate_calibration(const CameraCalibration& calibration, const std::string& where);
 
 // Numbers as calibration files are written: the shortest text that reads back to the same
-// double ("%.17g").
+// double (std::to_chars), "0" for ±0.
 std::string exact_number(double value);
 
 }  // namespace obscura

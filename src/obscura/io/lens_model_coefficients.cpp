@@ -10,7 +10,9 @@ namespace obscura {
 namespace {
 
 std::string count_text(size_t n) {
-  return number_text(double(n)) + (n == 1 ? " coefficient" : " coefficients");
+  std::string text = number_text(double(n));
+  text.append(n == 1 ? " coefficient" : " coefficients");
+  return text;
 }
 
 }  // namespace
@@ -66,7 +68,11 @@ LensModel lens_model_from_coefficients(const std::string& name, const std::vecto
     throw Error("unknown lens model '" + name +
                 "'; expected opencv, kannala-brandt, ftheta, equidistant, equisolid, "
                 "stereographic or orthographic-fisheye");
-  if (n != 0) throw Error(name + " takes no coefficients; got " + count_text(n));
+  if (n != 0) {
+    std::string message = name;
+    message.append(" takes no coefficients; got ").append(count_text(n));
+    throw Error(message);
+  }
   return ClassicFisheye{mapping};
 }
 
