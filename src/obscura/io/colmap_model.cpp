@@ -246,7 +246,7 @@ ColmapModelText colmap_model_text(const CameraCalibration& c) {
   std::vector<double> params = {p.k.fx, p.k.fy, p.k.cx + kColmapPixelOffset,
                                 p.k.cy + kColmapPixelOffset};
   params.insert(params.end(), coefficients.begin(), coefficients.end());
-  for (double v : params) out.cameras += " " + exact_number(v);
+  for (double v : params) out.cameras.append(" ").append(exact_number(v));
   out.cameras += "\n";
   CvExtrinsics e = cv_extrinsics(c.world_from_camera.value_or(Transform()));
   std::array<double, 4> q = quaternion_from_rotation(e.r);
@@ -258,9 +258,9 @@ ColmapModelText colmap_model_text(const CameraCalibration& c) {
       "#   IMAGE_ID, QW, QX, QY, QZ, TX, TY, TZ, CAMERA_ID, NAME\n"
       "#   POINTS2D[] as (X, Y, POINT3D_ID)\n"
       "# Number of images: 1, mean observations per image: 0\n1";
-  for (double v : q) out.images += " " + exact_number(v);
-  for (double v : e.t) out.images += " " + exact_number(v);
-  out.images += " 1 " + name + "\n\n";
+  for (double v : q) out.images.append(" ").append(exact_number(v));
+  for (double v : e.t) out.images.append(" ").append(exact_number(v));
+  out.images.append(" 1 ").append(name).append("\n\n");
   return out;
 }
 
