@@ -248,7 +248,9 @@ ColmapModelText colmap_model_text(const CameraCalibration& c) {
   params.insert(params.end(), coefficients.begin(), coefficients.end());
   for (double v : params) out.cameras.append(" ").append(exact_number(v));
   out.cameras += "\n";
-  CvExtrinsics e = cv_extrinsics(c.world_from_camera.value_or(Transform()));
+  // Without a pose: COLMAP's identity (R = I, t = 0).
+  CvExtrinsics e{.r = {{{1, 0, 0}, {0, 1, 0}, {0, 0, 1}}}, .t = {0, 0, 0}};
+  if (c.world_from_camera) e = cv_extrinsics(*c.world_from_camera);
   std::array<double, 4> q = quaternion_from_rotation(e.r);
   std::string name = c.image_name.empty() ? "image.png" : c.image_name;
   for (char& ch : name)

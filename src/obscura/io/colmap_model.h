@@ -29,7 +29,7 @@ CameraCalibration parse_colmap_model(const std::string& cameras_text,
                                      const std::string& image_name);
 
 // cameras.txt and images.txt holding `calibration` as camera 1 and image 1 (its image_name, or
-// "image.png"); a calibration without a pose is written at the identity pose.
+// "image.png"; spaces become '_'); a calibration without a pose is written with R = I, t = 0.
 struct ColmapModelText {
   std::string cameras, images;
 };
