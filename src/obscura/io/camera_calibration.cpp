@@ -23,9 +23,9 @@ CameraCalibration calibration_of(const Camera& camera) {
     p = *c;
   } else if (!std::holds_alternative<Perspective>(camera.projection)) {
     throw Error("camera '" + camera.name + "'",
-                "a calibration (K and a lens model) cannot describe a " +
+                "a calibration (K and a lens model) cannot describe its " +
                     std::string(projection_name(camera.projection)) +
-                    " camera; use a perspective or calibrated camera");
+                    " projection; use a perspective or calibrated camera");
   }
   p.k = intrinsics(camera);  // scaled to the film
   p.width_px = camera.film.width_px;
