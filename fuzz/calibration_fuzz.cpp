@@ -17,11 +17,16 @@ namespace {
 
 obscura::CameraCalibration read(char selector, const std::string& text) {
   switch (selector) {
-    case 'y': return obscura::parse_opencv_yaml(text, "fuzz.yaml");
-    case 'j': return obscura::parse_opencv_json(text, "fuzz.json");
-    case 'n': return obscura::parse_nerf_transforms(text, "transforms.json", "");
-    case 'c': break;
-    default: return read("yjnc"[static_cast<unsigned char>(selector) % 4], text);
+    case 'y':
+      return obscura::parse_opencv_yaml(text, "fuzz.yaml");
+    case 'j':
+      return obscura::parse_opencv_json(text, "fuzz.json");
+    case 'n':
+      return obscura::parse_nerf_transforms(text, "transforms.json", "");
+    case 'c':
+      break;
+    default:
+      return read("yjnc"[static_cast<unsigned char>(selector) % 4], text);
   }
   size_t split = text.find('\0');
   if (split == std::string::npos)
