@@ -181,7 +181,7 @@ CameraCalibration parse_nerf_transforms(const std::string& text, const std::stri
 std::string nerf_transforms_text(const CameraCalibration& c) {
   const CalibratedProjection& p = c.projection;
   if (p.k.skew != 0) throw Error("transforms.json", "NeRF's transforms.json has no skew");
-  Json out = Json::object();
+  std::string model;
   std::vector<std::pair<const char*, double>> distortion;
   if (auto* d = std::get_if<PinholeDistortion>(&p.lens)) {
     if (d->k4 != 0 || d->k5 != 0 || d->k6 != 0 || d->s1 != 0 || d->s2 != 0 || d->s3 != 0 ||
@@ -189,35 +189,45 @@ std::string nerf_transforms_text(const CameraCalibration& c) {
       throw Error("transforms.json",
                   "NeRF's OPENCV model has only k1 k2 p1 p2 k3 (no rational "
                   "k4..k6, thin-prism or tilt terms)");
-    out["camera_model"] = "OPENCV";
+    model = "OPENCV";
     distortion = {{"k1", d->k1}, {"k2", d->k2}, {"k3", d->k3}, {"p1", d->p1}, {"p2", d->p2}};
   } else if (auto* kb = std::get_if<KannalaBrandt>(&p.lens)) {
-    out["camera_model"] = "OPENCV_FISHEYE";
+    model = "OPENCV_FISHEYE";
     distortion = {{"k1", kb->k1}, {"k2", kb->k2}, {"k3", kb->k3}, {"k4", kb->k4}};
   } else if (auto* f = std::get_if<ClassicFisheye>(&p.lens);
              f && f->mapping == FisheyeMapping::equidistant) {
-    out["camera_model"] = "OPENCV_FISHEYE";
+    model = "OPENCV_FISHEYE";
     distortion = {{"k1", 0}, {"k2", 0}, {"k3", 0}, {"k4", 0}};
   } else {
     throw Error("transforms.json", std::string("NeRF's transforms.json has no ") +
                                        lens_model_name(p.lens) + " lens model");
   }
-  out["w"] = p.width_px;
-  out["h"] = p.height_px;
-  out["fl_x"] = p.k.fx;
-  out["fl_y"] = p.k.fy;
-  out["cx"] = p.k.cx + kNerfPixelOffset;
-  out["cy"] = p.k.cy + kNerfPixelOffset;
-  for (const auto& [key, value] : distortion) out[key] = value;
-  if (is_planar(p.lens)) out["camera_angle_x"] = 2 * std::atan(0.5 * p.width_px / p.k.fx);
+  std::vector<std::pair<std::string, std::string>> fields = {
+      {"camera_model", "\"" + model + "\""},
+      {"w", std::to_string(p.width_px)},
+      {"h", std::to_string(p.height_px)},
+      {"fl_x", exact_number(p.k.fx)},
+      {"fl_y", exact_number(p.k.fy)},
+      {"cx", exact_number(p.k.cx + kNerfPixelOffset)},
+      {"cy", exact_number(p.k.cy + kNerfPixelOffset)}};
+  for (const auto& [key, value] : distortion) fields.emplace_back(key, exact_number(value));
+  // instant-ngp's field of view, for readers that look only at it.
+  if (is_planar(p.lens))
+    fields.emplace_back("camera_angle_x", exact_number(2 * std::atan(0.5 * p.width_px / p.k.fx)));
+  std::string out = "{\n";
+  for (const auto& [key, value] : fields)
+    out.append("  \"").append(key).append("\": ").append(value).append(",\n");
   const Matrix4 m = c.world_from_camera.value_or(Transform()).matrix();
-  Json matrix = Json::array();
-  for (int i = 0; i < 4; ++i) matrix.push_back({m.m[i][0], m.m[i][1], m.m[i][2], m.m[i][3]});
-  out["frames"] =
-      Json::array({Json{{"file_path", c.image_name.empty() ? "image.png" : c.image_name},
-                        {"transform_matrix", matrix}}});
-  // nlohmann writes doubles with 17 significant digits: they read back exactly.
-  return out.dump(2) + "\n";
+  std::string name = Json(c.image_name.empty() ? "image.png" : c.image_name).dump();
+  out.append("  \"frames\": [\n    {\n      \"file_path\": ").append(name);
+  out.append(",\n      \"transform_matrix\": [\n");
+  for (int i = 0; i < 4; ++i) {
+    out.append("        [");
+    for (int j = 0; j < 4; ++j) out.append(j ? ", " : "").append(exact_number(m.m[i][j]));
+    out.append(i < 3 ? "],\n" : "]\n");
+  }
+  out.append("      ]\n    }\n  ]\n}\n");
+  return out;
 }
 
 }  // namespace obscura
