@@ -41,8 +41,8 @@ OpenCvEntry entry(const Json& value, const std::string& where) {
   if (value.is_number()) return number_entry(value.get<double>(), where);
   if (value.is_boolean()) return text_entry(value.get<bool>() ? "true" : "false", where);
   if (value.is_string()) return text_entry(value.get<std::string>(), where);
-  if (value.is_object() &&
-      (value.value("type_id", "") == "opencv-matrix" || value.contains("data")))
+  if (value.is_object() && ((value.contains("type_id") && value["type_id"] == "opencv-matrix") ||
+                            value.contains("data")))
     return read_matrix(value, where);
   if (value.is_array()) {  // a std::vector<double>, as one column
     OpenCvEntry e = obscura::matrix_entry({}, 0, 0, where);
