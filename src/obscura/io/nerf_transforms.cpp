@@ -218,7 +218,9 @@ std::string nerf_transforms_text(const CameraCalibration& c) {
   for (const auto& [key, value] : fields)
     out.append("  \"").append(key).append("\": ").append(value).append(",\n");
   const Matrix4 m = c.world_from_camera.value_or(Transform()).matrix();
-  std::string name = Json(c.image_name.empty() ? "image.png" : c.image_name).dump();
+  // A name that is not UTF-8 (COLMAP's NAME is bytes) gets U+FFFD where it breaks, not an error.
+  std::string name = Json(c.image_name.empty() ? "image.png" : c.image_name)
+                         .dump(-1, ' ', false, Json::error_handler_t::replace);
   out.append("  \"frames\": [\n    {\n      \"file_path\": ").append(name);
   out.append(",\n      \"transform_matrix\": [\n");
   for (int i = 0; i < 4; ++i) {
