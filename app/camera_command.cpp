@@ -5,10 +5,12 @@
 #include <memory>
 #include <string>
 
+#include "camera_export.h"
 #include "camera_options.h"
 #include "obscura/camera/gltf_camera.h"
 #include "obscura/camera/intrinsics.h"
 #include "obscura/camera/number_text.h"
+#include "obscura/io/lens_model_coefficients.h"
 #include "option_ranges.h"
 #include "render_command.h"
 #include "usage_error.h"
@@ -21,6 +23,7 @@ struct CameraCommandOptions {
   std::string scene;
   std::optional<int> width, height;
   CameraOverrides overrides;
+  std::optional<std::string> export_format, output;
 };
 
 std::string num(double v) {
@@ -73,6 +76,18 @@ void print_geometry(const Camera& c) {
     Intrinsics k = intrinsics(c);
     row("K (OpenCV)", "[" + short_num(k.fx) + " 0 " + short_num(k.cx) + "; 0 " + short_num(k.fy) +
                           " " + short_num(k.cy) + "; 0 0 1] px (pixel centres at integers)");
+  }
+  if (auto* p = std::get_if<CalibratedProjection>(&c.projection)) {
+    Intrinsics k = intrinsics(c);
+    row("K (OpenCV)", "[" + short_num(k.fx) + " " + short_num(k.skew) + " " + short_num(k.cx) +
+                          "; 0 " + short_num(k.fy) + " " + short_num(k.cy) +
+                          "; 0 0 1] px at the film's size (pixel centres at integers)");
+    std::string lens = lens_model_name(p->lens);
+    std::vector<double> coefficients = lens_model_coefficients(p->lens);
+    for (size_t i = 0; i < coefficients.size(); ++i) lens += (i ? "," : ":") + num(coefficients[i]);
+    if (p->max_field_angle_degrees > 0)
+      lens += ", field limited to " + short_num(p->max_field_angle_degrees) + "° off axis";
+    row("distortion", lens);
   }
   if (std::holds_alternative<Orthographic>(c.projection)) {
     ScreenWindow w = c.screen_window();
@@ -167,7 +182,12 @@ void run_camera(const CameraCommandOptions& options) {
                      std::to_string(*options.height));
   if (options.width && options.height) check_image_size(*options.width, *options.height, true);
   Scene scene = load_scene(options.scene);
+  if (options.output && !options.export_format) throw UsageError("--output needs --export FORMAT");
   Camera camera = resolve_camera(scene, options.overrides, options.width, options.height);
+  if (options.export_format) {
+    export_calibration(camera, *options.export_format, options.output);
+    return;
+  }
   std::printf("camera '%s' of scene '%s'\n", camera.name.c_str(), scene.name.c_str());
   print_geometry(camera);
   print_lens_and_exposure(camera);
@@ -186,6 +206,15 @@ void add_camera_command(CLI::App& app) {
   command->add_option("--height", options->height, "Image height in pixels (default: the scene's)")
       ->check(integer_in(1, kMaxImageSidePx));
   add_camera_options(*command, options->overrides);
+  command
+      ->add_option("--export", options->export_format,
+                   "Print the resolved camera as a calibration file: opencv-yaml, opencv-json, "
+                   "nerf (transforms.json) or colmap (needs --output FOLDER)")
+      ->group("Export");
+  command
+      ->add_option("--output", options->output,
+                   "Write the export to this file (colmap: this folder) instead of stdout")
+      ->group("Export");
   command->callback([options] { run_camera(*options); });
 }
 

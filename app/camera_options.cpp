@@ -1,9 +1,10 @@
 #include "camera_options.h"
 
 #include <cmath>
-#include <sstream>
 #include <vector>
 
+#include "calibrated_camera_options.h"
+#include "number_list_option.h"
 #include "obscura/camera/number_text.h"
 #include "obscura/camera/perspective.h"
 #include "obscura/math/error.h"
@@ -13,40 +14,6 @@
 namespace obscura::app {
 
 namespace {
-
-// A number, or a fraction "a/b" (shutter times are written 1/60).
-double parse_number(const std::string& text, const std::string& option) {
-  auto fail = [&] { throw UsageError(option + " expects a number; got '" + text + "'"); };
-  size_t slash = text.find('/');
-  try {
-    size_t used = 0;
-    if (slash == std::string::npos) {
-      double v = std::stod(text, &used);
-      if (used != text.size() || !std::isfinite(v)) fail();
-      return v;
-    }
-    std::string numerator = text.substr(0, slash), denominator = text.substr(slash + 1);
-    double a = std::stod(numerator, &used);
-    if (used != numerator.size()) fail();
-    double b = std::stod(denominator, &used);
-    if (used != denominator.size() || b == 0 || !std::isfinite(a / b)) fail();
-    return a / b;
-  } catch (const std::logic_error&) {  // std::invalid_argument, std::out_of_range
-    fail();
-  }
-  return 0;
-}
-
-std::vector<double> parse_list(const std::string& text, char separator, size_t count,
-                               const std::string& option, const std::string& form) {
-  std::vector<double> values;
-  std::stringstream stream(text);
-  std::string item;
-  while (std::getline(stream, item, separator)) values.push_back(parse_number(item, option));
-  if (values.size() != count || (!text.empty() && text.back() == separator))
-    throw UsageError(option + " expects " + form + "; got '" + text + "'");
-  return values;
-}
 
 Perspective& perspective_for(Camera& camera, const std::string& option) {
   auto* p = std::get_if<Perspective>(&camera.projection);
@@ -78,8 +45,9 @@ Projection projection_from_name(const std::string& name, const Camera& camera) {
     if (std::holds_alternative<Fisheye>(camera.projection)) return camera.projection;
     return Fisheye{};
   }
-  throw UsageError("--projection expects perspective, orthographic, spherical or fisheye; got '" +
-                   name + "'");
+  throw UsageError(
+      "--projection expects perspective, orthographic, spherical, fisheye or calibrated; got '" +
+      name + "'");
 }
 
 SensorFit sensor_fit_from_name(const std::string& name) {
@@ -103,7 +71,7 @@ const Camera& find_camera(const Scene& scene, const std::optional<std::string>& 
 }
 
 void apply_lens_overrides(Camera& camera, const CameraOverrides& o) {
-  if (o.projection) {
+  if (o.projection && *o.projection != "calibrated") {  // calibrated: calibrated_camera_options
     camera.projection = projection_from_name(*o.projection, camera);
     if (!std::holds_alternative<Perspective>(camera.projection)) camera.lens.depth_of_field = false;
   }
@@ -226,7 +194,8 @@ void add_camera_options(CLI::App& command, CameraOverrides& o) {
       ->group(group);
   command
       .add_option("--projection", o.projection,
-                  "perspective, orthographic, spherical (equirectangular 360°) or fisheye")
+                  "perspective, orthographic, spherical (equirectangular 360°), fisheye or "
+                  "calibrated (K and a lens model: --intrinsics, --distortion, --calibration)")
       ->group(group);
   command
       .add_option("--fov", o.fov_degrees,
@@ -293,16 +262,21 @@ void add_camera_options(CLI::App& command, CameraOverrides& o) {
   command.add_option("--far", o.far_m, "Far clipping plane in m")
       ->check(number_in(0, 1e15))
       ->group(group);
+  add_calibrated_camera_options(command, o);
 }
 
 Camera resolve_camera(const Scene& scene, const CameraOverrides& overrides,
                       std::optional<int> width_px, std::optional<int> height_px) {
   Camera camera = find_camera(scene, overrides.camera_name);
   camera.validate();  // the scene's own mistakes are failures (exit 1), not usage errors
+  // A calibration file's mistakes are failures too; its image size is the film's unless
+  // --width/--height say otherwise (K then scales).
+  apply_calibration_file(camera, overrides);
   if (width_px) camera.film.width_px = *width_px;
   if (height_px) camera.film.height_px = *height_px;
   try {
     apply_lens_overrides(camera, overrides);
+    apply_calibrated_overrides(camera, overrides);
     apply_film_overrides(camera, overrides);
     camera.validate();
   } catch (const Error& e) {  // a value given on the command line is out of range

@@ -16,7 +16,8 @@ namespace obscura::app {
 // degrees, as on the command line.
 struct CameraOverrides {
   std::optional<std::string> camera_name;
-  std::optional<std::string> projection;  // perspective | orthographic | spherical | fisheye
+  // perspective | orthographic | spherical | fisheye | calibrated
+  std::optional<std::string> projection;
   std::optional<double> fov_degrees, horizontal_fov_degrees, focal_length_mm;
   std::optional<std::string> sensor;  // "WxH" in mm
   std::optional<std::string> sensor_fit;
@@ -31,6 +32,13 @@ struct CameraOverrides {
   std::optional<std::string> filter;
   std::optional<double> filter_radius_px;
   std::optional<double> near_m, far_m;
+  // Calibrated cameras (calibrated_camera_options.h).
+  std::optional<std::string> intrinsics;        // "fx,fy,cx,cy[,skew]" in OpenCV pixels
+  std::optional<std::string> calibration_size;  // "WxH": the image K is given for
+  std::optional<std::string> distortion;        // "MODEL[:c1,c2,...]"
+  std::optional<double> max_field_angle_degrees;
+  std::optional<std::string> calibration;        // a calibration file
+  std::optional<std::string> calibration_image;  // which image of a COLMAP or NeRF file
 };
 
 void add_camera_options(CLI::App& command, CameraOverrides& overrides);

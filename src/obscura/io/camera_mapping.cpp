@@ -6,6 +6,7 @@
 #include <numbers>
 
 #include "obscura/camera/frames.h"
+#include "obscura/io/calibrated_camera_json.h"
 #include "obscura/math/error.h"
 
 namespace obscura {
@@ -111,9 +112,12 @@ Camera camera_from_json(JsonReader& json) {
     c.projection = Equirectangular{};
   } else if (type == "fisheye") {
     c.projection = Fisheye{.fov_degrees = json.number_in("fisheye_fov_degrees", 180, 1e-3, 360)};
+  } else if (type == "calibrated") {
+    c.projection = calibrated_projection_from_json(json);
   } else {
-    json.fail("type", "unknown camera type '" + type +
-                          "'; expected perspective, orthographic, spherical or fisheye");
+    json.fail("type",
+              "unknown camera type '" + type +
+                  "'; expected perspective, orthographic, spherical, fisheye or calibrated");
   }
   // Thin lens: an f-number or aperture diameter turns depth of field on.
   if (json.has("f_number") || json.has("aperture_diameter_mm")) c.lens.depth_of_field = true;
