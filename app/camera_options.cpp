@@ -155,7 +155,25 @@ void apply_film_overrides(Camera& camera, const CameraOverrides& o) {
   if (o.shutter) {
     std::vector<double> times =
         parse_list(*o.shutter, ':', 2, "--shutter", "OPEN:CLOSE in seconds (0:1/60)");
-    camera.shutter = {.open_s = times[0], .close_s = times[1]};
+    camera.shutter.open_s = times[0];
+    camera.shutter.close_s = times[1];
+  }
+  if (o.rolling_shutter) {
+    const std::string& text = *o.rolling_shutter;
+    size_t colon = text.find(':');
+    double line_time = parse_number(text.substr(0, colon), "--rolling-shutter");
+    if (!(line_time >= 0 && line_time <= 1))
+      throw UsageError("--rolling-shutter: the line time must be 0 (a global shutter) to 1 s; "
+                       "got '" + text + "'");
+    camera.shutter.line_time_s = line_time;
+    if (colon != std::string::npos) {
+      std::optional<Readout> r = readout_from_name(text.substr(colon + 1));
+      if (!r)
+        throw UsageError("--rolling-shutter expects LINE_TIME[:READOUT] with READOUT "
+                         "top-to-bottom, bottom-to-top, left-to-right or right-to-left; got '" +
+                         text + "'");
+      camera.shutter.readout = *r;
+    }
   }
   if (o.exposure_mode) {
     try {
@@ -238,6 +256,12 @@ void add_camera_options(CLI::App& command, CameraOverrides& o) {
       ->check(number_in(-360, 360))
       ->group(group);
   command.add_option("--shutter", o.shutter, "Shutter OPEN:CLOSE in seconds, e.g. 0:1/60")
+      ->group(group);
+  command
+      .add_option("--rolling-shutter", o.rolling_shutter,
+                  "Rolling shutter LINE_TIME[:READOUT]: seconds between sensor lines (fractions "
+                  "allowed, 1/30000) and top-to-bottom (default), bottom-to-top, left-to-right or "
+                  "right-to-left; 0: a global shutter")
       ->group(group);
   command.add_option("--iso", o.iso, "Film speed; selects the physical exposure")
       ->check(number_in(0, 1e7))

@@ -26,6 +26,8 @@ struct CameraOverrides {
   std::optional<int> aperture_blades;
   std::optional<std::string> focus_breathing;  // on | off
   std::optional<std::string> shutter;  // "OPEN:CLOSE" in seconds, fractions allowed (0:1/60)
+  // "LINE_TIME[:READOUT]": a rolling shutter's line time in seconds and its readout order.
+  std::optional<std::string> rolling_shutter;
   std::optional<double> iso, exposure_ev;
   std::optional<std::string> exposure_mode;
   std::optional<std::string> crop;  // "x0,y0,x1,y1"

@@ -42,9 +42,9 @@ void validate(const RasterEffectsOptions& o, const std::string& renderer) {
 }
 
 bool wants_raster_effects(const RasterEffectsOptions& o, const Scene& scene) {
-  // Cameras without a projection matrix are drawn through lens views, at mid-shutter
-  // (render_raster says so when something moves).
-  if (!scene.camera.has_projection_matrix()) return false;
+  // Cameras without a projection matrix (drawn through lens views) and rolling shutters (drawn
+  // band by band) are drawn sharp by render_raster, which says so when something moves.
+  if (!scene.camera.has_projection_matrix() || scene.camera.shutter.line_time_s > 0) return false;
   bool lens = scene.camera.lens.depth_of_field && o.dof != "off";
   return lens || raster::has_motion_blur(scene.camera, scene_moves(scene));
 }

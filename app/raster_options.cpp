@@ -1,9 +1,11 @@
 #include "raster_options.h"
 
+#include <algorithm>
 #include <chrono>
 
 #include "obscura/raster/accumulation.h"
 #include "obscura/raster/lens_warp.h"
+#include "obscura/raster/rolling_shutter.h"
 #include "option_ranges.h"
 #include "raster_effects_options.h"
 #include "usage_error.h"
@@ -65,27 +67,28 @@ raster::RasterSettings raster_settings(const RasterOptions& o, bool aovs) {
 
 namespace {
 
-// A camera without a projection matrix (calibrated lens, fisheye, panorama): pinhole views
-// resampled along its rays (raster/lens_warp.h), at mid-shutter.
-RasterRender render_through_lens(const Scene& scene, const raster::SceneRasterizer& rasterizer,
-                                 Film& film, const WorkShare& share,
-                                 std::chrono::steady_clock::time_point start) {
-  raster::LensWarpSettings settings{.part = share.part, .parts = share.parts};
-  raster::LensRender lens = raster::render_through_lens(rasterizer, scene.camera, settings, film);
-  RasterRender result;
-  result.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-  result.warnings = rasterizer.warnings();
-  result.warnings.insert(result.warnings.end(), lens.warnings.begin(), lens.warnings.end());
-  if (raster::has_motion_blur(scene.camera, scene_moves(scene)))
-    result.warnings.push_back("the rasterizer draws a " +
-                              std::string(projection_name(scene.camera.projection)) +
-                              " camera at mid-shutter, without motion blur (the tracer blurs it)");
-  result.progress = {.end = RenderEnd::kComplete, .done = 1, .requested = 1, .unit = "frames"};
-  if (lens.normal)
-    result.aovs = {{"normal", std::move(*lens.normal)},
-                   {"depth", std::move(*lens.distance)},
-                   {"id", std::move(*lens.id)}};
-  return result;
+// Draws one frame of `camera` (a global shutter) into `film` and returns its AOV images (normal,
+// depth, id) when asked: through the camera's matrices, or — for a camera without a projection
+// matrix (calibrated lens, fisheye, panorama) — through pinhole views resampled along its rays
+// (raster/lens_warp.h).
+std::vector<Image> draw_frame(const raster::SceneRasterizer& rasterizer, const Camera& camera,
+                              Film& film, const WorkShare& share,
+                              std::vector<std::string>& warnings) {
+  const bool aovs = rasterizer.settings().aovs;
+  if (!camera.has_projection_matrix()) {
+    raster::LensWarpSettings settings{.part = share.part, .parts = share.parts};
+    raster::LensRender lens = raster::render_through_lens(rasterizer, camera, settings, film);
+    for (const std::string& w : lens.warnings)
+      if (std::find(warnings.begin(), warnings.end(), w) == warnings.end()) warnings.push_back(w);
+    if (!lens.normal) return {};
+    return {std::move(*lens.normal), std::move(*lens.distance), std::move(*lens.id)};
+  }
+  raster::RenderTarget target = rasterizer.make_target(camera);
+  target.set_share(share.part, share.parts);
+  rasterizer.render(camera, film, &target);
+  if (!aovs) return {};
+  return {raster::normal_image(target), raster::distance_image(target, camera),
+          raster::id_image(target)};
 }
 
 }  // namespace
@@ -94,16 +97,35 @@ RasterRender render_raster(const Scene& scene, const RasterOptions& options, boo
                            const WorkShare& share) {
   auto start = std::chrono::steady_clock::now();
   raster::SceneRasterizer rasterizer(scene, raster_settings(options, aovs));
-  if (!scene.camera.has_projection_matrix())
-    return render_through_lens(scene, rasterizer, film, share, start);
-  raster::RenderTarget target = rasterizer.make_target(scene.camera);
-  target.set_share(share.part, share.parts);
-  rasterizer.render(scene.camera, film, &target);
+  const Camera& camera = scene.camera;
   RasterRender result;
-  result.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   result.warnings = rasterizer.warnings();
+  auto draw = [&](const Camera& c, Film& f) {
+    return draw_frame(rasterizer, c, f, share, result.warnings);
+  };
+  const bool rolling = camera.shutter.line_time_s > 0;
+  std::vector<Image> images =
+      rolling ? raster::draw_rolling_shutter(camera, raster::rolling_band_count(camera), draw, film)
+              : draw(camera, film);
+  if (rolling)
+    result.warnings.push_back(
+        "rolling shutter: the rasterizer draws " +
+        std::to_string(raster::rolling_band_count(camera)) +
+        " bands of lines, each at its middle line's time (the tracer times every line)");
+  // Effects (motion blur, depth of field by accumulation) come through render_raster_effects;
+  // a camera drawn through lens views or band by band is drawn here, sharp.
+  if ((rolling || !camera.has_projection_matrix()) &&
+      raster::has_motion_blur(camera, scene_moves(scene)))
+    result.warnings.push_back("the rasterizer draws this " +
+                              std::string(projection_name(camera.projection)) + " camera" +
+                              (rolling ? " with a rolling shutter" : "") +
+                              " without motion blur (the tracer blurs it)");
+  result.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   result.progress = {.end = RenderEnd::kComplete, .done = 1, .requested = 1, .unit = "frames"};
-  if (aovs) result.aovs = raster_aov_images(target, scene.camera);
+  if (aovs && images.size() == 3)
+    result.aovs = {{"normal", std::move(images[0])},
+                   {"depth", std::move(images[1])},
+                   {"id", std::move(images[2])}};
   return result;
 }
 

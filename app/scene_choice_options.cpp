@@ -28,7 +28,10 @@ void add_scene_choice_options(CLI::App& command, SceneChoiceOptions& options) {
 Shutter shutter_at_time(const SceneChoiceOptions& options, const Shutter& shutter) {
   if (!options.time_s) return shutter;
   const double half = shutter.duration_s() / 2;
-  return {.open_s = *options.time_s - half, .close_s = *options.time_s + half};
+  Shutter at = shutter;  // the rolling readout stays
+  at.open_s = *options.time_s - half;
+  at.close_s = *options.time_s + half;
+  return at;
 }
 
 GltfLoadOptions gltf_load_options(const SceneChoiceOptions& options, const Shutter& shutter) {

@@ -207,6 +207,24 @@ double Camera::exposure_scale() const {
   return obscura::exposure_scale(exposure, f_number(), shutter.duration_s());
 }
 
+double Camera::readout_delay_s(Point2d film_point) const {
+  if (shutter.line_time_s == 0) return 0;
+  bool rows = shutter.readout == Readout::top_to_bottom || shutter.readout == Readout::bottom_to_top;
+  double lines = rows ? film.height_px : film.width_px;
+  double line = std::clamp((rows ? film_point.y : film_point.x) - 0.5, 0.0, lines - 1);
+  if (shutter.readout == Readout::bottom_to_top || shutter.readout == Readout::right_to_left)
+    line = lines - 1 - line;
+  return line * shutter.line_time_s;
+}
+
+Shutter Camera::exposure_interval() const {
+  Shutter s = shutter;
+  bool rows = shutter.readout == Readout::top_to_bottom || shutter.readout == Readout::bottom_to_top;
+  s.close_s += (rows ? film.height_px - 1 : film.width_px - 1) * shutter.line_time_s;
+  s.line_time_s = 0;
+  return s;
+}
+
 double Camera::circle_of_confusion_px(double depth_m) const {
   if (!lens.depth_of_field) return 0;
   double c_mm = circle_of_confusion_mm(lens, focal_length_mm(), depth_m);

@@ -111,6 +111,15 @@ struct Camera {
   double f_number() const;
   double exposure_scale() const;  // see exposure.h
 
+  // --- rolling shutter (shutter.h) ---
+  // How long after the shutter opens the sensor line through raster point `film_point` starts
+  // exposing: line_time × the line's position in readout order, measured from the first line's
+  // centre and continuous between lines (so a pixel centre gets its line's exact delay), clamped
+  // to the image. 0 for a global shutter.
+  double readout_delay_s(Point2d film_point) const;
+  // The interval in which some line is exposing: [open, close + (lines − 1) · line_time].
+  Shutter exposure_interval() const;
+
   Point2d window_from_raster(Point2d raster) const;
   Point2d raster_from_window(Point2d window) const;
 };

@@ -130,6 +130,16 @@ Camera camera_from_json(JsonReader& json) {
   c.lens.aperture.rotation_degrees = json.number("aperture_rotation_degrees", 0);
   c.shutter.open_s = json.number("shutter_open", c.shutter.open_s);
   c.shutter.close_s = json.number("shutter_close", c.shutter.close_s);
+  c.shutter.line_time_s = json.number_in("rolling_shutter_line_time", 0, 0, 1);
+  if (json.has("rolling_shutter_readout")) {
+    std::string readout = json.string("rolling_shutter_readout");
+    std::optional<Readout> r = readout_from_name(readout);
+    if (!r)
+      json.fail("rolling_shutter_readout",
+                "expected top-to-bottom, bottom-to-top, left-to-right or right-to-left; got '" +
+                    readout + "'");
+    c.shutter.readout = *r;
+  }
   if (json.has("exposure_mode")) {
     std::string mode = json.string("exposure_mode");
     try {

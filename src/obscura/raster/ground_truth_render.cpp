@@ -81,6 +81,15 @@ GroundTruthBuffer render_ground_truth(const SceneRasterizer& rasterizer,
   if (!rasterizer.settings().aovs || rasterizer.settings().msaa_samples != 1)
     throw Error("raster ground truth",
                 "needs a rasterizer with aovs on and one sample per pixel (no MSAA)");
+  // Exact per-pixel values need the pixel's own time and a matrix: the tracer has both for every
+  // camera.
+  if (!camera.has_projection_matrix() || camera.shutter.line_time_s > 0)
+    throw Error("raster ground truth",
+                std::string("the rasterizer's ground truth is exact for perspective and "
+                            "orthographic cameras with a global shutter; this camera is ") +
+                    std::string(projection_name(camera.projection)) +
+                    (camera.shutter.line_time_s > 0 ? " with a rolling shutter" : "") +
+                    ": use the tracer (--renderer path)");
   const Bounds2i crop = camera.film.crop_pixels();
   const double t0 = times.first_s, t1 = times.second_s;
   const RenderTarget first = draw_at(rasterizer, camera, t0);
@@ -100,12 +109,16 @@ GroundTruthBuffer render_ground_truth(const SceneRasterizer& rasterizer,
                             .geometric_normal = s->geometric_normal,
                             .instance = int(s->instance),
                             .material = int(scene.material_of(scene.instances[s->instance]))});
-        const Point3d later = motion.follow(s->instance, s->triangle, s->position, t0, t1);
-        buffer.set_forward_flow(x, y, optical_flow(camera, film_point, later, t1));
+        auto at = [&](double t) {
+          return motion.follow(s->instance, s->triangle, s->position, t0, t);
+        };
+        buffer.set_forward_flow(x, y, optical_flow(camera, film_point, at, t1));
       }
       if (std::optional<Seen> s = seen_at(second, motion, camera, x, y, film_point, t1)) {
-        const Point3d earlier = motion.follow(s->instance, s->triangle, s->position, t1, t0);
-        buffer.set_backward_flow(x, y, optical_flow(camera, film_point, earlier, t0));
+        auto at = [&](double t) {
+          return motion.follow(s->instance, s->triangle, s->position, t1, t);
+        };
+        buffer.set_backward_flow(x, y, optical_flow(camera, film_point, at, t0));
       }
     }
   return buffer;

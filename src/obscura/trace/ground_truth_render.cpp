@@ -45,17 +45,23 @@ void check_time(const Shutter& compiled, double time_s, const char* which) {
 GroundTruthBuffer render_ground_truth(const TraceScene& scene, const SurfaceMotion& motion,
                                       const Camera& camera, const GroundTruthTimes& times) {
   if (scene.has_motion()) {
+    // The last line exposes a readout later.
+    const double readout = camera.exposure_interval().close_s - camera.shutter.close_s;
     check_time(scene.shutter(), times.first_s, "first");
     check_time(scene.shutter(), times.second_s, "second");
+    check_time(scene.shutter(), times.first_s + readout, "first (last line)");
+    check_time(scene.shutter(), times.second_s + readout, "second (last line)");
   }
   const Bounds2i crop = camera.film.crop_pixels();
   GroundTruthBuffer buffer(crop.width(), crop.height());
-  const double t0 = times.first_s, t1 = times.second_s;
   for_each_tile_parallel(
       Bounds2i{{0, 0}, {crop.width(), crop.height()}}, kTileSize, [&](const Bounds2i& tile) {
         for (int y = tile.min.y; y < tile.max.y; ++y)
           for (int x = tile.min.x; x < tile.max.x; ++x) {
             const Point2d film_point(crop.min.x + x + 0.5, crop.min.y + y + 0.5);
+            // A rolling shutter sees this pixel's line later in both exposures.
+            const double delay = camera.readout_delay_s(film_point);
+            const double t0 = times.first_s + delay, t1 = times.second_s + delay;
             buffer.set_time(x, y, t0);
             if (std::optional<CentreHit> c = centre_hit(scene, camera, film_point, t0)) {
               const SurfaceHit& h = c->hit;
@@ -67,13 +73,14 @@ GroundTruthBuffer render_ground_truth(const TraceScene& scene, const SurfaceMoti
                                   .geometric_normal = normalize(to_double(h.geometric_normal)),
                                   .instance = int(h.mesh),
                                   .material = int(h.material)});
-              const Point3d later = motion.follow(h.mesh, h.primitive, c->position, t0, t1);
-              buffer.set_forward_flow(x, y, optical_flow(camera, film_point, later, t1));
+              auto at = [&](double t) { return motion.follow(h.mesh, h.primitive, c->position, t0, t); };
+              buffer.set_forward_flow(x, y, optical_flow(camera, film_point, at, times.second_s));
             }
             if (std::optional<CentreHit> c = centre_hit(scene, camera, film_point, t1)) {
-              const Point3d earlier =
-                  motion.follow(c->hit.mesh, c->hit.primitive, c->position, t1, t0);
-              buffer.set_backward_flow(x, y, optical_flow(camera, film_point, earlier, t0));
+              auto at = [&](double t) {
+                return motion.follow(c->hit.mesh, c->hit.primitive, c->position, t1, t);
+              };
+              buffer.set_backward_flow(x, y, optical_flow(camera, film_point, at, times.first_s));
             }
           }
       });

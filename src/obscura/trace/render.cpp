@@ -42,14 +42,15 @@ RenderStats render(const TraceScene& scene, const Camera& camera, const Integrat
                               std::to_string(film.height()) + ") must match the camera's crop (" +
                               std::to_string(crop.width()) + "x" + std::to_string(crop.height()) +
                               ")");
-  if (scene.has_motion() && (camera.shutter.open_s != scene.shutter().open_s ||
-                             camera.shutter.close_s != scene.shutter().close_s))
+  const Shutter exposed = camera.exposure_interval();
+  if (scene.has_motion() &&
+      (exposed.open_s != scene.shutter().open_s || exposed.close_s != scene.shutter().close_s))
     throw Error("render", "the scene's object motion was compiled for the shutter [" +
                               std::to_string(scene.shutter().open_s) + ", " +
                               std::to_string(scene.shutter().close_s) +
-                              "] s but the camera's is [" + std::to_string(camera.shutter.open_s) +
-                              ", " + std::to_string(camera.shutter.close_s) +
-                              "] s; build the TraceScene with this camera's shutter");
+                              "] s but the camera exposes over [" + std::to_string(exposed.open_s) +
+                              ", " + std::to_string(exposed.close_s) +
+                              "] s; build the TraceScene with this camera's exposure interval");
   const PreparedCamera prepared_camera = camera.prepare();
   const FilterSampler filter(camera.film.filter);
   const auto exposure = float(camera.exposure_scale());
@@ -76,6 +77,9 @@ RenderStats render(const TraceScene& scene, const Camera& camera, const Integrat
         // Random numbers are keyed on the full image's pixel, so a crop renders exactly the
         // pixels the full render would.
         Point2i pixel{x + crop.min.x, y + crop.min.y};
+        // A rolling shutter exposes the pixel's sensor line later: every sample of the pixel
+        // takes its line's delay.
+        const double delay = camera.readout_delay_s({pixel.x + 0.5, pixel.y + 0.5});
         for (int s = first_sample; s < end_sample; ++s) {
           Sampler sampler(settings.sampler, settings.seed, pixel, uint32_t(s));
           // 1. A film point around the pixel centre, distributed as the reconstruction filter.
@@ -84,7 +88,7 @@ RenderStats render(const TraceScene& scene, const Camera& camera, const Integrat
           Point2d film_point(pixel.x + 0.5 + fs.offset_px.x, pixel.y + 0.5 + fs.offset_px.y);
           // 2. A point on the lens and a time in the shutter interval.
           Point2f u_lens = sampler.next_2d();
-          double time = camera.shutter.time_at(sampler.next_1d());
+          double time = camera.shutter.time_at(sampler.next_1d()) + delay;
           // 3. The radiance along the ray, exposed, into this pixel with the filter's weight.
           std::optional<CameraRay> ray =
               prepared_camera.generate_ray(film_point, {u_lens.x, u_lens.y}, time);

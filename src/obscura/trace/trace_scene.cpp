@@ -175,7 +175,7 @@ TraceScene::TraceScene(const Scene& scene, std::shared_ptr<const EmbreeDevice> d
                        const TraceSceneOptions& options)
     : embree_(std::move(device)), textures_(scene.textures) {
   scene.validate();
-  shutter_ = options.shutter.value_or(scene.camera.shutter);
+  shutter_ = options.shutter.value_or(scene.camera.exposure_interval());
   validate(shutter_);
   embree_.set_motion_interval(shutter_.open_s, shutter_.close_s);
   // The UV set of the normal map each mesh is drawn with, if any (the first one found, should

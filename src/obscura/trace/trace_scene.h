@@ -29,8 +29,9 @@ enum class Instancing {
 struct TraceSceneOptions {
   Instancing instancing = Instancing::kAuto;
   AreaLightSampling area_light_sampling = AreaLightSampling::kSolidAngle;
-  // The interval object motion is compiled for; the camera's shutter must match it at render
-  // time. Default: the scene camera's shutter.
+  // The interval object motion is compiled for; the camera's exposure interval (its shutter,
+  // lengthened by a rolling shutter's readout) must match it at render time. Default: the scene
+  // camera's.
   std::optional<Shutter> shutter = std::nullopt;
 };
 
