@@ -10,11 +10,15 @@
 //     (one call per pixel, lens centre, time 0): a perspective camera and calibrated cameras with
 //     the same K and no distortion, the 5-coefficient OpenCV lens, and a 200° Kannala–Brandt
 //     fisheye.
+//   sketch/<model>: a cheaper inverse for the pinhole model written here (not the library's), on
+//     the same points as inverse/…, with its largest distance from LensMap::inverse's rays.
 // items_per_second is rays per second on one thread.
 // Run: build/bench/calibrated_camera_bench --benchmark_counters_tabular=true
 #include <benchmark/benchmark.h>
 
+#include <algorithm>
 #include <cmath>
+#include <optional>
 #include <random>
 #include <vector>
 
@@ -85,6 +89,65 @@ void inverse(benchmark::State& state, LensModel model, double max_field_deg, dou
   state.SetItemsProcessed(static_cast<int64_t>(state.iterations() * points.size()));
   state.counters["misses"] = static_cast<double>(misses);
 }
+
+// A sketch of a cheaper inverse for OpenCV's pinhole model without tilt, to size what the
+// library's could gain (see BENCHMARKS.md, "Calibrated cameras"): the radial start solved in r
+// (not in θ through tan) with the analytic derivative, then Newton's method on the full map with
+// its analytic Jacobian, norms compared squared (no hypot), and the ideal pinhole in closed form.
+// Not a replacement: it has no validity-region checks.
+std::optional<Vector3d> sketch_inverse(const PinholeDistortion& d, Point2d target) {
+  if (d == PinholeDistortion{}) return normalize(Vector3d(target.x, target.y, 1));
+  auto radial = [&](double r2, double* derivative) {
+    double a = 1 + r2 * (d.k1 + r2 * (d.k2 + r2 * d.k3));
+    double b = 1 + r2 * (d.k4 + r2 * (d.k5 + r2 * d.k6));
+    double da = d.k1 + r2 * (2 * d.k2 + 3 * r2 * d.k3), db = d.k4 + r2 * (2 * d.k5 + 3 * r2 * d.k6);
+    *derivative = (da * b - a * db) / (b * b);
+    return a / b;
+  };
+  double rho2 = target.x * target.x + target.y * target.y, rho = std::sqrt(rho2);
+  double r = rho;
+  for (int i = 0; i < 20 && rho > 0; ++i) {  // r·R(r²) = ρ
+    double dR, R = radial(r * r, &dR);
+    double step = (r * R - rho) / (R + 2 * r * r * dR);
+    r -= step;
+    if (std::abs(step) <= 1e-15 * r) break;
+  }
+  Point2d u = rho > 0 ? Point2d(target.x * r / rho, target.y * r / rho) : target;
+  for (int i = 0; i < 20; ++i) {
+    double x = u.x, y = u.y, r2 = x * x + y * y, dR, R = radial(r2, &dR);
+    double ex =
+        x * R + 2 * d.p1 * x * y + d.p2 * (r2 + 2 * x * x) + r2 * (d.s1 + d.s2 * r2) - target.x;
+    double ey =
+        y * R + d.p1 * (r2 + 2 * y * y) + 2 * d.p2 * x * y + r2 * (d.s3 + d.s4 * r2) - target.y;
+    if (ex * ex + ey * ey <= 1e-30 * std::max(1.0, rho2)) break;
+    double a = R + 2 * x * x * dR + 2 * d.p1 * y + 6 * d.p2 * x + 2 * x * (d.s1 + 2 * d.s2 * r2);
+    double b = 2 * x * y * dR + 2 * d.p1 * x + 2 * d.p2 * y + 2 * y * (d.s1 + 2 * d.s2 * r2);
+    double c = 2 * x * y * dR + 2 * d.p1 * x + 2 * d.p2 * y + 2 * x * (d.s3 + 2 * d.s4 * r2);
+    double e = R + 2 * y * y * dR + 6 * d.p1 * y + 2 * d.p2 * x + 2 * y * (d.s3 + 2 * d.s4 * r2);
+    double det = a * e - b * c;
+    Point2d step((e * ex - b * ey) / det, (a * ey - c * ex) / det);
+    u = {u.x - step.x, u.y - step.y};
+    if (step.x * step.x + step.y * step.y <= 1e-32 * std::max(1.0, r2)) break;
+  }
+  return normalize(Vector3d(u.x, u.y, 1));
+}
+
+// The sketch on the same points as inverse/…; max_error is its largest distance from
+// LensMap::inverse's ray.
+void sketch(benchmark::State& state, PinholeDistortion model) {
+  LensMap map(model);
+  std::vector<Point2d> points = image_points(map, 40 * kPi / 180);
+  double max_error = 0;
+  for (Point2d p : points)
+    max_error = std::max(max_error, length(*sketch_inverse(model, p) - *map.inverse(p)));
+  for (auto _ : state)
+    for (Point2d p : points) benchmark::DoNotOptimize(sketch_inverse(model, p));
+  state.SetItemsProcessed(static_cast<int64_t>(state.iterations() * points.size()));
+  state.counters["max_error"] = max_error;
+}
+
+BENCHMARK_CAPTURE(sketch, pinhole_ideal, PinholeDistortion{});
+BENCHMARK_CAPTURE(sketch, opencv_5, opencv5());
 
 BENCHMARK_CAPTURE(inverse, pinhole_ideal, LensModel(PinholeDistortion{}), 0, 40);
 BENCHMARK_CAPTURE(inverse, opencv_5, LensModel(opencv5()), 0, 40);
