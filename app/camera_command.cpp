@@ -111,6 +111,10 @@ void print_lens_and_exposure(const Camera& c) {
   }
   row("shutter", num(c.shutter.open_s) + " s to " + short_num(c.shutter.close_s) + " s (" +
                      short_num(c.shutter.duration_s()) + " s)");
+  if (c.shutter.line_time_s > 0)
+    row("rolling", "line time " + short_num(c.shutter.line_time_s) + " s, " +
+                       readout_name(c.shutter.readout) + "; the last line closes at " +
+                       short_num(c.exposure_interval().close_s) + " s");
   if (c.exposure.mode == ExposureMode::physical)
     row("exposure",
         "physical: ISO " + short_num(c.exposure.iso) + ", EV100 " +

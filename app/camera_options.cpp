@@ -163,15 +163,18 @@ void apply_film_overrides(Camera& camera, const CameraOverrides& o) {
     size_t colon = text.find(':');
     double line_time = parse_number(text.substr(0, colon), "--rolling-shutter");
     if (!(line_time >= 0 && line_time <= 1))
-      throw UsageError("--rolling-shutter: the line time must be 0 (a global shutter) to 1 s; "
-                       "got '" + text + "'");
+      throw UsageError(
+          "--rolling-shutter: the line time must be 0 (a global shutter) to 1 s; "
+          "got '" +
+          text + "'");
     camera.shutter.line_time_s = line_time;
     if (colon != std::string::npos) {
       std::optional<Readout> r = readout_from_name(text.substr(colon + 1));
       if (!r)
-        throw UsageError("--rolling-shutter expects LINE_TIME[:READOUT] with READOUT "
-                         "top-to-bottom, bottom-to-top, left-to-right or right-to-left; got '" +
-                         text + "'");
+        throw UsageError(
+            "--rolling-shutter expects LINE_TIME[:READOUT] with READOUT "
+            "top-to-bottom, bottom-to-top, left-to-right or right-to-left; got '" +
+            text + "'");
       camera.shutter.readout = *r;
     }
   }

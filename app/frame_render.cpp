@@ -10,6 +10,7 @@
 #include "obscura/io/image_io.h"
 #include "obscura/io/scene_loader.h"
 #include "obscura/raster/binner.h"
+#include "obscura/raster/ground_truth_render.h"
 #include "obscura/scene/material_variants.h"
 #include "obscura/trace/render.h"
 #include "option_ranges.h"
@@ -132,6 +133,8 @@ Scene prepare_scene(RenderOptions& options, bool writes_output) {
   if (!options.ground_truth.path.empty() || options.ground_truth.flow_times) {
     ground_truth_times(options.ground_truth, scene.camera);  // a bad value fails here, early
     if (writes_output) check_ground_truth_output(options.ground_truth, options.output, scene);
+    if (!options.ground_truth.path.empty() && options.tracer.renderer == "raster")
+      raster::check_ground_truth_camera(scene.camera);  // before rendering, not after
   }
   return scene;
 }

@@ -116,10 +116,9 @@ RasterRender render_raster(const Scene& scene, const RasterOptions& options, boo
   // a camera drawn through lens views or band by band is drawn here, sharp.
   if ((rolling || !camera.has_projection_matrix()) &&
       raster::has_motion_blur(camera, scene_moves(scene)))
-    result.warnings.push_back("the rasterizer draws this " +
-                              std::string(projection_name(camera.projection)) + " camera" +
-                              (rolling ? " with a rolling shutter" : "") +
-                              " without motion blur (the tracer blurs it)");
+    result.warnings.push_back(
+        "the rasterizer draws this " + std::string(projection_name(camera.projection)) + " camera" +
+        (rolling ? " with a rolling shutter" : "") + " without motion blur (the tracer blurs it)");
   result.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   result.progress = {.end = RenderEnd::kComplete, .done = 1, .requested = 1, .unit = "frames"};
   if (aovs && images.size() == 3)

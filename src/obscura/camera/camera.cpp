@@ -209,7 +209,8 @@ double Camera::exposure_scale() const {
 
 double Camera::readout_delay_s(Point2d film_point) const {
   if (shutter.line_time_s == 0) return 0;
-  bool rows = shutter.readout == Readout::top_to_bottom || shutter.readout == Readout::bottom_to_top;
+  bool rows =
+      shutter.readout == Readout::top_to_bottom || shutter.readout == Readout::bottom_to_top;
   double lines = rows ? film.height_px : film.width_px;
   double line = std::clamp((rows ? film_point.y : film_point.x) - 0.5, 0.0, lines - 1);
   if (shutter.readout == Readout::bottom_to_top || shutter.readout == Readout::right_to_left)
@@ -219,7 +220,8 @@ double Camera::readout_delay_s(Point2d film_point) const {
 
 Shutter Camera::exposure_interval() const {
   Shutter s = shutter;
-  bool rows = shutter.readout == Readout::top_to_bottom || shutter.readout == Readout::bottom_to_top;
+  bool rows =
+      shutter.readout == Readout::top_to_bottom || shutter.readout == Readout::bottom_to_top;
   s.close_s += (rows ? film.height_px - 1 : film.width_px - 1) * shutter.line_time_s;
   s.line_time_s = 0;
   return s;
@@ -236,11 +238,11 @@ std::optional<CameraRay> Camera::generate_ray(Point2d film_point, Point2d lens_s
   return prepare().generate_ray(film_point, lens_sample, time_s);
 }
 
-PreparedCamera Camera::prepare() const {
-  return PreparedCamera(*this);
+PreparedCamera Camera::prepare(bool for_many_rays) const {
+  return PreparedCamera(*this, for_many_rays);
 }
 
-PreparedCamera::PreparedCamera(const Camera& camera) : camera_(&camera) {
+PreparedCamera::PreparedCamera(const Camera& camera, bool for_many_rays) : camera_(&camera) {
   if (camera.has_projection_matrix()) {
     window_ = camera.screen_window();
     window_width_ = window_.x_max - window_.x_min;
@@ -249,10 +251,39 @@ PreparedCamera::PreparedCamera(const Camera& camera) : camera_(&camera) {
   width_px_ = camera.film.width_px;
   height_px_ = camera.film.height_px;
   lens_radius_m_ = camera.lens_radius_m();
-  if (auto* c = std::get_if<CalibratedProjection>(&camera.projection))
+  if (auto* c = std::get_if<CalibratedProjection>(&camera.projection)) {
     lens_map_.emplace(c->lens, max_field_angle_rad(*c));
+    auto* pinhole = std::get_if<PinholeDistortion>(&c->lens);
+    if (for_many_rays && pinhole && !(*pinhole == PinholeDistortion{})) {
+      start_columns_ = int(std::ceil(width_px_ / kStartSpacing)) + 1;
+      start_rows_ = int(std::ceil(height_px_ / kStartSpacing)) + 1;
+      const double nan = std::numeric_limits<double>::quiet_NaN();
+      starts_.reserve(size_t(start_columns_) * start_rows_);
+      for (int j = 0; j < start_rows_; ++j)
+        for (int i = 0; i < start_columns_; ++i) {
+          Point2d raster(i * kStartSpacing, j * kStartSpacing);
+          auto d = lens_map_->inverse(lens_image_from_raster(*c, camera.film, raster));
+          starts_.push_back(d ? Point2d(d->x / d->z, d->y / d->z) : Point2d(nan, nan));
+        }
+    }
+  }
   if (!camera.world_from_camera.is_animated())
     fixed_world_from_camera_ = &camera.world_from_camera.keys().front().transform;
+}
+
+std::optional<Point2d> PreparedCamera::start_at(Point2d film_point) const {
+  if (starts_.empty()) return std::nullopt;
+  double gx = film_point.x / kStartSpacing, gy = film_point.y / kStartSpacing;
+  int i = std::clamp(int(std::floor(gx)), 0, start_columns_ - 2);
+  int j = std::clamp(int(std::floor(gy)), 0, start_rows_ - 2);
+  double fx = gx - i, fy = gy - j;
+  const Point2d* row0 = &starts_[size_t(j) * start_columns_ + i];
+  const Point2d* row1 = row0 + start_columns_;
+  Point2d a = row0[0], b = row0[1], c = row1[0], d = row1[1];
+  Point2d p((a.x * (1 - fx) + b.x * fx) * (1 - fy) + (c.x * (1 - fx) + d.x * fx) * fy,
+            (a.y * (1 - fx) + b.y * fx) * (1 - fy) + (c.y * (1 - fx) + d.y * fx) * fy);
+  if (std::isnan(p.x) || std::isnan(p.y)) return std::nullopt;
+  return p;
 }
 
 std::optional<CameraRay> PreparedCamera::generate_ray(Point2d film_point, Point2d lens_sample,
@@ -302,7 +333,9 @@ std::optional<CameraRay> PreparedCamera::generate_ray(Point2d film_point, Point2
             return LocalRay{{0, 0, 0}, *d, 1};
           },
           [&](const CalibratedProjection& c) -> std::optional<LocalRay> {
-            auto d = lens_map_->inverse(lens_image_from_raster(c, camera.film, film_point));
+            Point2d image = lens_image_from_raster(c, camera.film, film_point);
+            std::optional<Point2d> start = start_at(film_point);
+            auto d = start ? lens_map_->inverse(image, *start) : lens_map_->inverse(image);
             if (!d) return std::nullopt;
             Vector3d direction = flip_yz(*d);
             return LocalRay{{0, 0, 0}, direction, is_planar(c.lens) ? -direction.z : 1};

@@ -12,6 +12,7 @@
 
 #include <optional>
 #include <string>
+#include <vector>
 
 #include "obscura/camera/animated_transform.h"
 #include "obscura/camera/exposure.h"
@@ -75,7 +76,10 @@ struct Camera {
                                         double time_s = 0) const;
   // The same rays with the per-render constants computed once: for renderers, which ask for
   // many rays from an unchanging camera.
-  PreparedCamera prepare() const;
+  // `for_many_rays` also tabulates a calibrated camera's exact inverse lens map every few pixels
+  // as each ray's starting point (render loops: a few thousand solves once, then a Newton step or
+  // two per ray instead of a full solve; the rays are the same to the solver's tolerance).
+  PreparedCamera prepare(bool for_many_rays = false) const;
   // The inverse of generate_ray through the lens centre, for every projection: where `world`
   // lands on the film at time `time_s`; nothing when it is not visible (behind the camera,
   // outside the near/far range, off the film or outside a fisheye's circle).
@@ -131,7 +135,7 @@ struct Camera {
 // Refers to the camera, which must outlive it and not change while it is in use.
 class PreparedCamera {
  public:
-  explicit PreparedCamera(const Camera& camera);
+  explicit PreparedCamera(const Camera& camera, bool for_many_rays = false);
   std::optional<CameraRay> generate_ray(Point2d film_point, Point2d lens_sample = {0.5, 0.5},
                                         double time_s = 0) const;
 
@@ -143,6 +147,12 @@ class PreparedCamera {
   double lens_radius_m_ = 0;
   const Transform* fixed_world_from_camera_ = nullptr;  // a camera that does not move
   std::optional<LensMap> lens_map_;                     // a calibrated camera's
+  // Its undistorted points (X/Z, Y/Z) at raster points every kStartSpacing pixels (NaN where
+  // none): the inverse's starting guesses, bilinearly interpolated.
+  static constexpr double kStartSpacing = 8;
+  int start_columns_ = 0, start_rows_ = 0;
+  std::vector<Point2d> starts_;
+  std::optional<Point2d> start_at(Point2d film_point) const;
 };
 
 }  // namespace obscura

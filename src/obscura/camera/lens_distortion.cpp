@@ -48,10 +48,10 @@ Tilt tilt_matrix(double tau_x, double tau_y) {
       for (int k = 0; k < 3; ++k) t.m[i][j] += p[i][k] * r[k][j];
   return t;
 }
-Point2d apply(const Tilt& t, Point2d p) {
-  double x = t.m[0][0] * p.x + t.m[0][1] * p.y + t.m[0][2];
-  double y = t.m[1][0] * p.x + t.m[1][1] * p.y + t.m[1][2];
-  double w = t.m[2][0] * p.x + t.m[2][1] * p.y + t.m[2][2];
+Point2d apply(const std::array<double, 9>& m, Point2d p) {
+  double x = m[0] * p.x + m[1] * p.y + m[2];
+  double y = m[3] * p.x + m[4] * p.y + m[5];
+  double w = m[6] * p.x + m[7] * p.y + m[8];
   return {x / w, y / w};
 }
 Tilt inverted(const Tilt& t) {
@@ -244,6 +244,16 @@ LensMap::LensMap(const LensModel& model, double max_field_angle_rad) : model_(mo
   image_radius_max_ = image_radius(model, theta_max_);
   for (size_t i = 0; i < radius_table_.size(); ++i)
     radius_table_[i] = image_radius(model, theta_max_ * double(i) / (radius_table_.size() - 1));
+  if (auto* d = std::get_if<PinholeDistortion>(&model)) {
+    slope_max_ = std::tan(theta_max_);
+    ideal_pinhole_ = *d == PinholeDistortion{};
+    if (has_tilt(*d)) {
+      Tilt t = tilt_matrix(d->tau_x, d->tau_y), inv = inverted(t);
+      for (int i = 0; i < 3; ++i)
+        for (int j = 0; j < 3; ++j)
+          tilt_[i * 3 + j] = t.m[i][j], inverse_tilt_[i * 3 + j] = inv.m[i][j];
+    }
+  }
 }
 
 std::optional<Point2d> LensMap::forward(Vector3d ray) const {
@@ -252,12 +262,78 @@ std::optional<Point2d> LensMap::forward(Vector3d ray) const {
   if (!(theta <= theta_max_)) return std::nullopt;
   if (auto* d = std::get_if<PinholeDistortion>(&model_)) {
     if (!(ray.z > 0)) return std::nullopt;
-    Point2d p = distort(*d, {ray.x / ray.z, ray.y / ray.z}).p;
-    return has_tilt(*d) ? apply(tilt_matrix(d->tau_x, d->tau_y), p) : p;
+    Point2d slope(ray.x / ray.z, ray.y / ray.z);
+    if (ideal_pinhole_) return slope;
+    Point2d p = distort(*d, slope).p;
+    return has_tilt(*d) ? apply(tilt_, p) : p;
   }
   if (side == 0) return Point2d(0, 0);
   double r = image_radius(model_, theta);
   return Point2d(ray.x / side * r, ray.y / side * r);
+}
+
+std::optional<Vector3d> LensMap::pinhole_inverse(const PinholeDistortion& d, Point2d image,
+                                                 const Point2d* start) const {
+  const double r_max = slope_max_;
+  Point2d target = has_tilt(d) ? apply(inverse_tilt_, image) : image;
+
+  // 2. The undistorted radius whose radial image is the target's, by Newton's method on
+  //    ρ(r) = r·R(r²) with its analytic slope R + 2r²R', kept inside [0, r_max] where ρ grows
+  //    (one root); then Newton's method on the full map (tangential, prism terms) from there,
+  //    halving a step whenever the residual does not shrink.
+  const double target2 = target.x * target.x + target.y * target.y;
+  const double target_radius = std::sqrt(target2);
+  Point2d u = target;
+  if (start) {
+    u = *start;
+  } else if (target_radius > 0) {
+    double lo = 0, hi = std::min(r_max, 1e6), r = std::min(target_radius, hi);
+    for (int i = 0; i < 60; ++i) {
+      const double r2 = r * r;
+      const Radial rad = radial(d, r2);
+      const double f = r * rad.factor - target_radius;
+      if (std::abs(f) <= 1e-15 * std::max(1.0, target_radius)) break;
+      (f > 0 ? hi : lo) = r;
+      double next = r - f / (rad.factor + 2 * r2 * rad.derivative);
+      if (!(next > lo && next < hi)) next = 0.5 * (lo + hi);
+      if (hi - lo <= 1e-16 * std::max(1.0, r)) break;
+      r = next;
+    }
+    u = {target.x * (r / target_radius), target.y * (r / target_radius)};
+  }
+  auto residual2 = [&](Point2d q, Point2d& e) {
+    Point2d f = distort(d, q).p;
+    e = {f.x - target.x, f.y - target.y};
+    return e.x * e.x + e.y * e.y;
+  };
+  Point2d e;
+  double norm2 = residual2(u, e);
+  const double scale2 = std::max(1.0, target2);
+  for (int i = 0; i < 60 && norm2 > 1e-30 * scale2; ++i) {
+    Distorted j = distort(d, u);
+    double det = j.dxdx * j.dydy - j.dxdy * j.dydx;
+    if (!(std::abs(det) > 0)) break;
+    Point2d step((j.dydy * e.x - j.dxdy * e.y) / det, (j.dxdx * e.y - j.dydx * e.x) / det);
+    double scale = 1, next_norm2 = norm2;
+    Point2d next, next_e;
+    for (int k = 0; k < 30; ++k, scale *= 0.5) {
+      next = {u.x - scale * step.x, u.y - scale * step.y};
+      next_norm2 = residual2(next, next_e);
+      if (next_norm2 < norm2) break;
+    }
+    if (!(next_norm2 < norm2)) break;
+    u = next;
+    e = next_e;
+    norm2 = next_norm2;
+  }
+  if (!(norm2 <= 1e-24 * scale2) || !(u.x * u.x + u.y * u.y <= r_max * r_max)) return std::nullopt;
+  return normalize(Vector3d(u.x, u.y, 1));
+}
+
+std::optional<Vector3d> LensMap::inverse(Point2d image, Point2d start) const {
+  if (auto* d = std::get_if<PinholeDistortion>(&model_); d && !ideal_pinhole_)
+    if (auto ray = pinhole_inverse(*d, image, &start)) return ray;
+  return inverse(image);  // no start, or one that did not lead to an accepted root
 }
 
 std::optional<Vector3d> LensMap::inverse(Point2d image) const {
@@ -288,44 +364,13 @@ std::optional<Vector3d> LensMap::inverse(Point2d image) const {
   };
 
   if (auto* d = std::get_if<PinholeDistortion>(&model_)) {
-    Point2d target = has_tilt(*d) ? apply(inverted(tilt_matrix(d->tau_x, d->tau_y)), image) : image;
-    // 2. Newton's method on the full map (tangential and prism terms included), starting from the
-    //    radial inverse, with a halving step whenever the residual does not shrink.
-    double target_radius = std::hypot(target.x, target.y);
-    auto start = angle_of_radius(target_radius);
-    double r_max = std::tan(theta_max_);
-    Point2d u = target;
-    if (start && target_radius > 0) {
-      double r = std::tan(*start) / target_radius;
-      u = {target.x * r, target.y * r};
+    const double r_max = slope_max_;
+    if (ideal_pinhole_) {  // no distortion: the image point is the ray's slope
+      if (!(image.x * image.x + image.y * image.y <= r_max * r_max)) return std::nullopt;
+      return normalize(Vector3d(image.x, image.y, 1));
     }
-    auto residual = [&](Point2d q) {
-      Point2d f = distort(*d, q).p;
-      return Point2d(f.x - target.x, f.y - target.y);
-    };
-    Point2d e = residual(u);
-    double tolerance = 1e-12 * std::max(1.0, target_radius);
-    for (int i = 0; i < 60 && std::hypot(e.x, e.y) > 1e-15 * std::max(1.0, target_radius); ++i) {
-      Distorted j = distort(*d, u);
-      double det = j.dxdx * j.dydy - j.dxdy * j.dydx;
-      if (!(std::abs(det) > 0)) break;
-      Point2d step((j.dydy * e.x - j.dxdy * e.y) / det, (j.dxdx * e.y - j.dydx * e.x) / det);
-      double scale = 1, norm = std::hypot(e.x, e.y);
-      Point2d next, next_e;
-      for (int k = 0; k < 30; ++k, scale *= 0.5) {
-        next = {u.x - scale * step.x, u.y - scale * step.y};
-        next_e = residual(next);
-        if (std::hypot(next_e.x, next_e.y) < norm) break;
-      }
-      if (!(std::hypot(next_e.x, next_e.y) < norm)) break;
-      u = next;
-      e = next_e;
-    }
-    if (!(std::hypot(e.x, e.y) <= tolerance) || !(std::hypot(u.x, u.y) <= r_max))
-      return std::nullopt;
-    return normalize(Vector3d(u.x, u.y, 1));
+    return pinhole_inverse(*d, image, nullptr);
   }
-
   double radius = std::hypot(image.x, image.y);
   auto theta = angle_of_radius(radius);
   if (!theta) return std::nullopt;

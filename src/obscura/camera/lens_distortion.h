@@ -96,13 +96,24 @@ class LensMap {
   // Normalized image point → unit ray (OpenCV frame); nothing outside the region's image or when
   // the iterative solve does not converge to 1e-12 (it is bounded: never a stall).
   std::optional<Vector3d> inverse(Point2d image) const;
+  // The same with a starting guess for the pinhole model's undistorted point (x, y) = (X/Z, Y/Z)
+  // near the answer (from a table of exact inverses): Newton's method then needs a step or two.
+  // The result is accepted by the same tests, so it is the same ray to the solver's tolerance.
+  std::optional<Vector3d> inverse(Point2d image, Point2d start) const;
 
  private:
+  std::optional<Vector3d> pinhole_inverse(const PinholeDistortion& d, Point2d image,
+                                          const Point2d* start) const;
+
   LensModel model_;
   double theta_max_ = 0;
   double image_radius_max_ = 0;
   // The radial map r(θ) tabulated over the valid region: the inverse's starting guess.
   std::array<double, 65> radius_table_{};
+  double slope_max_ = 0;        // pinhole: tan θmax, the largest undistorted radius
+  bool ideal_pinhole_ = false;  // the pinhole model with every coefficient 0: no solve needed
+  // OpenCV's tilt matrix and its inverse, row by row (pinhole with τx or τy ≠ 0).
+  std::array<double, 9> tilt_{}, inverse_tilt_{};
 };
 
 }  // namespace obscura

@@ -4,6 +4,7 @@
 #include <variant>
 
 #include "obscura/camera/intrinsics.h"
+#include "obscura/io/lens_model_coefficients.h"
 #include "obscura/math/error.h"
 
 namespace obscura {
@@ -52,6 +53,21 @@ std::string projection_text(const Camera& camera) {
                           (o.view_width_m ? " view_width_m=" + exact(*o.view_width_m) : "");
                  },
                  [](const Fisheye& f) { return "fov_degrees=" + exact(f.fov_degrees); },
+                 [](const CalibratedProjection& c) {
+                   // K at the calibration's size, the lens model and its coefficients in the
+                   // order the CLI and OpenCV use, the field limit.
+                   std::string coefficients;
+                   for (double v : lens_model_coefficients(c.lens)) {
+                     if (!coefficients.empty()) coefficients += ',';
+                     coefficients += exact(v);
+                   }
+                   return "fx=" + exact(c.k.fx) + " fy=" + exact(c.k.fy) + " cx=" + exact(c.k.cx) +
+                          " cy=" + exact(c.k.cy) + " skew=" + exact(c.k.skew) +
+                          " calibration_size=" + std::to_string(c.width_px) + "x" +
+                          std::to_string(c.height_px) + " lens=" + lens_model_name(c.lens) +
+                          (coefficients.empty() ? "" : " coefficients=" + coefficients) +
+                          " max_field_angle_degrees=" + exact(c.max_field_angle_degrees);
+                 },
                  [](const auto&) { return std::string(); }},
       camera.projection);
   if (!parameters.empty()) text += " " + parameters;
@@ -78,6 +94,7 @@ ImageMetadata ground_truth_metadata(const Camera& camera, const GroundTruthTimes
   try {
     const Intrinsics k = intrinsics(camera);
     add("camera:K", joined({k.fx, k.fy, k.cx, k.cy}));
+    if (k.skew != 0) add("camera:skew", exact(k.skew));
   } catch (const Error&) {
     // No pinhole intrinsics for this projection: the key is left out.
   }
@@ -91,6 +108,10 @@ ImageMetadata ground_truth_metadata(const Camera& camera, const GroundTruthTimes
       "world: right-handed, Y up, metres; camera: X right, Y up, looking down -Z (OpenGL; "
       "OpenCV's frame is this with Y and Z negated); matrices row-major, acting on column "
       "vectors; pixels: (0,0) the top-left corner, x right, y down");
+  add("camera:shutter", joined({camera.shutter.open_s, camera.shutter.close_s}));
+  if (camera.shutter.line_time_s > 0)
+    add("camera:rolling_shutter",
+        exact(camera.shutter.line_time_s) + " " + readout_name(camera.shutter.readout));
   add("ground_truth:times", joined({times.first_s, times.second_s}));
   return m;
 }

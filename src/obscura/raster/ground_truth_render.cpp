@@ -75,12 +75,7 @@ RenderTarget draw_at(const SceneRasterizer& rasterizer, const Camera& camera, do
 
 }  // namespace
 
-GroundTruthBuffer render_ground_truth(const SceneRasterizer& rasterizer,
-                                      const SurfaceMotion& motion, const Camera& camera,
-                                      const GroundTruthTimes& times) {
-  if (!rasterizer.settings().aovs || rasterizer.settings().msaa_samples != 1)
-    throw Error("raster ground truth",
-                "needs a rasterizer with aovs on and one sample per pixel (no MSAA)");
+void check_ground_truth_camera(const Camera& camera) {
   // Exact per-pixel values need the pixel's own time and a matrix: the tracer has both for every
   // camera.
   if (!camera.has_projection_matrix() || camera.shutter.line_time_s > 0)
@@ -90,6 +85,15 @@ GroundTruthBuffer render_ground_truth(const SceneRasterizer& rasterizer,
                     std::string(projection_name(camera.projection)) +
                     (camera.shutter.line_time_s > 0 ? " with a rolling shutter" : "") +
                     ": use the tracer (--renderer path)");
+}
+
+GroundTruthBuffer render_ground_truth(const SceneRasterizer& rasterizer,
+                                      const SurfaceMotion& motion, const Camera& camera,
+                                      const GroundTruthTimes& times) {
+  if (!rasterizer.settings().aovs || rasterizer.settings().msaa_samples != 1)
+    throw Error("raster ground truth",
+                "needs a rasterizer with aovs on and one sample per pixel (no MSAA)");
+  check_ground_truth_camera(camera);
   const Bounds2i crop = camera.film.crop_pixels();
   const double t0 = times.first_s, t1 = times.second_s;
   const RenderTarget first = draw_at(rasterizer, camera, t0);

@@ -23,6 +23,10 @@ namespace obscura::raster {
 // The ground truth of the camera's crop window (pixel (0, 0) is the crop's top-left pixel).
 // `rasterizer` must have aovs on and one sample per pixel, and be compiled from `motion`'s
 // scene. Throws obscura::Error otherwise, and for cameras the rasterizer cannot draw.
+// Throws obscura::Error, naming the tracer, for the cameras whose ground truth the rasterizer
+// cannot give exactly: those without a projection matrix and rolling shutters.
+void check_ground_truth_camera(const Camera& camera);
+
 GroundTruthBuffer render_ground_truth(const SceneRasterizer& rasterizer,
                                       const SurfaceMotion& motion, const Camera& camera,
                                       const GroundTruthTimes& times);

@@ -268,7 +268,7 @@ LensRender render_through_lens(const SceneRasterizer& rasterizer, const Camera& 
   };
 
   Camera local = local_camera(camera);
-  PreparedCamera prepared = local.prepare();
+  PreparedCamera prepared = local.prepare(/*for_many_rays=*/true);
   Bounds2i crop = camera.film.crop_pixels();
   const int width = crop.width(), height = crop.height();
   if (film.width() != width || film.height() != height)

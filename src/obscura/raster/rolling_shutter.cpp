@@ -41,7 +41,8 @@ std::vector<Image> draw_rolling_shutter(const Camera& camera, int bands,
     const double delay = camera.readout_delay_s(rows ? Point2d(0, middle) : Point2d(middle, 0));
     // The crop's pixels on those lines.
     const int from = std::max(lo - (rows ? crop.min.y : crop.min.x), 0);
-    const int to = std::min(hi - (rows ? crop.min.y : crop.min.x), rows ? crop.height() : crop.width());
+    const int to =
+        std::min(hi - (rows ? crop.min.y : crop.min.x), rows ? crop.height() : crop.width());
     if (from >= to) continue;
 
     Camera global = camera;

@@ -28,7 +28,6 @@ double optical_axis_depth(const Camera& camera, Point3d world, double time_s);
 // iteration to 1e-9 px. Nothing when it is not on the film then (behind the camera, outside the
 // near/far range, off the film, outside a fisheye's circle) or the iteration does not settle.
 std::optional<Vector2d> optical_flow(const Camera& camera, Point2d film_point,
-                                     const std::function<Point3d(double)>& world_at,
-                                     double then_s);
+                                     const std::function<Point3d(double)>& world_at, double then_s);
 
 }  // namespace obscura

@@ -73,7 +73,9 @@ GroundTruthBuffer render_ground_truth(const TraceScene& scene, const SurfaceMoti
                                   .geometric_normal = normalize(to_double(h.geometric_normal)),
                                   .instance = int(h.mesh),
                                   .material = int(h.material)});
-              auto at = [&](double t) { return motion.follow(h.mesh, h.primitive, c->position, t0, t); };
+              auto at = [&](double t) {
+                return motion.follow(h.mesh, h.primitive, c->position, t0, t);
+              };
               buffer.set_forward_flow(x, y, optical_flow(camera, film_point, at, times.second_s));
             }
             if (std::optional<CentreHit> c = centre_hit(scene, camera, film_point, t1)) {

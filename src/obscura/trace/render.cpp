@@ -51,7 +51,7 @@ RenderStats render(const TraceScene& scene, const Camera& camera, const Integrat
                               "] s but the camera exposes over [" + std::to_string(exposed.open_s) +
                               ", " + std::to_string(exposed.close_s) +
                               "] s; build the TraceScene with this camera's exposure interval");
-  const PreparedCamera prepared_camera = camera.prepare();
+  const PreparedCamera prepared_camera = camera.prepare(/*for_many_rays=*/true);
   const FilterSampler filter(camera.film.filter);
   const auto exposure = float(camera.exposure_scale());
   auto start = Clock::now();
