@@ -15,8 +15,8 @@
 #include "obscura/raster/lens_warp.h"
 #include "obscura/raster/scene_rasterizer.h"
 #include "obscura/scene/scene.h"
-#include "obscura/trace/integrator.h"
 #include "obscura/trace/render.h"
+#include "white_on_black.h"
 
 namespace obscura {
 namespace {
@@ -29,13 +29,7 @@ const cv::Size kInnerCorners(kSquaresX - 1, kSquaresY - 1);
 // White emitting squares on black, with a white border one square wide (the quiet zone OpenCV's
 // detector looks for), in the plane z = 0 centred on the origin.
 Scene checkerboard() {
-  Scene scene;
-  scene.name = "checkerboard";
-  Material white;
-  white.name = "white";
-  white.model = EmissiveMaterial{};
-  white.emission = Rgb(1);
-  scene.materials = {white};
+  Scene scene = test::white_on_black("checkerboard");
   Mesh mesh;
   mesh.name = "board";
   const double x0 = -0.5 * (kSquaresX + 2) * kSquare, y0 = -0.5 * (kSquaresY + 2) * kSquare;
@@ -94,20 +88,10 @@ cv::Mat gray(const Image& image) {
   return m;
 }
 
-// The board is all that emits and nothing else is lit: what a camera ray hits first is white.
-class FirstHitWhite final : public Integrator {
- public:
-  Rgb radiance(const TraceScene& scene, const Ray& ray, Sampler&, RayCounts& counts,
-               FirstHit*) const override {
-    ++counts.camera;
-    return scene.occluded(ray) ? Rgb(1) : Rgb(0);
-  }
-};
-
 Image trace_board(const Scene& scene, const Camera& camera) {
   TraceScene trace(scene, std::make_shared<EmbreeDevice>());
   Film film(camera.film.width_px, camera.film.height_px);
-  render(trace, camera, FirstHitWhite(), {.samples_per_pixel = 32, .seed = 1}, film);
+  render(trace, camera, test::FirstHitWhite(), {.samples_per_pixel = 32, .seed = 1}, film);
   return film.to_image();
 }
 

@@ -27,10 +27,10 @@ void expect_flow_reprojects(double line_time_s) {
   c.film.width_px = 64;
   c.film.height_px = 48;
   Point3d eye(0.278, 0.273, -0.8);
-  c.world_from_camera = AnimatedTransform(
-      {{0, world_from_camera_look_at(eye, eye + Vector3d(0, 0, 1))},
-       {1, world_from_camera_look_at(eye + Vector3d(0.06, 0.02, 0.05),
-                                     eye + Vector3d(0.03, 0, 1))}});
+  c.world_from_camera =
+      AnimatedTransform({{0, world_from_camera_look_at(eye, eye + Vector3d(0, 0, 1))},
+                         {1, world_from_camera_look_at(eye + Vector3d(0.06, 0.02, 0.05),
+                                                       eye + Vector3d(0.03, 0, 1))}});
   c.shutter = {.open_s = 0, .close_s = 0.2, .line_time_s = line_time_s};
   c.validate();
   TraceSceneOptions options;

@@ -10,23 +10,13 @@
 
 #include "obscura/camera/calibrated_projection.h"
 #include "obscura/camera/camera.h"
+#include "white_on_black.h"
 
 namespace obscura {
 namespace {
 
 constexpr double kPi = 3.14159265358979323846;
 constexpr int kPoints = 10000;
-
-Camera calibrated_camera(const CalibratedProjection& p, int width, int height) {
-  Camera c;
-  c.projection = p;
-  c.film.width_px = width;
-  c.film.height_px = height;
-  c.near_m = 1e-3;
-  c.far_m = 1e6;
-  c.validate();
-  return c;
-}
 
 // OpenCV's camera frame (X right, Y down, Z forward) to Obscura's (Y up, looking down −Z).
 Point3d obscura_point(const cv::Point3d& p) {
@@ -105,7 +95,7 @@ TEST(CalibratedCameraVsOpenCV, PinholeProjectsAsProjectPoints) {
   Intrinsics k{.fx = 905.5, .fy = 887.25, .cx = 3911.7, .cy = 3388.2};
   for (const PinholeCase& c : kPinholeCases) {
     SCOPED_TRACE(c.name);
-    Camera camera = calibrated_camera({.k = k, .lens = c.distortion}, 7840, 6800);
+    Camera camera = test::calibrated_camera({.k = k, .lens = c.distortion}, 7840, 6800);
     LensMap map(c.distortion);
     // Inside the validity region, on a film wide enough to show all of it.
     double max_angle = std::min(map.max_field_angle() * 0.95, 55 * kPi / 180);
@@ -122,7 +112,7 @@ TEST(CalibratedCameraVsOpenCV, FisheyeProjectsAsFisheyeProjectPointsWithSkew) {
   double alpha = 0.0021;
   KannalaBrandt d{.k1 = 0.031, .k2 = -0.012, .k3 = 0.0041, .k4 = -0.0009};
   Intrinsics k{.fx = 610.3, .fy = 608.9, .cx = 2022.4, .cy = 1971.9, .skew = 610.3 * alpha};
-  Camera camera = calibrated_camera({.k = k, .lens = d}, 4048, 3936);
+  Camera camera = test::calibrated_camera({.k = k, .lens = d}, 4048, 3936);
   // cv::fisheye divides by Z: compare over the forward hemisphere (up to 85°).
   std::vector<cv::Point3d> points = random_points(85 * kPi / 180, 11);
   std::vector<cv::Point2d> pixels;
@@ -149,7 +139,7 @@ TEST(CalibratedCameraVsOpenCV, PinholeUnprojectsAsUndistortPointsAndRoundTrips) 
   cv::TermCriteria exact(cv::TermCriteria::COUNT + cv::TermCriteria::EPS, 200, 1e-15);
   for (const PinholeCase& c : kPinholeCases) {
     SCOPED_TRACE(c.name);
-    Camera camera = calibrated_camera({.k = k, .lens = c.distortion}, 1280, 720);
+    Camera camera = test::calibrated_camera({.k = k, .lens = c.distortion}, 1280, 720);
     std::vector<cv::Point2d> pixels = random_pixels(camera, 3), undistorted;
     cv::undistortPoints(pixels, undistorted, camera_matrix(k), opencv_coefficients(c.distortion),
                         cv::noArray(), cv::noArray(), exact);
@@ -176,7 +166,8 @@ TEST(CalibratedCameraVsOpenCV, PinholeUnprojectsAsUndistortPointsAndRoundTrips) 
 TEST(CalibratedCameraVsOpenCV, FisheyeUnprojectsAsFisheyeUndistortPoints) {
   KannalaBrandt d{.k1 = 0.031, .k2 = -0.012, .k3 = 0.0041, .k4 = -0.0009};
   Intrinsics k{.fx = 410.3, .fy = 408.9, .cx = 640.4, .cy = 481.9};
-  Camera camera = calibrated_camera({.k = k, .lens = d, .max_field_angle_degrees = 80}, 1280, 960);
+  Camera camera =
+      test::calibrated_camera({.k = k, .lens = d, .max_field_angle_degrees = 80}, 1280, 960);
   std::vector<cv::Point2d> pixels = random_pixels(camera, 5), undistorted;
   cv::Mat K = camera_matrix(k);
   cv::fisheye::undistortPoints(

@@ -13,22 +13,12 @@
 #include "obscura/camera/camera.h"
 #include "obscura/camera/intrinsics.h"
 #include "obscura/math/error.h"
+#include "white_on_black.h"
 
 namespace obscura {
 namespace {
 
 constexpr double kPi = 3.14159265358979323846;
-
-Camera calibrated_camera(const CalibratedProjection& p, int width, int height) {
-  Camera c;
-  c.projection = p;
-  c.film.width_px = width;
-  c.film.height_px = height;
-  c.near_m = 1e-3;
-  c.far_m = 1e6;
-  c.validate();
-  return c;
-}
 
 // A world point at field angle θ from the optical axis (Obscura's −Z), towards +X (right).
 Point3d at_field_angle(double theta, double distance = 2) {
@@ -48,7 +38,8 @@ TEST(LensModels, ClassicFisheyesPlaceRaysAtTheirTextbookRadii) {
   };
   Intrinsics k{.fx = 250, .fy = 250, .cx = 511.5, .cy = 511.5};
   for (const Case& c : cases) {
-    Camera camera = calibrated_camera({.k = k, .lens = ClassicFisheye{c.mapping}}, 1024, 1024);
+    Camera camera =
+        test::calibrated_camera({.k = k, .lens = ClassicFisheye{c.mapping}}, 1024, 1024);
     for (double degrees : {10.0, 35.0, 60.0, 85.0}) {
       double theta = degrees * kPi / 180;
       auto p = camera.project(at_field_angle(theta));
@@ -74,7 +65,8 @@ TEST(LensModels, StrongBarrelDistortionStopsWhereItFoldsOver) {
 TEST(LensModels, TwoHundredDegreeFisheyeSeesBehindItselfAndInvertsEverywhere) {
   KannalaBrandt d{.k1 = -0.04, .k2 = 0.003};
   Intrinsics k{.fx = 180, .fy = 180, .cx = 399.5, .cy = 399.5};
-  Camera camera = calibrated_camera({.k = k, .lens = d, .max_field_angle_degrees = 100}, 800, 800);
+  Camera camera =
+      test::calibrated_camera({.k = k, .lens = d, .max_field_angle_degrees = 100}, 800, 800);
   // 95° from the axis: behind the lens plane, still on the film.
   auto p = camera.project(at_field_angle(95 * kPi / 180));
   ASSERT_TRUE(p);
@@ -114,7 +106,7 @@ TEST(LensModels, KannalaBrandtIsTheOddFThetaPolynomial) {
 
 TEST(LensModels, KScalesWithTheImage) {
   Intrinsics k{.fx = 1000, .fy = 990, .cx = 639.5, .cy = 361.0, .skew = 2};
-  Camera camera = calibrated_camera({.k = k, .width_px = 1280, .height_px = 720}, 640, 360);
+  Camera camera = test::calibrated_camera({.k = k, .width_px = 1280, .height_px = 720}, 640, 360);
   Intrinsics half = intrinsics(camera);
   EXPECT_DOUBLE_EQ(half.fx, 500);
   EXPECT_DOUBLE_EQ(half.fy, 495);
@@ -129,7 +121,7 @@ TEST(LensModels, KScalesWithTheImage) {
 }
 
 TEST(LensModels, PinholeDepthIsAlongTheAxisAndUnprojectInvertsProject) {
-  Camera camera = calibrated_camera(
+  Camera camera = test::calibrated_camera(
       {.k = {.fx = 500, .fy = 520, .cx = 300, .cy = 200}, .lens = PinholeDistortion{.k1 = -0.2}},
       640, 480);
   Point3d world(0.4, -0.3, -2.5);

@@ -14,8 +14,8 @@
 #include "obscura/scene/scene.h"
 #include "obscura/scene/surface_motion.h"
 #include "obscura/trace/ground_truth_render.h"
-#include "obscura/trace/integrator.h"
 #include "obscura/trace/render.h"
+#include "white_on_black.h"
 
 namespace obscura {
 namespace {
@@ -28,13 +28,7 @@ constexpr double kBarHalfWidth = 0.05;     // metres
 
 // An emitting vertical bar at x = 0 in the plane z = 0, tall enough to cross every line.
 Scene bar_scene() {
-  Scene scene;
-  scene.name = "bar";
-  Material white;
-  white.name = "white";
-  white.model = EmissiveMaterial{};
-  white.emission = Rgb(1);
-  scene.materials = {white};
+  Scene scene = test::white_on_black("bar");
   Mesh bar;
   bar.name = "bar";
   const float w = float(kBarHalfWidth);
@@ -78,20 +72,11 @@ double measured_bar_x(const Image& image, int line) {
   return left + width / 2;
 }
 
-class FirstHitWhite final : public Integrator {
- public:
-  Rgb radiance(const TraceScene& scene, const Ray& ray, Sampler&, RayCounts& counts,
-               FirstHit*) const override {
-    ++counts.camera;
-    return scene.occluded(ray) ? Rgb(1) : Rgb(0);
-  }
-};
-
 TEST(RollingShutter, TracerLeansTheBarByImageSpeedTimesLineTimeOnEveryLine) {
   Scene scene = bar_scene();
   TraceScene trace(scene, std::make_shared<EmbreeDevice>());
   Film film(kSize, kSize);
-  render(trace, scene.camera, FirstHitWhite(), {.samples_per_pixel = 256, .seed = 3}, film);
+  render(trace, scene.camera, test::FirstHitWhite(), {.samples_per_pixel = 256, .seed = 3}, film);
   Image image = film.to_image();
   // The lean: fx · v / D px per second, over a 0.5 s readout: about 26 px from top to bottom.
   double lean = measured_bar_x(image, 0) - measured_bar_x(image, kSize - 1);
