@@ -138,10 +138,6 @@ void apply_lens_overrides(Camera& camera, const CameraOverrides& o) {
 
 }  // namespace
 
-double parse_seconds(const std::string& text, const std::string& option) {
-  return parse_number(text, option);
-}
-
 Shutter shutter_option(const CameraOverrides& o) {
   if (!o.shutter) return Shutter{};
   std::vector<double> times =

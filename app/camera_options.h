@@ -45,10 +45,6 @@ struct CameraOverrides {
 
 void add_camera_options(CLI::App& command, CameraOverrides& overrides);
 
-// A time in seconds as --shutter takes them: a number or a fraction "a/b" (1/60). Throws
-// UsageError naming `option` otherwise.
-double parse_seconds(const std::string& text, const std::string& option);
-
 // The shutter --shutter gives, else the default one (a malformed value throws UsageError).
 Shutter shutter_option(const CameraOverrides& overrides);
 

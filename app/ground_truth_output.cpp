@@ -7,6 +7,7 @@
 #include <vector>
 
 #include "camera_options.h"
+#include "number_list_option.h"
 #include "obscura/io/ground_truth_file.h"
 #include "obscura/io/image_io.h"
 #include "obscura/raster/ground_truth_render.h"
@@ -31,12 +32,9 @@ GroundTruthTimes ground_truth_times(const GroundTruthOptions& options, const Cam
   if (!options.flow_times) return default_ground_truth_times(camera);
   if (options.path.empty())
     throw UsageError("--flow-times sets the times of --ground-truth: give --ground-truth FILE.exr");
-  const std::string& text = *options.flow_times;
-  const size_t colon = text.find(':');
-  if (colon == std::string::npos || text.find(':', colon + 1) != std::string::npos)
-    throw UsageError("--flow-times expects A:B in seconds (0:1/60); got '" + text + "'");
-  return {parse_seconds(text.substr(0, colon), "--flow-times"),
-          parse_seconds(text.substr(colon + 1), "--flow-times")};
+  std::vector<double> times =
+      parse_list(*options.flow_times, ':', 2, "--flow-times", "A:B in seconds (0:1/60)");
+  return {times[0], times[1]};
 }
 
 void check_ground_truth_output(const GroundTruthOptions& options, const std::string& image_output,

@@ -209,19 +209,16 @@ double Camera::exposure_scale() const {
 
 double Camera::readout_delay_s(Point2d film_point) const {
   if (shutter.line_time_s == 0) return 0;
-  bool rows =
-      shutter.readout == Readout::top_to_bottom || shutter.readout == Readout::bottom_to_top;
+  bool rows = reads_rows(shutter.readout);
   double lines = rows ? film.height_px : film.width_px;
   double line = std::clamp((rows ? film_point.y : film_point.x) - 0.5, 0.0, lines - 1);
-  if (shutter.readout == Readout::bottom_to_top || shutter.readout == Readout::right_to_left)
-    line = lines - 1 - line;
+  if (reads_backwards(shutter.readout)) line = lines - 1 - line;
   return line * shutter.line_time_s;
 }
 
 Shutter Camera::exposure_interval() const {
   Shutter s = shutter;
-  bool rows =
-      shutter.readout == Readout::top_to_bottom || shutter.readout == Readout::bottom_to_top;
+  bool rows = reads_rows(shutter.readout);
   s.close_s += (rows ? film.height_px - 1 : film.width_px - 1) * shutter.line_time_s;
   s.line_time_s = 0;
   return s;

@@ -16,6 +16,15 @@ namespace obscura {
 // or right of the image.
 enum class Readout { top_to_bottom, bottom_to_top, left_to_right, right_to_left };
 
+// Whether the sensor lines are the image's rows (else its columns), and whether they are read
+// from the image's bottom or right edge.
+inline bool reads_rows(Readout r) {
+  return r == Readout::top_to_bottom || r == Readout::bottom_to_top;
+}
+inline bool reads_backwards(Readout r) {
+  return r == Readout::bottom_to_top || r == Readout::right_to_left;
+}
+
 struct Shutter {
   double open_s = 0;
   double close_s = 1.0 / 60;  // ≥ open_s; equal means an instantaneous exposure (no blur)

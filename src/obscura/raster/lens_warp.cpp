@@ -134,8 +134,7 @@ struct RenderedView {
 Rgb bilinear(const Image& image, Point2d p) {
   double x = std::clamp(p.x - 0.5, 0.0, double(image.width - 1));
   double y = std::clamp(p.y - 0.5, 0.0, double(image.height - 1));
-  int x0 = std::min(int(x), image.width - 2 < 0 ? 0 : image.width - 2);
-  int y0 = std::min(int(y), image.height - 2 < 0 ? 0 : image.height - 2);
+  int x0 = int(x), y0 = int(y);  // x, y ≥ 0: truncation is floor
   int x1 = std::min(x0 + 1, image.width - 1), y1 = std::min(y0 + 1, image.height - 1);
   float fx = float(x - x0), fy = float(y - y0);
   Rgb top = image.rgb(x0, y0) * (1 - fx) + image.rgb(x1, y0) * fx;

@@ -6,14 +6,6 @@
 
 namespace obscura::raster {
 
-namespace {
-
-bool reads_rows(Readout r) {
-  return r == Readout::top_to_bottom || r == Readout::bottom_to_top;
-}
-
-}  // namespace
-
 int rolling_band_count(const Camera& camera, int max_bands) {
   if (camera.shutter.line_time_s == 0) return 1;
   int lines = reads_rows(camera.shutter.readout) ? camera.film.height_px : camera.film.width_px;
@@ -34,8 +26,7 @@ std::vector<Image> draw_rolling_shutter(const Camera& camera, int bands,
     const int first = int(int64_t(b) * lines / bands), last = int(int64_t(b + 1) * lines / bands);
     if (first == last) continue;
     // The band's image lines, in full-image coordinates, and their middle line's delay.
-    const bool reversed = camera.shutter.readout == Readout::bottom_to_top ||
-                          camera.shutter.readout == Readout::right_to_left;
+    const bool reversed = reads_backwards(camera.shutter.readout);
     const int lo = reversed ? lines - last : first, hi = reversed ? lines - first : last;
     const double middle = 0.5 * (lo + hi);  // raster coordinate of the band's centre
     const double delay = camera.readout_delay_s(rows ? Point2d(0, middle) : Point2d(middle, 0));
