@@ -7,10 +7,10 @@
 
 #include "camera_export.h"
 #include "camera_options.h"
-#include "obscura/camera/gltf_camera.h"
 #include "obscura/camera/intrinsics.h"
-#include "obscura/camera/number_text.h"
+#include "obscura/io/gltf_camera.h"
 #include "obscura/io/lens_model_coefficients.h"
+#include "obscura/math/number_text.h"
 #include "option_ranges.h"
 #include "render_command.h"
 #include "usage_error.h"

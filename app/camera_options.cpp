@@ -5,9 +5,9 @@
 
 #include "calibrated_camera_options.h"
 #include "number_list_option.h"
-#include "obscura/camera/number_text.h"
 #include "obscura/camera/perspective.h"
 #include "obscura/math/error.h"
+#include "obscura/math/number_text.h"
 #include "option_ranges.h"
 #include "usage_error.h"
 

@@ -5,7 +5,7 @@
 #include <sys/stat.h>
 
 #include "mesh_test_files.h"
-#include "obscura/io/scene_loader.h"
+#include "obscura/io/model_file.h"
 #include "test_paths.h"
 
 namespace obscura {

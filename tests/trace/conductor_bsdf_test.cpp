@@ -3,7 +3,7 @@
 #include <gtest/gtest.h>
 
 #include "bsdf_test_support.h"
-#include "obscura/trace/fresnel.h"
+#include "obscura/shading/fresnel.h"
 
 namespace obscura {
 namespace {
@@ -45,7 +45,7 @@ TEST(ConductorBsdf, SmoothIsAMirrorWeightedByFresnel) {
   EXPECT_NEAR(s->wi.x, -wo.x, 1e-6f);
   EXPECT_NEAR(s->wi.z, wo.z, 1e-6f);
   Rgb weight = s->f * (s->wi.z / s->pdf);
-  Rgb fresnel = fresnel_conductor(wo.z, kGoldEta, kGoldK);
+  Rgb fresnel = shading::fresnel_conductor(wo.z, kGoldEta, kGoldK);
   for (int c = 0; c < 3; ++c) EXPECT_NEAR(weight[c], fresnel[c], 1e-5f);
   EXPECT_TRUE(bsdf.f(wo, s->wi).is_black());
 }

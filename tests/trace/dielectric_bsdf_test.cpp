@@ -3,7 +3,7 @@
 #include <gtest/gtest.h>
 
 #include "bsdf_test_support.h"
-#include "obscura/trace/fresnel.h"
+#include "obscura/shading/fresnel.h"
 
 namespace obscura {
 namespace {
@@ -26,7 +26,7 @@ TEST(DielectricBsdf, RoughSamplingMatchesPdfFromBothSides) {
 TEST(DielectricBsdf, SmoothSplitsEnergyByFresnel) {
   DielectricBsdf bsdf(1.5f, 0);
   Vector3f wo = direction_at(50);
-  float r = fresnel_dielectric(wo.z, 1.5f);
+  float r = shading::fresnel_dielectric(wo.z, 1.5f);
   std::optional<BsdfSample> reflected = bsdf.sample(wo, 0.5f * r, {0.5f, 0.5f});
   std::optional<BsdfSample> refracted = bsdf.sample(wo, 0.5f + 0.5f * r, {0.5f, 0.5f});
   ASSERT_TRUE(reflected && refracted);

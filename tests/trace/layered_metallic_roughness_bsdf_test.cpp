@@ -7,8 +7,8 @@
 
 #include "bsdf_test_support.h"
 #include "obscura/shading/charlie_sheen.h"
+#include "obscura/shading/fresnel.h"
 #include "obscura/shading/ggx_energy.h"
-#include "obscura/trace/fresnel.h"
 
 namespace obscura {
 namespace {
@@ -158,13 +158,13 @@ TEST(LayeredMetallicRoughnessBsdf, SmoothCoatOverBlackReflectsF0AtNormalIncidenc
   for (float c : {1.f, 0.5f}) {
     AnyBsdf bsdf = LayeredMetallicRoughnessBsdf(black, {.clearcoat = c, .clearcoat_roughness = 0});
     testing::Albedo a = testing::directional_albedo(bsdf, {0, 0, 1}, 100000);
-    EXPECT_NEAR(a.mean.g, c * fresnel_f0(1.5f), 2e-4f) << "clearcoat " << c;
+    EXPECT_NEAR(a.mean.g, c * shading::fresnel_f0(1.5f), 2e-4f) << "clearcoat " << c;
   }
   // At 60° the spec's Fresnel of n·v: 0.04 + 0.96 · 0.5⁵ = 0.07; a smooth coat's microfacets
   // face the normal, so its v·h Fresnel is the same.
   AnyBsdf bsdf = LayeredMetallicRoughnessBsdf(black, {.clearcoat = 1, .clearcoat_roughness = 0});
   testing::Albedo a = testing::directional_albedo(bsdf, direction_at(60), 100000);
-  EXPECT_NEAR(a.mean.g, fresnel_schlick(0.04f, 0.5f), 1e-3f);
+  EXPECT_NEAR(a.mean.g, shading::fresnel_schlick(0.04f, 0.5f), 1e-3f);
 }
 
 TEST(LayeredMetallicRoughnessBsdf, CoatScalesTheBaseByWhatItReflects) {
@@ -176,7 +176,7 @@ TEST(LayeredMetallicRoughnessBsdf, CoatScalesTheBaseByWhatItReflects) {
   const Ggx coat(2 * Ggx::kSmoothAlpha);
   float scale = 1 - 0.7f * shading::ggx_schlick_albedo(0.04f, wo.z, coat.alpha());
   Vector3f h = normalize(wo + wi);
-  float tail = 0.7f * fresnel_schlick(0.04f, dot(wo, h)) * coat.D(h) * coat.G(wo, wi) /
+  float tail = 0.7f * shading::fresnel_schlick(0.04f, dot(wo, h)) * coat.D(h) * coat.G(wo, wi) /
                (4 * wo.z * wi.z);  // the coat's lobe this far from its peak: ~1e-5
   for (int c = 0; c < 3; ++c)
     EXPECT_NEAR(coated.f(wo, wi)[c], scale * plain.f(wo, wi)[c] + tail, 1e-6f * plain.f(wo, wi)[c]);

@@ -3,7 +3,7 @@
 #include <gtest/gtest.h>
 
 #include "bsdf_test_support.h"
-#include "obscura/trace/fresnel.h"
+#include "obscura/shading/fresnel.h"
 
 namespace obscura {
 namespace {
@@ -55,7 +55,7 @@ TEST(MetallicRoughnessBsdf, DielectricDefaultReflectsFourPercentAtNormalIncidenc
   // Black base colour, ior 1.5: only the specular layer with F0 = 0.04 remains.
   AnyBsdf bsdf = MetallicRoughnessBsdf({.base_color = Rgb(0.f), .metallic = 0, .roughness = 0.05f});
   testing::Albedo a = testing::directional_albedo(bsdf, {0, 0, 1});
-  EXPECT_NEAR(a.mean.g, fresnel_f0(1.5f), 0.003f);
+  EXPECT_NEAR(a.mean.g, shading::fresnel_f0(1.5f), 0.003f);
 }
 
 TEST(MetallicRoughnessBsdf, IsReciprocal) {

@@ -9,26 +9,6 @@ namespace {
 
 using testing::direction_at;
 
-// ∫ lobe(wo = normal, wi)·cos θi dωi by quadrature over θ (the lobe is symmetric about the
-// normal at normal incidence): the reciprocal of the normalization.
-double lobe_integral_at_normal(float n, bool blinn) {
-  const int steps = 200000;
-  double sum = 0, dtheta = std::numbers::pi / 2 / steps;
-  for (int i = 0; i < steps; ++i) {
-    double t = (i + 0.5) * dtheta;
-    double c = blinn ? std::cos(t / 2) : std::cos(t);  // the half vector lies at θ/2
-    sum += std::pow(c, n) * std::cos(t) * std::sin(t) * 2 * std::numbers::pi * dtheta;
-  }
-  return sum;
-}
-
-TEST(PhongBsdf, NormalizationsMakeAWhiteLobeReflectAllLightAlongTheNormal) {
-  for (float n : {0.f, 1.f, 10.f, 100.f, 1000.f}) {
-    EXPECT_NEAR(phong_normalization(n) * lobe_integral_at_normal(n, false), 1.0, 1e-4) << n;
-    EXPECT_NEAR(blinn_phong_normalization(n) * lobe_integral_at_normal(n, true), 1.0, 1e-4) << n;
-  }
-}
-
 TEST(PhongBsdf, SamplingMatchesPdf) {
   for (bool blinn : {false, true})
     for (float n : {1.f, 20.f}) {

@@ -4,7 +4,7 @@
 
 #include <cmath>
 
-#include "obscura/trace/fresnel.h"
+#include "obscura/shading/fresnel.h"
 #include "obscura/trace/path_tracer.h"
 #include "obscura/trace/render.h"
 #include "trace_test_scenes.h"
@@ -41,7 +41,7 @@ TEST(Whitted, MirrorReflectsTheLightItSeesWeightedByFresnel) {
   TraceScene scene(sky_over_floor(), device());
   scene.set_material(0, TraceMaterial(ConductorBsdf(eta, k, 0)));
   // Looking down at 45°: the mirror shows the sky through F(cos 45°).
-  Rgb expected = fresnel_conductor(std::sqrt(0.5f), eta, k);
+  Rgb expected = shading::fresnel_conductor(std::sqrt(0.5f), eta, k);
   Rgb whitted = centre_radiance(scene, {0, 1, 1}, {0, 0, 0}, WhittedIntegrator());
   Rgb path = centre_radiance(scene, {0, 1, 1}, {0, 0, 0}, PathTracer());
   for (int c = 0; c < 3; ++c) {
@@ -64,7 +64,7 @@ TEST(Whitted, GlassSlabTransmitsWhatFresnelLeaves) {
   TraceScene trace_scene(scene, device());
   trace_scene.set_material(2, TraceMaterial(DielectricBsdf(1.5f, 0)));
   trace_scene.set_material(0, TraceMaterial(LambertianBsdf{Rgb(0.f)}));  // no light from below
-  float r = fresnel_f0(1.5f), expected = (1 - r) / (1 + r);
+  float r = shading::fresnel_f0(1.5f), expected = (1 - r) / (1 + r);
   Rgb whitted = centre_radiance(trace_scene, {0, 0.5, 0}, {0, 2, 0.0001}, WhittedIntegrator());
   EXPECT_NEAR(whitted.g, expected, 1e-3f);
   // The path tracer picks one branch per interface at random; on average the same.
@@ -114,7 +114,7 @@ TEST(Whitted, GlassAtDepth1024StaysWithinTheRayBudget) {
   RenderStats stats = render(trace_scene, camera, WhittedIntegrator({.max_depth = 1024}),
                              {.samples_per_pixel = 1}, film);
   EXPECT_LE(stats.rays.camera + stats.rays.bounce, uint64_t(WhittedIntegrator::kRayBudget));
-  float r = fresnel_f0(1.5f), t = (1 - r) / (1 + r), rs = 2 * r / (1 + r);
+  float r = shading::fresnel_f0(1.5f), t = (1 - r) / (1 + r), rs = 2 * r / (1 + r);
   EXPECT_NEAR(film.pixel({0, 0}).g, t / (1 - rs * r), 1e-3f);
 }
 

@@ -4,8 +4,8 @@
 #include <numbers>
 #include <string>
 
-#include "obscura/camera/number_text.h"
 #include "obscura/math/error.h"
+#include "obscura/math/number_text.h"
 #include "obscura/math/sampling.h"
 
 namespace obscura {

@@ -5,8 +5,8 @@
 #include <limits>
 #include <string>
 
-#include "obscura/camera/number_text.h"
 #include "obscura/math/error.h"
+#include "obscura/math/number_text.h"
 
 namespace obscura {
 
@@ -225,9 +225,7 @@ Shutter Camera::exposure_interval() const {
 }
 
 double Camera::circle_of_confusion_px(double depth_m) const {
-  if (!lens.depth_of_field) return 0;
-  double c_mm = circle_of_confusion_mm(lens, focal_length_mm(), depth_m);
-  return c_mm / film_size_mm().x * film.width_px;
+  return prepare().circle_of_confusion_px(depth_m);
 }
 
 std::optional<CameraRay> Camera::generate_ray(Point2d film_point, Point2d lens_sample,
@@ -248,8 +246,10 @@ PreparedCamera::PreparedCamera(const Camera& camera, bool for_many_rays) : camer
   width_px_ = camera.film.width_px;
   height_px_ = camera.film.height_px;
   lens_radius_m_ = camera.lens_radius_m();
+  focal_length_mm_ = camera.focal_length_mm();
+  film_width_mm_ = camera.film_size_mm().x;
   if (auto* c = std::get_if<CalibratedProjection>(&camera.projection)) {
-    lens_map_.emplace(c->lens, max_field_angle_rad(*c));
+    lens_map_.emplace(lens_map(*c));  // a copy of this thread's, not built again
     auto* pinhole = std::get_if<PinholeDistortion>(&c->lens);
     if (for_many_rays && pinhole && !(*pinhole == PinholeDistortion{})) {
       start_columns_ = int(std::ceil(width_px_ / kStartSpacing)) + 1;
@@ -287,12 +287,6 @@ std::optional<CameraRay> PreparedCamera::generate_ray(Point2d film_point, Point2
                                                       double time_s) const {
   const Camera& camera = *camera_;
   const ThinLens& lens = camera.lens;
-  // Camera::window_from_raster with the window computed once (the same operations, so the
-  // same doubles).
-  auto window_from_raster = [&](Point2d raster) {
-    return Point2d(window_.x_min + raster.x / width_px_ * window_width_,
-                   window_.y_max - raster.y / height_px_ * window_height_);
-  };
   // 1. The ray in camera space. `depth_per_t` turns the clipping range into t: perspective and
   //    orthographic rays clip at planes of constant depth along −Z, spherical ones by distance.
   struct LocalRay {
@@ -357,8 +351,43 @@ std::optional<CameraRay> PreparedCamera::generate_ray(Point2d film_point, Point2
   return into_world(camera.world_from_camera.at(time_s));
 }
 
+// Camera::window_from_raster and raster_from_window with the window computed once (the same
+// operations, so the same doubles).
+Point2d PreparedCamera::window_from_raster(Point2d raster) const {
+  return {window_.x_min + raster.x / width_px_ * window_width_,
+          window_.y_max - raster.y / height_px_ * window_height_};
+}
+
+Point2d PreparedCamera::raster_from_window(Point2d p) const {
+  return {(p.x - window_.x_min) / window_width_ * width_px_,
+          (window_.y_max - p.y) / window_height_ * height_px_};
+}
+
+double PreparedCamera::circle_of_confusion_px(double depth_m) const {
+  if (!camera_->lens.depth_of_field) return 0;
+  double c_mm = circle_of_confusion_mm(camera_->lens, focal_length_mm_, depth_m);
+  return c_mm / film_width_mm_ * width_px_;
+}
+
+Transform PreparedCamera::world_from_camera(double time_s) const {
+  return fixed_world_from_camera_ ? *fixed_world_from_camera_
+                                  : camera_->world_from_camera.at(time_s);
+}
+
 std::optional<FilmProjection> Camera::project(Point3d world, double time_s) const {
-  Point3d q = inverse(world_from_camera.at(time_s))(world);
+  return prepare().project(world, time_s);
+}
+
+std::optional<Point3d> Camera::unproject(Point2d film_point, double depth_m, double time_s) const {
+  return prepare().unproject(film_point, depth_m, time_s);
+}
+
+std::optional<FilmProjection> PreparedCamera::project(Point3d world, double time_s) const {
+  const Camera& camera = *camera_;
+  const FilmGeometry& film = camera.film;
+  const Projection& projection = camera.projection;
+  const double near_m = camera.near_m, far_m = camera.far_m;
+  Point3d q = inverse(world_from_camera(time_s))(world);
   Vector3d d = to_vector(q);
   // Depth along −Z for the planar projections, distance for the spherical ones; then the film
   // point, or nothing outside a fisheye's circle.
@@ -383,7 +412,7 @@ std::optional<FilmProjection> Camera::project(Point3d world, double time_s) cons
                        return raster_from_fisheye_centered(film, *c);
                      },
                      [&](const CalibratedProjection& c) -> std::optional<Point2d> {
-                       auto image = lens_map(c).forward(flip_yz(d));
+                       auto image = lens_map_->forward(flip_yz(d));
                        if (!image) return std::nullopt;
                        return raster_from_lens_image(c, film, *image);
                      },
@@ -393,7 +422,9 @@ std::optional<FilmProjection> Camera::project(Point3d world, double time_s) cons
   return FilmProjection{*film_point, depth};
 }
 
-std::optional<Point3d> Camera::unproject(Point2d film_point, double depth_m, double time_s) const {
+std::optional<Point3d> PreparedCamera::unproject(Point2d film_point, double depth_m,
+                                                 double time_s) const {
+  const FilmGeometry& film = camera_->film;
   std::optional<Point3d> q = std::visit(
       Overloaded{
           [&](const Perspective&) -> std::optional<Point3d> {
@@ -414,16 +445,16 @@ std::optional<Point3d> Camera::unproject(Point2d film_point, double depth_m, dou
             return Point3d(0, 0, 0) + *d * depth_m;
           },
           [&](const CalibratedProjection& c) -> std::optional<Point3d> {
-            auto d = lens_map(c).inverse(lens_image_from_raster(c, film, film_point));
+            auto d = lens_map_->inverse(lens_image_from_raster(c, film, film_point));
             if (!d) return std::nullopt;
             Vector3d direction = flip_yz(*d);
             double scale = is_planar(c.lens) ? depth_m / -direction.z : depth_m;
             return Point3d(0, 0, 0) + direction * scale;
           },
       },
-      projection);
+      camera_->projection);
   if (!q) return std::nullopt;
-  return world_from_camera.at(time_s)(*q);
+  return world_from_camera(time_s)(*q);
 }
 
 Matrix4 Camera::view_matrix(double time_s) const {

@@ -128,16 +128,26 @@ struct Camera {
   Point2d raster_from_window(Point2d window) const;
 };
 
-// A camera ready to generate rays: what generate_ray needs that does not change from ray to ray
-// (the screen window, the lens radius, the transform of a camera that does not move), computed
-// once. Recomputing them per ray was a tenth of the tracer's time per sample on simple scenes.
-// Its rays are Camera::generate_ray's bit for bit (that function is this one, prepared per call).
-// Refers to the camera, which must outlive it and not change while it is in use.
+// A camera ready to render: what the per-pixel and per-sample questions need that does not
+// change from one to the next (the screen window, the lens radius, the focal length, the
+// transform of a camera that does not move, a calibrated camera's lens map), computed once.
+// Recomputing them per ray was a tenth of the tracer's time per sample on simple scenes.
+// Its answers are Camera's bit for bit (Camera::generate_ray, project and unproject are these,
+// prepared per call). Refers to the camera, which must outlive it and not change while in use.
 class PreparedCamera {
  public:
   explicit PreparedCamera(const Camera& camera, bool for_many_rays = false);
+  const Camera& camera() const { return *camera_; }
+
   std::optional<CameraRay> generate_ray(Point2d film_point, Point2d lens_sample = {0.5, 0.5},
                                         double time_s = 0) const;
+  std::optional<FilmProjection> project(Point3d world, double time_s = 0) const;
+  std::optional<Point3d> unproject(Point2d film_point, double depth_m, double time_s = 0) const;
+  // As Camera's; the window ones for perspective and orthographic cameras only.
+  Point2d window_from_raster(Point2d raster) const;
+  Point2d raster_from_window(Point2d window) const;
+  double circle_of_confusion_px(double depth_m) const;
+  Transform world_from_camera(double time_s) const;
 
  private:
   const Camera* camera_;
@@ -145,6 +155,7 @@ class PreparedCamera {
   double window_width_ = 0, window_height_ = 0;
   double width_px_ = 0, height_px_ = 0;
   double lens_radius_m_ = 0;
+  double focal_length_mm_ = 0, film_width_mm_ = 0;      // what the circle of confusion needs
   const Transform* fixed_world_from_camera_ = nullptr;  // a camera that does not move
   std::optional<LensMap> lens_map_;                     // a calibrated camera's
   // Its undistorted points (X/Z, Y/Z) at raster points every kStartSpacing pixels (NaN where

@@ -4,8 +4,8 @@
 #include <iterator>
 #include <string>
 
-#include "obscura/camera/number_text.h"
 #include "obscura/math/error.h"
+#include "obscura/math/number_text.h"
 
 namespace obscura {
 

@@ -4,9 +4,9 @@
 #include <cmath>
 #include <string>
 
-#include "obscura/camera/number_text.h"
 #include "obscura/camera/projection.h"  // Overloaded
 #include "obscura/math/error.h"
+#include "obscura/math/number_text.h"
 
 namespace obscura {
 

@@ -3,8 +3,8 @@
 #include <cmath>
 #include <string>
 
-#include "obscura/camera/number_text.h"
 #include "obscura/math/error.h"
+#include "obscura/math/number_text.h"
 
 namespace obscura {
 

@@ -4,8 +4,8 @@
 #include <cmath>
 
 #include "obscura/camera/intrinsics.h"
-#include "obscura/camera/number_text.h"
 #include "obscura/math/error.h"
+#include "obscura/math/number_text.h"
 
 namespace obscura {
 

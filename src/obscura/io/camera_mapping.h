@@ -1,12 +1,12 @@
 // The one place where cameras from files (glTF, the JSON scene file) become Obscura cameras.
-// glTF's values go through camera/gltf_camera.h; the JSON keys are listed in
+// glTF's values go through io/gltf_camera.h; the JSON keys are listed in
 // docs/scene-format.md ("Cameras").
 #pragma once
 
 #include <string>
 
 #include "obscura/camera/camera.h"
-#include "obscura/camera/gltf_camera.h"
+#include "obscura/io/gltf_camera.h"
 #include "obscura/io/json_reader.h"
 #include "obscura/math/bounds.h"
 #include "obscura/scene/scene.h"

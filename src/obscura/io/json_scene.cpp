@@ -11,7 +11,7 @@
 #include "obscura/io/camera_mapping.h"
 #include "obscura/io/gltf_animation.h"
 #include "obscura/io/json_reader.h"
-#include "obscura/io/scene_loader.h"
+#include "obscura/io/model_file.h"
 #include "obscura/io/texture_loader.h"
 #include "obscura/math/error.h"
 #include "obscura/scene/shapes.h"

@@ -2,8 +2,8 @@
 
 #include <algorithm>
 
-#include "obscura/camera/number_text.h"
 #include "obscura/math/error.h"
+#include "obscura/math/number_text.h"
 
 namespace obscura {
 

@@ -3,9 +3,9 @@
 #include <cmath>
 #include <initializer_list>
 
-#include "obscura/camera/number_text.h"
 #include "obscura/io/lens_model_coefficients.h"
 #include "obscura/math/error.h"
+#include "obscura/math/number_text.h"
 
 namespace obscura {
 

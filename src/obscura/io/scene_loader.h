@@ -16,10 +16,6 @@ namespace obscura {
 // applies to a glTF file (its scene and pose time); naming a scene for another format is an error.
 Scene load_scene_file(const std::string& path, const GltfLoadOptions& gltf = {});
 
-// A model file (glTF, OBJ, PLY, STL or an Assimp format) as it is, without a render camera or
-// validation: what the JSON scene file includes.
-Scene load_model_file(const std::string& path, const GltfLoadOptions& gltf = {});
-
 struct BuiltinScene {
   std::string name;
   std::string description;

@@ -13,7 +13,7 @@
 #include <vector>
 
 #include "obscura/raster/clipper.h"
-#include "obscura/raster/depth_test.h"
+#include "obscura/raster/draw_modes.h"
 #include "obscura/raster/fill_rule.h"
 #include "obscura/raster/render_target.h"
 #include "obscura/raster/shaded_vertex.h"

@@ -169,12 +169,13 @@ Image depth_of_field_post(const Image& color, const Image& view_depth, const Cam
   const size_t n = size_t(stride) * h;
   std::vector<float> depth(n, 1.f), radius(n, 0.f), plane[3];
   for (auto& c : plane) c.resize(n, 0.f);
+  const PreparedCamera prepared = camera.prepare();
   for (int y = 0; y < h; ++y)
     for (int x = 0; x < w; ++x) {
       const size_t i = size_t(y) * w + x, j = size_t(y) * stride + x;
       double z = finite_depth(view_depth.data[i]);
       depth[j] = float(z);
-      radius[j] = std::min(float(0.5 * camera.circle_of_confusion_px(z)), max_radius);
+      radius[j] = std::min(float(0.5 * prepared.circle_of_confusion_px(z)), max_radius);
       for (int k = 0; k < 3; ++k) plane[k][j] = color.data[i * color.channels + k];
     }
 

@@ -21,7 +21,8 @@ Vector3d to_double(Vector3f v) {
 }
 
 std::optional<Seen> seen_at(const RenderTarget& target, const SurfaceMotion& motion,
-                            const Camera& camera, int x, int y, Point2d film_point, double time_s) {
+                            const PreparedCamera& camera, int x, int y, Point2d film_point,
+                            double time_s) {
   const uint32_t object = target.object_id_at(x, y);
   if (object == kNoObject) return std::nullopt;
   std::optional<CameraRay> ray = camera.generate_ray(film_point, {0.5, 0.5}, time_s);
@@ -98,15 +99,16 @@ GroundTruthBuffer render_ground_truth(const SceneRasterizer& rasterizer,
   const double t0 = times.first_s, t1 = times.second_s;
   const RenderTarget first = draw_at(rasterizer, camera, t0);
   const RenderTarget second = draw_at(rasterizer, camera, t1);
+  const PreparedCamera prepared = camera.prepare();
   GroundTruthBuffer buffer(crop.width(), crop.height());
   const Scene& scene = motion.scene();
   for (int y = 0; y < crop.height(); ++y)
     for (int x = 0; x < crop.width(); ++x) {
       const Point2d film_point(crop.min.x + x + 0.5, crop.min.y + y + 0.5);
       buffer.set_time(x, y, t0);
-      if (std::optional<Seen> s = seen_at(first, motion, camera, x, y, film_point, t0)) {
+      if (std::optional<Seen> s = seen_at(first, motion, prepared, x, y, film_point, t0)) {
         buffer.set_surface(x, y,
-                           {.z_m = optical_axis_depth(camera, s->position, t0),
+                           {.z_m = optical_axis_depth(prepared, s->position, t0),
                             .range_m = s->range_m,
                             .position = s->position,
                             .shading_normal = s->shading_normal,
@@ -116,13 +118,13 @@ GroundTruthBuffer render_ground_truth(const SceneRasterizer& rasterizer,
         auto at = [&](double t) {
           return motion.follow(s->instance, s->triangle, s->position, t0, t);
         };
-        buffer.set_forward_flow(x, y, optical_flow(camera, film_point, at, t1));
+        buffer.set_forward_flow(x, y, optical_flow(prepared, film_point, at, t1));
       }
-      if (std::optional<Seen> s = seen_at(second, motion, camera, x, y, film_point, t1)) {
+      if (std::optional<Seen> s = seen_at(second, motion, prepared, x, y, film_point, t1)) {
         auto at = [&](double t) {
           return motion.follow(s->instance, s->triangle, s->position, t1, t);
         };
-        buffer.set_backward_flow(x, y, optical_flow(camera, film_point, at, t0));
+        buffer.set_backward_flow(x, y, optical_flow(prepared, film_point, at, t0));
       }
     }
   return buffer;

@@ -77,9 +77,9 @@ template <SpecularModel M>
 OBSCURA_RASTER_INLINE PhongTerms phong_terms(const PhongMaterial& m) {
   if (m.convention == PhongConvention::kClassic) return {m.diffuse, m.specular, m.shininess, 0.f};
   Rgb kd = m.diffuse, ks = m.specular;
-  conserve_energy(kd, ks);
-  float c = M == SpecularModel::kPhong ? phong_lobe_normalization(m.shininess)
-                                       : blinn_phong_lobe_normalization(m.shininess);
+  shading::conserve_energy(kd, ks);
+  float c = M == SpecularModel::kPhong ? shading::phong_lobe_normalization(m.shininess)
+                                       : shading::blinn_phong_lobe_normalization(m.shininess);
   return {kd * kBrdfInvPi, ks * c, m.shininess, 1.f};
 }
 

@@ -23,7 +23,7 @@
 #include "obscura/math/error.h"
 #include "obscura/raster/binner.h"
 #include "obscura/raster/clipper.h"
-#include "obscura/raster/depth_test.h"
+#include "obscura/raster/draw_modes.h"
 #include "obscura/raster/msaa.h"
 #include "obscura/raster/render_target.h"
 #include "obscura/raster/shaded_vertex.h"

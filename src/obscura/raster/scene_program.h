@@ -123,7 +123,7 @@ OBSCURA_RASTER_INLINE Rgb shade_transmissive(const SurfacePoint& s, const LightS
   glass.model = SurfaceModel::kDielectric;
   glass.alpha = std::max(s.alpha, kMinHighlightAlpha);
   glass.transmittance = Rgb(0.f);  // the light let through is `behind`, added here
-  const float f = fresnel_dielectric_reflectance(dot(n, v), s.ior);
+  const float f = shading::fresnel_dielectric_from_outside(dot(n, v), s.ior);
   Rgb c =
       (shade_surface(glass, lights, shadows, p, n, geometric, v) + behind * s.base * (1 - f)) * w;
   if (w < 1) {
@@ -195,7 +195,7 @@ struct ScenePixelProgram {
     s.coat_normal = coat;
     if (uniforms.force_blinn && s.model == SurfaceModel::kPhong) {
       s.model = SurfaceModel::kBlinnPhong;
-      s.lobe_normalization = blinn_phong_lobe_normalization(s.shininess);
+      s.lobe_normalization = shading::blinn_phong_lobe_normalization(s.shininess);
     }
     Rgb c;
     if (s.model == SurfaceModel::kUnlit) {
@@ -260,7 +260,7 @@ struct SceneGouraudProgram {
     SurfacePoint s = surface_point_untextured(*uniforms.material, m.color);
     if (uniforms.force_blinn && s.model == SurfaceModel::kPhong) {
       s.model = SurfaceModel::kBlinnPhong;
-      s.lobe_normalization = blinn_phong_lobe_normalization(s.shininess);
+      s.lobe_normalization = shading::blinn_phong_lobe_normalization(s.shininess);
     }
     // Transmission: lit at the vertex, with the uniform surround seen through the glass.
     Rgb lit = s.model == SurfaceModel::kUnlit ? s.base

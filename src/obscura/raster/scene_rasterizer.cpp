@@ -597,10 +597,11 @@ Image distance_image(const RenderTarget& target, const Camera& camera) {
   image.channel_names = {"Z"};
   if (!std::holds_alternative<Perspective>(camera.projection)) return image;
   Bounds2i crop = camera.film.crop_pixels();
+  const PreparedCamera prepared = camera.prepare();
   for (int y = 0; y < target.height(); ++y)
     for (int x = 0; x < target.width(); ++x) {
       // The ray through the pixel centre travels |(wx, wy, −1)| per unit of depth.
-      Point2d w = camera.window_from_raster({crop.min.x + x + 0.5, crop.min.y + y + 0.5});
+      Point2d w = prepared.window_from_raster({crop.min.x + x + 0.5, crop.min.y + y + 0.5});
       image.at(x, y, 0) *= float(std::sqrt(w.x * w.x + w.y * w.y + 1));
     }
   return image;

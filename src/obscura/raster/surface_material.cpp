@@ -68,7 +68,7 @@ SurfaceMaterial compile_material(const Material& material,
       s.alpha = std::max(ggx_alpha(m.roughness), kMinHighlightAlpha);
       s.multiple_scattering =
           shading::multiple_scattering_color(shading::fresnel_average([&](float mu) {
-                                               return fresnel_conductor_reflectance(mu, m.eta, m.k);
+                                               return shading::fresnel_conductor(mu, m.eta, m.k);
                                              }),
                                              s.alpha);
     }
@@ -156,10 +156,10 @@ SurfacePoint surface_point_untextured(const SurfaceMaterial& m, Rgb vertex_color
   switch (m.model) {
     case SurfaceModel::kPhong:
     case SurfaceModel::kBlinnPhong:
-      conserve_energy(p.base, p.specular);
+      shading::conserve_energy(p.base, p.specular);
       p.lobe_normalization = m.model == SurfaceModel::kPhong
-                                 ? phong_lobe_normalization(p.shininess)
-                                 : blinn_phong_lobe_normalization(p.shininess);
+                                 ? shading::phong_lobe_normalization(p.shininess)
+                                 : shading::blinn_phong_lobe_normalization(p.shininess);
       break;
     case SurfaceModel::kMetallicRoughness:
     case SurfaceModel::kLayeredMetallicRoughness:
@@ -276,7 +276,7 @@ EnvironmentResponse environment_response(const SurfacePoint& s, float n_dot_v) {
       break;
     }
     case SurfaceModel::kConductor:
-      r.specular = ggx_schlick_albedo(fresnel_conductor_reflectance(1.f, s.eta, s.k), mu, s.alpha) +
+      r.specular = ggx_schlick_albedo(shading::fresnel_conductor(1.f, s.eta, s.k), mu, s.alpha) +
                    s.multiple_scattering * (1 - shading::ggx_albedo(mu, s.alpha));
       r.roughness = std::sqrt(s.alpha);
       break;

@@ -196,8 +196,8 @@ OBSCURA_RASTER_INLINE Rgb layered_cosine(const SurfacePoint& s, Rgb base, Vector
       r = r * (1 - s.clearcoat * shading::ggx_schlick_albedo(kCoatF0, c_v, s.coat_alpha));
       if (c_l > 0) {
         Vector3f h = normalize(v + l);
-        r += Rgb(s.clearcoat * schlick(kCoatF0, dot(v, h)) *
-                 ggx_specular(c_v, c_l, dot(nc, h), s.coat_alpha) * c_l);
+        r += Rgb(s.clearcoat * shading::fresnel_schlick(kCoatF0, dot(v, h)) *
+                 shading::ggx_specular(c_v, c_l, dot(nc, h), s.coat_alpha) * c_l);
       }
     }
   }
@@ -231,7 +231,7 @@ OBSCURA_RASTER_INLINE Rgb reflected_cosine(const SurfacePoint& s, Vector3f n, Ve
       // The tracer's MetallicRoughnessBsdf term for term (its header has the formula).
       Vector3f h = normalize(v + l);
       float v_h = dot(v, h);
-      float lobe = ggx_specular(n_dot_v, n_dot_l, dot(n, h), s.alpha);
+      float lobe = shading::ggx_specular(n_dot_v, n_dot_l, dot(n, h), s.alpha);
       float multiple = shading::ggx_multiple_scattering(n_dot_v, n_dot_l, s.alpha);
       float f0 = std::max({s.specular.r, s.specular.g, s.specular.b});
       float left_average =
@@ -240,9 +240,9 @@ OBSCURA_RASTER_INLINE Rgb reflected_cosine(const SurfacePoint& s, Vector3f n, Ve
       float left_l = 1 - s.specular_strength * shading::ggx_schlick_albedo(f0, n_dot_l, s.alpha);
       float diffuse_weight = left_average > 1e-6f ? left_v * left_l / left_average : 0.f;
       Rgb dielectric = s.base * (diffuse_weight * kBrdfInvPi) +
-                       schlick(s.specular, v_h) * (s.specular_strength * lobe);
+                       shading::fresnel_schlick(s.specular, v_h) * (s.specular_strength * lobe);
       Rgb metal =
-          schlick(s.base, v_h) * lobe +
+          shading::fresnel_schlick(s.base, v_h) * lobe +
           shading::multiple_scattering_color(shading::schlick_average(s.base), s.alpha) * multiple;
       Rgb r = (dielectric * (1 - s.metallic) + metal * s.metallic) * n_dot_l;
       return s.model == SurfaceModel::kMetallicRoughness
@@ -251,15 +251,15 @@ OBSCURA_RASTER_INLINE Rgb reflected_cosine(const SurfacePoint& s, Vector3f n, Ve
     }
     case SurfaceModel::kConductor: {
       Vector3f h = normalize(v + l);
-      float lobe = ggx_specular(n_dot_v, n_dot_l, dot(n, h), s.alpha);
-      return fresnel_conductor_reflectance(dot(v, h), s.eta, s.k) * (lobe * n_dot_l) +
+      float lobe = shading::ggx_specular(n_dot_v, n_dot_l, dot(n, h), s.alpha);
+      return shading::fresnel_conductor(dot(v, h), s.eta, s.k) * (lobe * n_dot_l) +
              s.multiple_scattering *
                  (shading::ggx_multiple_scattering(n_dot_v, n_dot_l, s.alpha) * n_dot_l);
     }
     case SurfaceModel::kDielectric: {
       Vector3f h = normalize(v + l);
-      float lobe = ggx_specular(n_dot_v, n_dot_l, dot(n, h), s.alpha);
-      return Rgb(fresnel_dielectric_reflectance(dot(v, h), s.ior) * lobe * n_dot_l);
+      float lobe = shading::ggx_specular(n_dot_v, n_dot_l, dot(n, h), s.alpha);
+      return Rgb(shading::fresnel_dielectric_from_outside(dot(v, h), s.ior) * lobe * n_dot_l);
     }
   }
   return {};

@@ -20,7 +20,7 @@
 
 #include "obscura/color/rgb.h"
 #include "obscura/raster/binner.h"
-#include "obscura/raster/depth_test.h"
+#include "obscura/raster/draw_modes.h"
 #include "obscura/raster/fill_rule.h"
 #include "obscura/raster/msaa.h"
 #include "obscura/raster/render_target.h"

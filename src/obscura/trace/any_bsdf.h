@@ -4,9 +4,9 @@
 
 #include <variant>
 
+#include "obscura/shading/fresnel.h"
 #include "obscura/trace/conductor_bsdf.h"
 #include "obscura/trace/dielectric_bsdf.h"
-#include "obscura/trace/fresnel.h"
 #include "obscura/trace/lambertian_bsdf.h"
 #include "obscura/trace/layered_metallic_roughness_bsdf.h"
 #include "obscura/trace/metallic_roughness_bsdf.h"
@@ -64,7 +64,9 @@ inline Rgb AnyBsdf::albedo() const {
   struct Visitor {
     Rgb operator()(const LambertianBsdf& b) const { return b.reflectance; }
     Rgb operator()(const PhongBsdf& b) const { return b.diffuse + b.specular; }
-    Rgb operator()(const ConductorBsdf& b) const { return fresnel_conductor(1, b.eta, b.k); }
+    Rgb operator()(const ConductorBsdf& b) const {
+      return shading::fresnel_conductor(1, b.eta, b.k);
+    }
     Rgb operator()(const DielectricBsdf& b) const { return b.transmittance; }
     Rgb operator()(const MetallicRoughnessBsdf& b) const { return b.params.base_color; }
     Rgb operator()(const TransmissiveMetallicRoughnessBsdf& b) const { return b.base_color(); }

@@ -3,8 +3,9 @@
 #include <algorithm>
 
 #include "obscura/math/sampling.h"
+#include "obscura/shading/fresnel.h"
+#include "obscura/shading/ggx.h"
 #include "obscura/shading/ggx_energy.h"
-#include "obscura/trace/fresnel.h"
 
 namespace obscura {
 
@@ -12,7 +13,8 @@ ConductorBsdf::ConductorBsdf(Rgb eta_, Rgb k_, float alpha)
     : eta(eta_), k(k_), distribution(alpha) {
   if (is_delta()) return;
   multiple_scattering = shading::multiple_scattering_color(
-      shading::fresnel_average([&](float mu) { return fresnel_conductor(mu, eta, k); }), alpha);
+      shading::fresnel_average([&](float mu) { return shading::fresnel_conductor(mu, eta, k); }),
+      alpha);
   // The share of the multiple-scattering lobe in what is reflected along the normal.
   float single = shading::ggx_albedo(1, alpha);
   float multiple = luminance(multiple_scattering) * (1 - single);
@@ -24,8 +26,8 @@ Rgb ConductorBsdf::f(Vector3f wo, Vector3f wi) const {
   Vector3f wm = wo + wi;
   if (length_squared(wm) == 0) return {};
   wm = normalize(wm);
-  Rgb fresnel = fresnel_conductor(dot(wo, wm), eta, k);
-  return fresnel * (distribution.D(wm) * distribution.G(wo, wi) / (4 * wo.z * wi.z)) +
+  Rgb fresnel = shading::fresnel_conductor(dot(wo, wm), eta, k);
+  return fresnel * (shading::ggx_specular(wo.z, wi.z, wm.z, distribution.alpha())) +
          multiple_scattering * shading::ggx_multiple_scattering(wo.z, wi.z, distribution.alpha());
 }
 
@@ -44,7 +46,7 @@ std::optional<BsdfSample> ConductorBsdf::sample(Vector3f wo, float uc, Point2f u
   if (is_delta()) {
     Vector3f wi(-wo.x, -wo.y, wo.z);
     return BsdfSample{
-        .f = fresnel_conductor(wo.z, eta, k) / wi.z, .wi = wi, .pdf = 1, .is_delta = true};
+        .f = shading::fresnel_conductor(wo.z, eta, k) / wi.z, .wi = wi, .pdf = 1, .is_delta = true};
   }
   Vector3f wi = uc < multiple_probability ? sample_cosine_hemisphere(u)
                                           : reflect(wo, distribution.sample_visible_normal(wo, u));

@@ -1,6 +1,6 @@
 #include "obscura/trace/dielectric_bsdf.h"
 
-#include "obscura/trace/fresnel.h"
+#include "obscura/shading/fresnel.h"
 
 namespace obscura {
 
@@ -28,7 +28,7 @@ Rgb DielectricBsdf::f(Vector3f wo, Vector3f wi) const {
   Vector3f wm;
   float etap;
   if (!half_vector(wo, wi, &wm, &etap)) return {};
-  float fresnel = fresnel_dielectric(dot(wo, wm), ior);
+  float fresnel = shading::fresnel_dielectric(dot(wo, wm), ior);
   float d = distribution.D(wm), g = distribution.G(wo, wi);
   if (same_hemisphere(wo, wi)) return Rgb(d * g * fresnel / std::abs(4 * wo.z * wi.z));
   float denom = dot(wi, wm) + dot(wo, wm) / etap;
@@ -42,7 +42,7 @@ float DielectricBsdf::pdf(Vector3f wo, Vector3f wi) const {
   Vector3f wm;
   float etap;
   if (!half_vector(wo, wi, &wm, &etap)) return 0;
-  float r = fresnel_dielectric(dot(wo, wm), ior), t = 1 - r;
+  float r = shading::fresnel_dielectric(dot(wo, wm), ior), t = 1 - r;
   if (same_hemisphere(wo, wi))
     return distribution.visible_D(wo, wm) / (4 * std::abs(dot(wo, wm))) * r;
   float denom = dot(wi, wm) + dot(wo, wm) / etap;
@@ -54,7 +54,7 @@ std::optional<BsdfSample> DielectricBsdf::sample(Vector3f wo, float uc, Point2f 
   if (wo.z == 0) return std::nullopt;
   if (is_delta()) {
     // Reflect with probability R, refract otherwise, about the macro normal.
-    float r = fresnel_dielectric(wo.z, ior), t = 1 - r;
+    float r = shading::fresnel_dielectric(wo.z, ior), t = 1 - r;
     if (uc < r) {
       Vector3f wi(-wo.x, -wo.y, wo.z);
       return BsdfSample{.f = Rgb(r / abs_cos_theta(wi)), .wi = wi, .pdf = r, .is_delta = true};
@@ -70,7 +70,7 @@ std::optional<BsdfSample> DielectricBsdf::sample(Vector3f wo, float uc, Point2f 
                       .eta = etap};
   }
   Vector3f wm = distribution.sample_visible_normal(wo, u);
-  float r = fresnel_dielectric(dot(wo, wm), ior);
+  float r = shading::fresnel_dielectric(dot(wo, wm), ior);
   Vector3f wi;
   bool transmission = false;
   float etap = 1;

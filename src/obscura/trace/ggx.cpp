@@ -15,20 +15,6 @@ float Ggx::alpha_from_roughness(float roughness) {
   return r * r;
 }
 
-float Ggx::D(Vector3f m) const {
-  if (m.z <= 0) return 0;
-  float a2 = alpha_ * alpha_;
-  float t = m.z * m.z * (a2 - 1) + 1;
-  return a2 / (kPi * t * t);
-}
-
-float Ggx::lambda(Vector3f w) const {
-  float c2 = cos2_theta(w);
-  if (c2 <= 0) return 1e30f;  // grazing: fully masked
-  float a2_tan2 = alpha_ * alpha_ * sin2_theta(w) / c2;
-  return 0.5f * (std::sqrt(1 + a2_tan2) - 1);
-}
-
 float Ggx::visible_D(Vector3f w, Vector3f m) const {
   float c = abs_cos_theta(w);
   if (c == 0) return 0;

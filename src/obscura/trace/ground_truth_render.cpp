@@ -18,7 +18,7 @@ struct CentreHit {
   Point3d position;  // in double precision, along the double-precision ray
 };
 
-std::optional<CentreHit> centre_hit(const TraceScene& scene, const Camera& camera,
+std::optional<CentreHit> centre_hit(const TraceScene& scene, const PreparedCamera& camera,
                                     Point2d film_point, double time_s) {
   std::optional<CameraRay> ray = camera.generate_ray(film_point, {0.5, 0.5}, time_s);
   if (!ray) return std::nullopt;
@@ -53,6 +53,7 @@ GroundTruthBuffer render_ground_truth(const TraceScene& scene, const SurfaceMoti
     check_time(scene.shutter(), times.second_s + readout, "second (last line)");
   }
   const Bounds2i crop = camera.film.crop_pixels();
+  const PreparedCamera prepared = camera.prepare();
   GroundTruthBuffer buffer(crop.width(), crop.height());
   for_each_tile_parallel(
       Bounds2i{{0, 0}, {crop.width(), crop.height()}}, kTileSize, [&](const Bounds2i& tile) {
@@ -63,10 +64,10 @@ GroundTruthBuffer render_ground_truth(const TraceScene& scene, const SurfaceMoti
             const double delay = camera.readout_delay_s(film_point);
             const double t0 = times.first_s + delay, t1 = times.second_s + delay;
             buffer.set_time(x, y, t0);
-            if (std::optional<CentreHit> c = centre_hit(scene, camera, film_point, t0)) {
+            if (std::optional<CentreHit> c = centre_hit(scene, prepared, film_point, t0)) {
               const SurfaceHit& h = c->hit;
               buffer.set_surface(x, y,
-                                 {.z_m = optical_axis_depth(camera, c->position, t0),
+                                 {.z_m = optical_axis_depth(prepared, c->position, t0),
                                   .range_m = length(c->position - c->ray.origin),
                                   .position = c->position,
                                   .shading_normal = normalize(to_double(h.shading_normal)),
@@ -76,13 +77,13 @@ GroundTruthBuffer render_ground_truth(const TraceScene& scene, const SurfaceMoti
               auto at = [&](double t) {
                 return motion.follow(h.mesh, h.primitive, c->position, t0, t);
               };
-              buffer.set_forward_flow(x, y, optical_flow(camera, film_point, at, times.second_s));
+              buffer.set_forward_flow(x, y, optical_flow(prepared, film_point, at, times.second_s));
             }
-            if (std::optional<CentreHit> c = centre_hit(scene, camera, film_point, t1)) {
+            if (std::optional<CentreHit> c = centre_hit(scene, prepared, film_point, t1)) {
               auto at = [&](double t) {
                 return motion.follow(c->hit.mesh, c->hit.primitive, c->position, t1, t);
               };
-              buffer.set_backward_flow(x, y, optical_flow(camera, film_point, at, times.first_s));
+              buffer.set_backward_flow(x, y, optical_flow(prepared, film_point, at, times.first_s));
             }
           }
       });

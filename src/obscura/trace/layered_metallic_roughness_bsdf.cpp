@@ -4,16 +4,17 @@
 
 #include "obscura/math/sampling.h"
 #include "obscura/shading/charlie_sheen.h"
+#include "obscura/shading/fresnel.h"
+#include "obscura/shading/ggx.h"
 #include "obscura/shading/ggx_energy.h"
 #include "obscura/shading/normal_map.h"
-#include "obscura/trace/fresnel.h"
 
 namespace obscura {
 
 namespace {
 
 // KHR_materials_clearcoat fixes the coat's index of refraction at 1.5: F0 = 0.04.
-const float kCoatF0 = fresnel_f0(1.5f);
+const float kCoatF0 = shading::fresnel_f0(1.5f);
 
 }  // namespace
 
@@ -95,8 +96,8 @@ Rgb LayeredMetallicRoughnessBsdf::f(Vector3f wo, Vector3f wi) const {
           result * (1 - layers.clearcoat * shading::ggx_schlick_albedo(kCoatF0, wo_c.z, alpha));
       if (wi_c.z > 0) {
         Vector3f h = normalize(wo_c + wi_c);
-        float lobe = coat_.D(h) * coat_.G(wo_c, wi_c) / (4 * wo_c.z * wi_c.z) *
-                     fresnel_schlick(kCoatF0, dot(wo_c, h)) * layers.clearcoat;
+        float lobe = shading::ggx_specular(wo_c.z, wi_c.z, h.z, alpha) *
+                     shading::fresnel_schlick(kCoatF0, dot(wo_c, h)) * layers.clearcoat;
         // The integrator weighs f by the base frame's cosine; the coat's own is what counts.
         if (coat_tilted_) lobe *= wi_c.z / wi.z;
         result += Rgb(lobe);

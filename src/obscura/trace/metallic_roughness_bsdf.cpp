@@ -3,8 +3,9 @@
 #include <algorithm>
 
 #include "obscura/math/sampling.h"
+#include "obscura/shading/fresnel.h"
+#include "obscura/shading/ggx.h"
 #include "obscura/shading/ggx_energy.h"
-#include "obscura/trace/fresnel.h"
 
 namespace obscura {
 
@@ -21,7 +22,7 @@ Rgb lerp(float t, Rgb a, Rgb b) {
 
 MetallicRoughnessBsdf::MetallicRoughnessBsdf(const MetallicRoughnessParameters& p)
     : params(p),
-      dielectric_f0(min(p.specular_color * fresnel_f0(p.ior), 1.f)),
+      dielectric_f0(min(p.specular_color * shading::fresnel_f0(p.ior), 1.f)),
       distribution(std::max(Ggx::alpha_from_roughness(p.roughness), 2 * Ggx::kSmoothAlpha)) {
   const float alpha = distribution.alpha();
   metal_multiple_scattering =
@@ -47,10 +48,10 @@ Rgb MetallicRoughnessBsdf::f(Vector3f wo, Vector3f wi) const {
   Vector3f h = normalize(wo + wi);
   float v_h = dot(wo, h);
   const float alpha = distribution.alpha();
-  float specular_lobe = distribution.D(h) * distribution.G(wo, wi) / (4 * wo.z * wi.z);
+  float specular_lobe = shading::ggx_specular(wo.z, wi.z, h.z, alpha);
   // What single scattering between microfacets loses, put back (shading/ggx_energy.h).
   float multiple_lobe = shading::ggx_multiple_scattering(wo.z, wi.z, alpha);
-  Rgb metal = fresnel_schlick(params.base_color, v_h) * specular_lobe +
+  Rgb metal = shading::fresnel_schlick(params.base_color, v_h) * specular_lobe +
               metal_multiple_scattering * multiple_lobe;
   // The specification weights the diffuse lobe by 1 − F(v·h), which reflects up to a third more
   // light than arrives at grazing angles. Here it gets exactly what the specular layer leaves,
@@ -62,7 +63,7 @@ Rgb MetallicRoughnessBsdf::f(Vector3f wo, Vector3f wi) const {
   float left_i = 1 - s * shading::ggx_schlick_albedo(f0, wi.z, alpha);
   float diffuse_weight = diffuse_average_left > 1e-6f ? left_o * left_i / diffuse_average_left : 0;
   Rgb dielectric = params.base_color * (diffuse_weight * kInvPi) +
-                   fresnel_schlick(dielectric_f0, v_h) * (s * specular_lobe);
+                   shading::fresnel_schlick(dielectric_f0, v_h) * (s * specular_lobe);
   return lerp(params.metallic, dielectric, metal);
 }
 

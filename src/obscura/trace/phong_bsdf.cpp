@@ -4,6 +4,7 @@
 #include <cmath>
 
 #include "obscura/math/sampling.h"
+#include "obscura/shading/phong_lobe.h"
 
 namespace obscura {
 
@@ -24,19 +25,11 @@ float power_cosine_pdf(float cos_a, float n) {
 
 }  // namespace
 
-float phong_normalization(float n) {
-  return (n + 2) * (0.5f * kInvPi);
-}
-
-float blinn_phong_normalization(float n) {
-  return (n + 2) * (n + 4) / (8 * kPi * (std::exp2(-0.5f * n) + n));
-}
-
 PhongBsdf::PhongBsdf(Rgb diffuse_, Rgb specular_, float shininess_, bool blinn_)
     : diffuse(diffuse_), specular(specular_), shininess(std::max(0.f, shininess_)), blinn(blinn_) {
-  float total = (diffuse + specular).max_component();
-  if (total > 1) diffuse = diffuse / total, specular = specular / total;
-  normalization = blinn ? blinn_phong_normalization(shininess) : phong_normalization(shininess);
+  shading::conserve_energy(diffuse, specular);
+  normalization = blinn ? shading::blinn_phong_lobe_normalization(shininess)
+                        : shading::phong_lobe_normalization(shininess);
   float wd = luminance(diffuse), ws = luminance(specular);
   specular_probability = wd + ws > 0 ? ws / (wd + ws) : 0.f;
 }

@@ -2,10 +2,8 @@
 // specular k_s, shininess n) as a physically based BRDF
 //   f = k_d/π + k_s · c(n) · lobe^n,
 // lobe = max(0, r·wi) with r the mirror of wo (Phong) or max(0, n·h) with h the half vector
-// (Blinn-Phong). The normalizations c(n) make a white lobe reflect exactly all light arriving
-// along the normal (Lafortune & Willems 1994 for Phong: (n+2)/2π; for Blinn-Phong the exact
-// normal-incidence factor (n+2)(n+4) / (8π(2^(−n/2) + n))). Where k_d + k_s exceeds 1 in a
-// channel both are scaled down so the surface never reflects more than it receives.
+// (Blinn-Phong). The normalizations c(n) and the k_d + k_s ≤ 1 rule are shading/phong_lobe.h's,
+// the ones the rasterizer uses too.
 //
 // The rasterizer's classic shading of a light of intensity I at distance d is
 // (I/d²)(k_d·cosθ + k_s·lobe^n); the tracer computes (I/d²)·f·cosθ, so its diffuse term is the
@@ -33,9 +31,5 @@ struct PhongBsdf {
   float lobe(Vector3f wo, Vector3f wi) const;
   float lobe_pdf(Vector3f wo, Vector3f wi) const;
 };
-
-// c(n) of the two lobes (see above).
-float phong_normalization(float n);
-float blinn_phong_normalization(float n);
 
 }  // namespace obscura

@@ -1,6 +1,7 @@
 #include "obscura/trace/thin_dielectric_bsdf.h"
 
-#include "obscura/trace/fresnel.h"
+#include "obscura/shading/fresnel.h"
+#include "obscura/shading/ggx.h"
 
 namespace obscura {
 
@@ -21,8 +22,8 @@ Rgb ThinDielectricBsdf::f(Vector3f wo, Vector3f wi) const {
   if (is_delta() || wo.z == 0 || wi.z == 0) return {};
   Vector3f o = upper(wo), i = upper(wi);
   Vector3f h = normalize(o + i);
-  float fresnel = fresnel_dielectric(dot(o, h), ior);
-  float lobe = distribution.D(h) * distribution.G(o, i) / (4 * o.z * i.z);
+  float fresnel = shading::fresnel_dielectric(dot(o, h), ior);
+  float lobe = shading::ggx_specular(o.z, i.z, h.z, distribution.alpha());
   if (same_hemisphere(wo, wi)) return Rgb(fresnel * lobe);
   return transmittance * ((1 - fresnel) * lobe);
 }
@@ -31,7 +32,7 @@ float ThinDielectricBsdf::pdf(Vector3f wo, Vector3f wi) const {
   if (is_delta() || wo.z == 0 || wi.z == 0) return 0;
   Vector3f o = upper(wo), i = upper(wi);
   Vector3f h = normalize(o + i);
-  float fresnel = fresnel_dielectric(dot(o, h), ior);
+  float fresnel = shading::fresnel_dielectric(dot(o, h), ior);
   float reflection_pdf = distribution.visible_D(o, h) / (4 * dot(o, h));
   return reflection_pdf * (same_hemisphere(wo, wi) ? fresnel : 1 - fresnel);
 }
@@ -41,7 +42,7 @@ std::optional<BsdfSample> ThinDielectricBsdf::sample(Vector3f wo, float uc, Poin
   const float side = wo.z > 0 ? 1.f : -1.f;
   Vector3f o = upper(wo);
   if (is_delta()) {
-    float r = fresnel_dielectric(o.z, ior), t = 1 - r;
+    float r = shading::fresnel_dielectric(o.z, ior), t = 1 - r;
     if (uc < r)
       return BsdfSample{.f = Rgb(r / o.z), .wi = {-wo.x, -wo.y, wo.z}, .pdf = r, .is_delta = true};
     return BsdfSample{.f = transmittance * (t / o.z),
@@ -53,7 +54,7 @@ std::optional<BsdfSample> ThinDielectricBsdf::sample(Vector3f wo, float uc, Poin
   Vector3f h = distribution.sample_visible_normal(o, u);
   Vector3f i = reflect(o, h);
   if (i.z <= 0) return std::nullopt;
-  bool transmission = uc >= fresnel_dielectric(dot(o, h), ior);
+  bool transmission = uc >= shading::fresnel_dielectric(dot(o, h), ior);
   Vector3f wi(i.x, i.y, (transmission ? -side : side) * i.z);
   float p = pdf(wo, wi);
   if (p <= 0) return std::nullopt;

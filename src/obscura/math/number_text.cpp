@@ -1,4 +1,4 @@
-#include "obscura/camera/number_text.h"
+#include "obscura/math/number_text.h"
 
 #include <cstdio>
 

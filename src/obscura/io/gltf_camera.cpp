@@ -1,12 +1,12 @@
-#include "obscura/camera/gltf_camera.h"
+#include "obscura/io/gltf_camera.h"
 
 #include <algorithm>
 #include <cmath>
 #include <numbers>
 #include <string>
 
-#include "obscura/camera/number_text.h"
 #include "obscura/math/error.h"
+#include "obscura/math/number_text.h"
 
 namespace obscura {
 

@@ -1,4 +1,4 @@
-#include "obscura/raster/depth_test.h"
+#include "obscura/raster/draw_modes.h"
 
 #include "obscura/math/error.h"
 

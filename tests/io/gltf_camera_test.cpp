@@ -1,6 +1,6 @@
 // glTF cameras: the projection matrices the glTF 2.0 specification writes out (Appendix:
 // projection matrices), and Blender's equivalent settings.
-#include "obscura/camera/gltf_camera.h"
+#include "obscura/io/gltf_camera.h"
 
 #include <cmath>
 #include <cstring>

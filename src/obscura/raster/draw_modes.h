@@ -1,4 +1,5 @@
-// Depth test, face culling and blending settings of a draw call.
+// The modes a draw call is set to: depth comparison, face culling, front-face winding and
+// blending (the values DrawState in pipeline.h holds, and their parsers).
 #pragma once
 
 #include <cstdint>
