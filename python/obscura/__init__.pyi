@@ -70,7 +70,7 @@ class Camera:
                 up: Vec3 = (0, 1, 0), near: Optional[float] = None,
                 far: Optional[float] = None, exposure_ev: float = 0.0) -> Camera: ...
     @staticmethod
-    def calibrated(K: ArrayLike, distortion: str = "opencv",
+    def calibrated(K: ArrayLike, distortion: str = "none",
                    coefficients: Sequence[float] = (),
                    calibration_size: Optional[Tuple[int, int]] = None,
                    max_field_angle: float = 0.0, width: int = 512, height: int = 512,

@@ -215,22 +215,28 @@ void bind_camera(py::module_& m) {
         if (calibration_size)
           std::tie(c.width_px, c.height_px) =
               std::pair((*calibration_size)[0], (*calibration_size)[1]);
-        try {
-          c.lens = lens_model_from_coefficients(distortion, coefficients);
-        } catch (const Error& e) {
-          throw py::value_error(std::string("distortion: ") + e.what());
+        if (distortion == "none") {
+          if (!coefficients.empty())
+            throw py::value_error("distortion 'none' takes no coefficients");
+        } else {
+          try {
+            c.lens = lens_model_from_coefficients(distortion, coefficients);
+          } catch (const Error& e) {
+            throw py::value_error(std::string("distortion: ") + e.what());
+          }
         }
         c.max_field_angle_degrees = max_field_angle;
         Camera camera;
         camera.projection = c;
         return placed(camera, {width, height, position, look_at, up, near_m, far_m, exposure_ev});
       },
-      py::arg("K"), py::arg("distortion") = "opencv",
-      py::arg("coefficients") = std::vector<double>{}, py::arg("calibration_size") = py::none(),
-      py::arg("max_field_angle") = 0.0, OBSCURA_PLACEMENT_ARGS,
+      py::arg("K"), py::arg("distortion") = "none", py::arg("coefficients") = std::vector<double>{},
+      py::arg("calibration_size") = py::none(), py::arg("max_field_angle") = 0.0,
+      OBSCURA_PLACEMENT_ARGS,
       (std::string("A calibrated camera: K (3x3, OpenCV's pixel convention) for an image of "
                    "calibration_size (width, height; default the film's) and a lens model: "
-                   "distortion 'opencv' (4, 5, 8, 12 or 14 coefficients), 'kannala-brandt' (4), "
+                   "distortion 'none' (a pinhole), 'opencv' (4, 5, 8, 12 or 14 coefficients), "
+                   "'kannala-brandt' (4), "
                    "'ftheta' (1-6), 'equidistant', 'equisolid', 'stereographic', "
                    "'orthographic-fisheye' (none). max_field_angle (degrees from the axis, 0: "
                    "the model's limit).") +
