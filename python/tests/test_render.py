@@ -124,6 +124,28 @@ def test_ctrl_c_raises_keyboard_interrupt_with_the_partial_image(interrupt):
     assert stopped.result.samples_per_pixel < 1 << 20
 
 
+def test_other_python_threads_run_while_rendering():
+    # The GIL is released while the renderer works: a Python thread keeps counting meanwhile.
+    scene, camera = small_scene_camera(96, 96)
+    count, stop = [0], threading.Event()
+
+    def spin():
+        while not stop.is_set():
+            count[0] += 1
+
+    spinner = threading.Thread(target=spin)
+    spinner.start()
+    try:
+        before = count[0]
+        result = obscura.render(scene, camera, spp=64, threads=1)
+        during = count[0] - before
+    finally:
+        stop.set()
+        spinner.join()
+    assert result.seconds > 0.2
+    assert during > 1000
+
+
 def test_time_limit_ends_early_and_says_so():
     scene, camera = small_scene_camera(64, 64)
     result = obscura.render(scene, camera, spp=1 << 20, time_limit=0.5)
