@@ -114,7 +114,9 @@ def test_fov_matches_the_cli(cli):
     out = cli("camera", "cornell-box").stdout
     camera = obscura.load_scene("cornell-box").camera
     h, v = camera.fov_degrees
-    assert f"{h:.6g}" in out and f"{v:.6g}" in out
+    assert f"{h:.6g}° horizontal, {v:.6g}° vertical" in out
+    k = camera.K
+    assert f"K (OpenCV)      [{k[0, 0]:.6g} {k[0, 1]:.6g} {k[0, 2]:.6g}; 0 {k[1, 1]:.6g} {k[1, 2]:.6g}; 0 0 1]" in out
 
 
 @pytest.mark.parametrize(
