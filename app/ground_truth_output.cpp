@@ -51,14 +51,16 @@ void check_ground_truth_output(const GroundTruthOptions& options, const std::str
   check_not_an_input(options.path, scene.input_files);
 }
 
-std::string write_ground_truth_file(const GroundTruthOptions& options, const std::string& renderer,
+std::string write_ground_truth_file(const GroundTruthOptions& options, Renderer renderer,
                                     const RasterOptions& raster, const Scene& scene) {
   const Camera& camera = scene.camera;
   const GroundTruthTimes times = ground_truth_times(options, camera);
   const SurfaceMotion motion(scene);
   std::optional<GroundTruthBuffer> buffer;
-  if (renderer == "raster") {
-    raster::RasterSettings settings = raster_settings(raster, true);
+  if (renderer == Renderer::kRaster) {
+    raster::RenderSettings render_settings;
+    apply_raster_options(raster, render_settings);
+    raster::RasterSettings settings = raster::rasterizer_settings(render_settings, true);
     settings.msaa_samples = 1;     // visibility at the pixel centre
     settings.shadow_map_size = 0;  // shading plays no part
     const raster::SceneRasterizer rasterizer(scene, settings);
