@@ -9,6 +9,7 @@
 #include <pybind11/stl.h>
 #include <tbb/global_control.h>
 
+#include <algorithm>
 #include <chrono>
 #include <condition_variable>
 #include <exception>
@@ -86,12 +87,18 @@ RenderResult render_frame_py(const Scene& scene, std::optional<Camera> camera,
                              const std::string& renderer, int spp,
                              const std::vector<std::string>& aov_names, int threads, uint64_t seed,
                              const std::string& sampler, int max_depth, double time_limit,
-                             const py::object& progress) {
+                             const py::object& progress, int msaa, const std::string& shading,
+                             bool cull, bool wireframe, int shadow_map,
+                             const std::string& raster_dof, int raster_samples) {
   static const std::set<std::string> known{"albedo", "normal", "depth", "id"};
   for (const std::string& name : aov_names)
     if (!known.count(name))
       throw py::value_error("aovs: unknown AOV '" + name +
                             "'; expected 'albedo', 'normal', 'depth' or 'id'");
+  if (renderer == "raster" && std::count(aov_names.begin(), aov_names.end(), "albedo"))
+    throw py::value_error(
+        "aovs: the rasterizer has no 'albedo' AOV (it has 'normal', 'depth' "
+        "and 'id'); the tracer's renderers have all four");
   if (threads < 0)
     throw py::value_error("threads: expected 0 (all cores) or a positive count, got " +
                           std::to_string(threads));
@@ -103,7 +110,14 @@ RenderResult render_frame_py(const Scene& scene, std::optional<Camera> camera,
                         .sampler = sampler,
                         .max_depth = max_depth,
                         .time_limit_s = time_limit,
-                        .aovs = !aov_names.empty()};
+                        .aovs = !aov_names.empty(),
+                        .msaa = msaa,
+                        .shading = shading,
+                        .cull = cull,
+                        .wireframe = wireframe,
+                        .shadow_map = shadow_map,
+                        .raster_dof = raster_dof,
+                        .raster_samples = raster_samples};
 
   // As `obscura render --threads`: a limit on TBB's pool for the render's duration.
   std::optional<tbb::global_control> thread_limit;
@@ -203,16 +217,24 @@ void bind_render(py::module_& m) {
         py::arg("renderer") = "path", py::arg("spp") = 16,
         py::arg("aovs") = std::vector<std::string>{}, py::arg("threads") = 0, py::arg("seed") = 0,
         py::arg("sampler") = "sobol", py::arg("max_depth") = 0, py::arg("time_limit") = 0.0,
-        py::arg("progress") = py::none(),
+        py::arg("progress") = py::none(), py::arg("msaa") = 1, py::arg("shading") = "phong",
+        py::arg("cull") = false, py::arg("wireframe") = false, py::arg("shadow_map") = 1024,
+        py::arg("raster_dof") = "accumulate", py::arg("raster_samples") = 32,
         "Renders `camera` (default: the scene's camera) over `scene` and returns a "
         "RenderResult whose .image is float32 (H, W, 3) linear RGB without a copy of the film. "
         "renderer: 'path', 'whitted', 'direct' or 'raster'; spp: samples per pixel; aovs: any "
-        "of 'albedo', 'normal', 'depth', 'id'; threads: 0 = all cores (the image is the same "
+        "of 'albedo' (tracer only), 'normal', 'depth', 'id'; threads: 0 = all cores (the image is "
+        "the same "
         "for any count); seed, sampler ('sobol', 'independent'), max_depth (0: the renderer's "
         "default), time_limit (seconds, 0: none) as on `obscura render`. progress(done, total) "
         "is called from this thread as passes complete; raising from it stops the render and "
         "re-raises. The GIL is released while rendering. Ctrl-C stops the render and raises "
-        "obscura.RenderInterrupted (a KeyboardInterrupt) with .image and .aovs so far.");
+        "obscura.RenderInterrupted (a KeyboardInterrupt) with .image and .aovs so far. "
+        "The rasterizer's options, as on `obscura render --renderer raster`: msaa (1, 4, 8), "
+        "shading ('flat', 'gouraud', 'phong', 'blinn-phong'), cull, wireframe, shadow_map "
+        "(texels, 0: none), raster_dof ('off', 'accumulate', 'post') and raster_samples "
+        "(frames accumulated for depth of field and motion blur). Every renderer goes through "
+        "the library's render_frame, as the CLI does.");
 }
 
 }  // namespace obscura::python

@@ -21,11 +21,18 @@ struct RenderRequest {
   int max_depth = 0;              // 0: the integrator's default
   double time_limit_s = 0;        // 0: none
   bool aovs = false;
+  // The rasterizer's options, as `obscura render --renderer raster` names them.
+  int msaa = 1;                           // 1, 4 or 8
+  std::string shading = "phong";          // flat | gouraud | phong | blinn-phong
+  bool cull = false, wireframe = false;   // back-face culling; edges over the image
+  int shadow_map = 1024;                  // texels per side, 0: no shadows
+  std::string raster_dof = "accumulate";  // off | accumulate | post
+  int raster_samples = 32;                // frames accumulated for depth of field, motion blur
 };
 
 struct RenderOutcome {
   Image image;                     // linear RGB, the camera's crop size
-  std::optional<AovBuffers> aovs;  // when asked for
+  std::optional<AovBuffers> aovs;  // when asked for (the rasterizer's have no albedo)
   double seconds = 0, rays = 0;
   int done = 0, requested = 0;  // samples per pixel (tracer) or frames (rasterizer)
   bool cancelled = false, time_limited = false;

@@ -18,7 +18,7 @@ def small_scene_camera(width=48, height=36):
     return scene, camera
 
 
-@pytest.mark.parametrize("renderer", ["path", "direct", "whitted"])
+@pytest.mark.parametrize("renderer", ["path", "direct", "whitted", "raster"])
 def test_render_is_bit_identical_to_the_cli(cli, tmp_path, renderer):
     out = tmp_path / "cli.exr"
     cli("render", "cornell-box", "--renderer", renderer, "--width", 48, "--height", 36,
@@ -34,6 +34,25 @@ def test_render_is_bit_identical_to_the_cli(cli, tmp_path, renderer):
     assert from_cli.shape == (36, 48, 3)
     assert np.array_equal(from_python, from_cli)
     assert np.array_equal(result.image, from_cli)  # the film has no NaN, so nothing was altered
+
+
+def test_raster_options_and_aovs_match_the_cli(cli, tmp_path):
+    out = tmp_path / "cli.exr"
+    cli("render", "cornell-box", "--renderer", "raster", "--width", 40, "--height", 30, "--msaa", 4,
+        "--shading", "flat", "--shadow-map", 256, "--aovs", "-q", "-o", out)
+    scene, camera = small_scene_camera(40, 30)
+    result = obscura.render(scene, camera, renderer="raster", msaa=4, shading="flat",
+                            shadow_map=256, aovs=["depth", "id", "normal"])
+    assert np.array_equal(result.image, obscura.read_exr(str(out))[0])
+    for name in ("depth", "id", "normal"):
+        written = sorted(tmp_path.glob(f"*{name}*.exr"))
+        assert written, f"the CLI wrote no {name} AOV"
+        from_cli = obscura.read_exr(str(written[0]))[0]
+        # Image files get 0 where a value is not finite (depth: +inf where nothing was hit).
+        mine = np.where(np.isfinite(result.aovs[name]), result.aovs[name], 0)
+        assert np.array_equal(mine, from_cli), name
+    with pytest.raises(ValueError, match="albedo"):
+        obscura.render(scene, camera, renderer="raster", aovs=["albedo"])
 
 
 def test_image_and_aovs_share_the_renderers_memory():
@@ -169,6 +188,9 @@ def test_thread_count_does_not_change_the_image():
         ({"threads": -1}, ValueError),
         ({"sampler": "halton"}, obscura.Error),
         ({"progress": 3}, TypeError),
+        ({"renderer": "raster", "shading": "toon"}, obscura.Error),
+        ({"renderer": "raster", "raster_dof": "blur"}, obscura.Error),
+        ({"renderer": "raster", "msaa": 3}, obscura.Error),
     ],
 )
 def test_bad_render_arguments_raise(kwargs, error):
