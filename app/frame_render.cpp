@@ -6,13 +6,12 @@
 #include "image_limit_option.h"
 #include "obscura/film/aov_buffers.h"
 #include "obscura/film/film.h"
+#include "obscura/io/aov_files.h"
 #include "obscura/io/default_environment.h"
 #include "obscura/io/image_io.h"
 #include "obscura/io/scene_loader.h"
-#include "obscura/raster/binner.h"
 #include "obscura/raster/ground_truth_render.h"
 #include "obscura/scene/material_variants.h"
-#include "obscura/trace/render.h"
 #include "option_ranges.h"
 #include "usage_error.h"
 
@@ -49,59 +48,6 @@ void validate(const RenderOptions& o) {
                      std::to_string(o.environment_intensity));
 }
 
-constexpr int kTracerTileSize = 16;  // RenderSettings' default
-
-RenderedFrame render_with_rasterizer(const Scene& scene, const RenderOptions& options,
-                                     const WorkShare& share, const ProgressCallback& progress,
-                                     Film& film) {
-  const bool effects = wants_raster_effects(options.raster_effects, scene);
-  RasterRender r = effects ? render_raster_effects(scene, options.raster, options.raster_effects,
-                                                   options.tracer.aovs, options.seed, film,
-                                                   progress, &InterruptGuard::requested(),
-                                                   options.tracer.time_limit_s, share)
-                           : render_raster(scene, options.raster, options.tracer.aovs, film, share);
-  RenderedFrame frame;
-  frame.aovs = std::move(r.aovs);
-  frame.post_dof_depth = std::move(r.post_dof_depth);
-  frame.progress = r.progress;
-  frame.warnings = std::move(r.warnings);
-  frame.seconds = r.seconds;
-  return frame;
-}
-
-RenderedFrame render_with_tracer(const Scene& scene, const RenderOptions& options,
-                                 const WorkShare& share, const ProgressCallback& progress,
-                                 Film& film) {
-  auto device = std::make_shared<EmbreeDevice>();
-  TraceScene trace_scene(scene, device);
-  const int requested_spp = samples_per_pixel(options.tracer, options.spp);
-  RenderSettings settings{.samples_per_pixel = requested_spp,
-                          .seed = options.seed,
-                          .sampler = sampler_type(options.tracer),
-                          .tile_size = kTracerTileSize,
-                          .time_limit_s = options.tracer.time_limit_s,
-                          .cancel = &InterruptGuard::requested(),
-                          .share = share};
-  std::optional<AovBuffers> aovs;
-  if (options.tracer.aovs) aovs.emplace(film.width(), film.height());
-  RenderStats stats = render(trace_scene, scene.camera, *make_integrator(options.tracer), settings,
-                             film, progress, aovs ? &*aovs : nullptr);
-  // Without --spp, a time limit asks for as many samples as fit: reaching it completes the render.
-  const bool open_ended = requested_spp != options.spp;
-  RenderedFrame frame;
-  frame.progress = {.end = stats.cancelled                ? RenderEnd::kInterrupted
-                           : stats.partial && !open_ended ? RenderEnd::kTimeLimit
-                                                          : RenderEnd::kComplete,
-                    .done = stats.samples_per_pixel,
-                    .requested = requested_spp,
-                    .unit = "samples per pixel"};
-  frame.time_limit_reached = open_ended && stats.partial && !stats.cancelled;
-  frame.seconds = stats.seconds;
-  frame.rays = double(stats.rays.total());
-  if (aovs) frame.aovs = tracer_aov_images(*aovs);
-  return frame;
-}
-
 }  // namespace
 
 Scene prepare_scene(RenderOptions& options, bool writes_output) {
@@ -122,7 +68,8 @@ Scene prepare_scene(RenderOptions& options, bool writes_output) {
   if (writes_output) {
     check_not_an_input(options.output, scene.input_files);
     if (options.tracer.aovs)
-      for (const std::string& aov : aov_paths(options.output, options.tracer.renderer))
+      for (const std::string& aov :
+           aov_paths(options.output, renders_albedo(options.tracer.renderer)))
         check_not_an_input(aov, scene.input_files);
   }
   apply_scene_settings(scene.render, options);
@@ -133,28 +80,55 @@ Scene prepare_scene(RenderOptions& options, bool writes_output) {
   if (!options.ground_truth.path.empty() || options.ground_truth.flow_times) {
     ground_truth_times(options.ground_truth, scene.camera);  // a bad value fails here, early
     if (writes_output) check_ground_truth_output(options.ground_truth, options.output, scene);
-    if (!options.ground_truth.path.empty() && options.tracer.renderer == "raster")
+    if (!options.ground_truth.path.empty() && options.tracer.renderer == Renderer::kRaster)
       raster::check_ground_truth_camera(scene.camera);  // before rendering, not after
   }
   return scene;
 }
 
-TileDeal tile_deal(const std::string& renderer, int width, int height, int parts) {
-  return {.width = width,
-          .height = height,
-          .tile_size = renderer == "raster" ? raster::kTileSize : kTracerTileSize,
-          .parts = parts};
+TileDeal tile_deal(Renderer renderer, int width, int height, int parts) {
+  return {.width = width, .height = height, .tile_size = tile_size(renderer), .parts = parts};
+}
+
+FrameSettings frame_settings(const RenderOptions& options, const WorkShare& share) {
+  FrameSettings settings{.renderer = options.tracer.renderer,
+                         .samples_per_pixel = samples_per_pixel(options.tracer, options.spp),
+                         .seed = options.seed,
+                         .sampler = sampler_type(options.tracer),
+                         .max_depth = max_depth(options.tracer),
+                         .time_limit_s = options.tracer.time_limit_s,
+                         .cancel = &InterruptGuard::requested(),
+                         .share = share};
+  apply_raster_options(options.raster, settings.raster);
+  apply_raster_effects_options(options.raster_effects, settings.raster);
+  return settings;
 }
 
 RenderedFrame render_frame(const Scene& scene, const RenderOptions& options, const WorkShare& share,
                            const ProgressCallback& progress) {
+  const FrameSettings settings = frame_settings(options, share);
   Bounds2i crop = scene.camera.film.crop_pixels();
   Film film(crop.width(), crop.height());
-  RenderedFrame frame = options.tracer.renderer == "raster"
-                            ? render_with_rasterizer(scene, options, share, progress, film)
-                            : render_with_tracer(scene, options, share, progress, film);
-  frame.renderer = options.tracer.renderer;
+  RenderedFrame frame;
+  if (options.tracer.aovs) frame.aovs.emplace(film.width(), film.height());
+  FrameStats stats = obscura::render_frame(scene, scene.camera, settings, film,
+                                           frame.aovs ? &*frame.aovs : nullptr, progress);
+  // Without --spp, a time limit asks the tracer for as many samples as fit: reaching it
+  // completes the render.
+  const bool open_ended = is_tracer(settings.renderer) && settings.samples_per_pixel != options.spp;
+  frame.renderer = settings.renderer;
   frame.film_sums = film.sums();
+  frame.post_dof_depth = std::move(stats.post_dof_depth);
+  frame.progress = {.end = stats.cancelled                     ? RenderEnd::kInterrupted
+                           : stats.time_limited && !open_ended ? RenderEnd::kTimeLimit
+                                                               : RenderEnd::kComplete,
+                    .done = stats.done,
+                    .requested = stats.requested,
+                    .unit = is_tracer(settings.renderer) ? "samples per pixel" : "frames"};
+  frame.time_limit_reached = open_ended && stats.time_limited;
+  frame.warnings = std::move(stats.warnings);
+  frame.seconds = stats.seconds;
+  frame.rays = stats.rays;
   return frame;
 }
 
@@ -163,13 +137,17 @@ void gather_frame(Team& team, RenderedFrame& frame) {
   const TileDeal deal =
       tile_deal(frame.renderer, frame.film_sums.width, frame.film_sums.height, team.size());
   team.gather(deal, frame.film_sums);
-  for (NamedImage& aov : frame.aovs) team.gather(deal, aov.image);
+  if (frame.aovs) {
+    std::vector<AovImage> images = frame.aovs->images();
+    for (AovImage& aov : images) team.gather(deal, aov.image);
+    frame.aovs = AovBuffers::from_images(images);
+  }
   if (frame.post_dof_depth) team.gather(deal, *frame.post_dof_depth);
 }
 
 Image finished_image(const RenderedFrame& frame, const Camera& camera) {
   Film film = Film::from_sums(frame.film_sums);
-  if (frame.post_dof_depth) apply_depth_of_field_post(film, *frame.post_dof_depth, camera);
+  if (frame.post_dof_depth) raster::apply_depth_of_field_post(film, *frame.post_dof_depth, camera);
   return film.to_image();
 }
 
@@ -181,9 +159,10 @@ void write_frame(const RenderOptions& options, const std::string& output,
                options.quiet);
   warn_if_unmarked(output, frame.progress, options.quiet);
   std::printf("%s\n", output.c_str());
-  for (const std::string& path :
-       write_aov_images(output, frame.aovs, partial_metadata(frame.progress)))
-    std::printf("%s\n", path.c_str());
+  if (frame.aovs)
+    for (const std::string& path :
+         write_aovs(output, *frame.aovs, partial_metadata(frame.progress)))
+      std::printf("%s\n", path.c_str());
   set_exit_status(exit_status_for(frame.progress.end));
 }
 

@@ -7,10 +7,11 @@
 #include <string>
 #include <vector>
 
-#include "aov_images.h"
+#include "obscura/film/aov_buffers.h"
 #include "obscura/film/image.h"
 #include "obscura/film/tiles.h"
 #include "obscura/film/work_share.h"
+#include "obscura/render/render_frame.h"
 #include "obscura/scene/scene.h"
 #include "partial_render.h"
 #include "render_options.h"
@@ -19,10 +20,11 @@
 namespace obscura::app {
 
 struct RenderedFrame {
-  std::string renderer;  // path, whitted, direct, raster
-  Image film_sums;       // Film::sums(): Σ w·L and Σ w per pixel
-  std::vector<NamedImage> aovs;
-  std::optional<Image> post_dof_depth;  // rasterizer, --raster-dof post (raster_effects_options.h)
+  Renderer renderer = Renderer::kPath;
+  Image film_sums;  // Film::sums(): Σ w·L and Σ w per pixel
+  std::optional<AovBuffers> aovs;
+  // The rasterizer's --raster-dof post on a frame in parts: applied once it is assembled.
+  std::optional<Image> post_dof_depth;
   RenderProgress progress;
   std::vector<std::string> warnings;
   double seconds = 0;               // this process's
@@ -38,9 +40,13 @@ Scene prepare_scene(RenderOptions& options, bool writes_output);
 
 // How the renderer's tiles are dealt to `parts` parts (the tracer's 16-pixel tiles, the
 // rasterizer's 64-pixel bins).
-TileDeal tile_deal(const std::string& renderer, int width, int height, int parts);
+TileDeal tile_deal(Renderer renderer, int width, int height, int parts);
 
-// Renders the scene with its camera (resolved by the options), the tiles `share` owns.
+// The library's settings for the options (validated by prepare_scene), the tiles `share` owns.
+FrameSettings frame_settings(const RenderOptions& options, const WorkShare& share);
+
+// Renders the scene with its camera (resolved by the options), the tiles `share` owns, through
+// the library's render_frame.
 RenderedFrame render_frame(const Scene& scene, const RenderOptions& options, const WorkShare& share,
                            const ProgressCallback& progress = {});
 

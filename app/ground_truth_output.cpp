@@ -10,10 +10,7 @@
 #include "number_list_option.h"
 #include "obscura/io/ground_truth_file.h"
 #include "obscura/io/image_io.h"
-#include "obscura/raster/ground_truth_render.h"
-#include "obscura/scene/surface_motion.h"
-#include "obscura/trace/ground_truth_render.h"
-#include "obscura/trace/trace_scene.h"
+#include "obscura/render/ground_truth_frame.h"
 #include "usage_error.h"
 
 namespace obscura::app {
@@ -51,28 +48,15 @@ void check_ground_truth_output(const GroundTruthOptions& options, const std::str
   check_not_an_input(options.path, scene.input_files);
 }
 
-std::string write_ground_truth_file(const GroundTruthOptions& options, const std::string& renderer,
+std::string write_ground_truth_file(const GroundTruthOptions& options, Renderer renderer,
                                     const RasterOptions& raster, const Scene& scene) {
   const Camera& camera = scene.camera;
   const GroundTruthTimes times = ground_truth_times(options, camera);
-  const SurfaceMotion motion(scene);
-  std::optional<GroundTruthBuffer> buffer;
-  if (renderer == "raster") {
-    raster::RasterSettings settings = raster_settings(raster, true);
-    settings.msaa_samples = 1;     // visibility at the pixel centre
-    settings.shadow_map_size = 0;  // shading plays no part
-    const raster::SceneRasterizer rasterizer(scene, settings);
-    buffer = raster::render_ground_truth(rasterizer, motion, camera, times);
-  } else {
-    // Motion compiled over an interval holding both times (which may lie outside the shutter).
-    Shutter interval{.open_s = std::min({times.first_s, times.second_s, camera.shutter.open_s}),
-                     .close_s = std::max({times.first_s, times.second_s, camera.shutter.close_s})};
-    TraceSceneOptions trace_options;
-    trace_options.shutter = interval;
-    const TraceScene trace(scene, std::make_shared<EmbreeDevice>(), trace_options);
-    buffer = render_ground_truth(trace, motion, camera, times);
-  }
-  write_ground_truth(options.path, *buffer, camera, times);
+  raster::RenderSettings raster_settings;
+  apply_raster_options(raster, raster_settings);
+  const GroundTruthBuffer buffer =
+      render_ground_truth_frame(scene, camera, renderer, raster_settings, times);
+  write_ground_truth(options.path, buffer, camera, times);
   return options.path;
 }
 

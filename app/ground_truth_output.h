@@ -29,9 +29,9 @@ GroundTruthTimes ground_truth_times(const GroundTruthOptions& options, const Cam
 void check_ground_truth_output(const GroundTruthOptions& options, const std::string& image_output,
                                const Scene& scene);
 
-// Computes the ground truth of `scene` with its camera by `renderer` ("raster" or a tracer
-// integrator's name) and writes it; returns the path.
-std::string write_ground_truth_file(const GroundTruthOptions& options, const std::string& renderer,
+// Computes the ground truth of `scene` with its camera by `renderer` (the rasterizer, or the
+// tracer for any of its integrators) and writes it; returns the path.
+std::string write_ground_truth_file(const GroundTruthOptions& options, Renderer renderer,
                                     const RasterOptions& raster, const Scene& scene);
 
 }  // namespace obscura::app

@@ -10,6 +10,7 @@
 #include "display_options.h"
 #include "image_limit_option.h"
 #include "obscura/color/transfer.h"
+#include "obscura/film/image_metrics.h"
 #include "obscura/io/image_io.h"
 #include "obscura/math/error.h"
 #include "usage_error.h"
@@ -71,27 +72,10 @@ void run_diff(const DiffOptions& o) {
                          std::to_string(b.height) + "x" + std::to_string(b.channels) +
                          " image with " + o.a + " (" + std::to_string(a.width) + "x" +
                          std::to_string(a.height) + "x" + std::to_string(a.channels) + ")");
-  int channels = a.channels;
-  std::vector<double> squared(channels, 0), max_error(channels, 0);
-  std::vector<float> pixel_error(size_t(a.width) * a.height, 0);
-  size_t non_finite = 0;
-  for (size_t p = 0; p < pixel_error.size(); ++p)
-    for (int c = 0; c < channels; ++c) {
-      double d = double(a.data[p * channels + c]) - b.data[p * channels + c];
-      if (!std::isfinite(d)) {
-        ++non_finite;
-        continue;
-      }
-      squared[c] += d * d;
-      max_error[c] = std::max(max_error[c], std::abs(d));
-      pixel_error[p] = std::max(pixel_error[p], float(std::abs(d)));
-    }
-  double pixels = double(pixel_error.size());
-  auto psnr = [](double mse) { return mse > 0 ? 10 * std::log10(1 / mse) : INFINITY; };
-  double total_squared = 0, overall_max = 0;
-  for (int c = 0; c < channels; ++c)
-    total_squared += squared[c], overall_max = std::max(overall_max, max_error[c]);
-  double overall_mse = total_squared / (pixels * channels);
+  const ImageDifference diff = compare_images(a, b);
+  const int channels = diff.channels;
+  const double overall_mse = diff.mse(), overall_max = diff.max_abs_all();
+  const size_t non_finite = diff.non_finite;
 
   auto name = [&](int c) {
     return c < int(a.channel_names.size()) ? a.channel_names[c] : "C" + std::to_string(c);
@@ -105,11 +89,12 @@ void run_diff(const DiffOptions& o) {
   if (o.json) {
     std::printf("{\"width\": %d, \"height\": %d, \"channels\": [", a.width, a.height);
     for (int c = 0; c < channels; ++c) {
-      double mse = squared[c] / pixels;
+      double mse = diff.mse(c);
       std::printf(
           "%s{\"name\": \"%s\", \"mse\": %s, \"rmse\": %s, \"psnr_db\": %s, \"max_abs\": %s}",
           c ? ", " : "", name(c).c_str(), fmt(mse).c_str(), fmt(std::sqrt(mse)).c_str(),
-          std::isinf(psnr(mse)) ? "null" : fmt(psnr(mse)).c_str(), fmt(max_error[c]).c_str());
+          std::isinf(psnr(mse)) ? "null" : fmt(psnr(mse)).c_str(),
+          fmt(diff.max_abs[size_t(c)]).c_str());
     }
     std::printf(
         "], \"mse\": %s, \"rmse\": %s, \"psnr_db\": %s, \"max_abs\": %s, \"non_finite\": %zu}\n",
@@ -119,9 +104,10 @@ void run_diff(const DiffOptions& o) {
   } else {
     std::printf("%-8s %12s %12s %10s %12s\n", "channel", "MSE", "RMSE", "PSNR dB", "max |error|");
     for (int c = 0; c < channels; ++c) {
-      double mse = squared[c] / pixels;
+      double mse = diff.mse(c);
       std::printf("%-8s %12s %12s %10s %12s\n", name(c).c_str(), fmt(mse).c_str(),
-                  fmt(std::sqrt(mse)).c_str(), fmt(psnr(mse)).c_str(), fmt(max_error[c]).c_str());
+                  fmt(std::sqrt(mse)).c_str(), fmt(psnr(mse)).c_str(),
+                  fmt(diff.max_abs[size_t(c)]).c_str());
     }
     std::printf("%-8s %12s %12s %10s %12s\n", "all", fmt(overall_mse).c_str(),
                 fmt(std::sqrt(overall_mse)).c_str(), fmt(psnr(overall_mse)).c_str(),
@@ -132,9 +118,10 @@ void run_diff(const DiffOptions& o) {
   if (!o.heatmap.empty()) {
     // Per pixel: the largest channel error, scaled so that the image's largest error is white.
     Image heat(a.width, a.height, 3);
+    const Image pixel_error = pixel_max_abs_difference(a, b);
     float scale = overall_max > 0 ? float(1 / overall_max) : 0.f;
-    for (size_t p = 0; p < pixel_error.size(); ++p) {
-      Rgb e = heat_color(pixel_error[p] * scale);
+    for (size_t p = 0; p < pixel_error.data.size(); ++p) {
+      Rgb e = heat_color(pixel_error.data[p] * scale);
       for (int k = 0; k < 3; ++k) heat.data[3 * p + k] = decode(TransferFunction::kSrgb, e[k]);
     }
     write_image(o.heatmap, heat);

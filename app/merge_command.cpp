@@ -5,6 +5,7 @@
 
 #include "display_options.h"
 #include "frame_render.h"
+#include "obscura/io/aov_files.h"
 #include "obscura/io/image_io.h"
 #include "shard_file.h"
 
@@ -23,8 +24,8 @@ void run_merge(const MergeOptions& options) {
   std::vector<ShardFile> shards;
   for (const std::string& path : options.parts) shards.push_back(read_shard(path));
   RenderedFrame frame = merge_shards(shards);
-  if (!frame.aovs.empty())
-    for (const std::string& aov : aov_paths(options.render.output, frame.renderer))
+  if (frame.aovs)
+    for (const std::string& aov : aov_paths(options.render.output, frame.aovs->has_albedo()))
       check_not_an_input(aov, options.parts);
   if (!options.render.quiet && frame.progress.partial())
     std::fprintf(stderr, "warning: the parts were stopped early%s\n",

@@ -1,19 +1,15 @@
-// The rasterizer's camera effects on `obscura render --renderer raster`: depth of field by
-// accumulation or as a z-buffer post-process, and motion blur by accumulation whenever the
-// shutter is open and something moves (see docs/raster-effects.md).
+// The options of the rasterizer's camera effects on `obscura render --renderer raster`: depth of
+// field by accumulation or as a z-buffer post-process, and the frames accumulated for it and for
+// motion blur (see docs/raster-effects.md; the composition is raster/render.h's).
 #pragma once
 
-#include <atomic>
-#include <cstdint>
 #include <string>
 #include <vector>
 
 #include <CLI/CLI.hpp>
 
-#include "obscura/film/film.h"
-#include "obscura/film/tiles.h"
-#include "obscura/scene/scene.h"
-#include "raster_options.h"
+#include "obscura/raster/render.h"
+#include "obscura/render/renderer.h"
 
 namespace obscura::app {
 
@@ -25,27 +21,10 @@ struct RasterEffectsOptions {
 
 void add_raster_effects_options(CLI::App& render, RasterEffectsOptions& options);
 // Throws UsageError for a bad value, or for these options given to another renderer.
-void validate(const RasterEffectsOptions& options, const std::string& renderer);
+void validate(const RasterEffectsOptions& options, Renderer renderer);
 
-// Whether the render needs more than one sharp frame at mid-shutter: the camera has depth of
-// field (and --raster-dof is not off), or the shutter is open while the camera or an instance
-// moves.
-// Whether an instance moves or a mesh deforms over the shutter.
-bool scene_moves(const Scene& scene);
-bool wants_raster_effects(const RasterEffectsOptions& options, const Scene& scene);
-
-// Renders `scene` into `film` (the crop's size) with the effects: `samples` frames through
-// jittered lens points and shutter times (one when nothing needs them), drawing the tiles `share`
-// owns. With `aovs`, the id/depth/normal images of the frame nearest mid-shutter, as
-// render_raster gives them; with --raster-dof post, the view depth for the post-process.
-RasterRender render_raster_effects(const Scene& scene, const RasterOptions& raster,
-                                   const RasterEffectsOptions& effects, bool aovs, uint64_t seed,
-                                   Film& film, const ProgressCallback& progress = {},
-                                   const std::atomic<bool>* cancel = nullptr,
-                                   double time_limit_s = 0, const WorkShare& share = {});
-
-// The depth-of-field post-process on a whole frame: `film` blurred by the camera's lens with the
-// view depth of RasterRender::post_dof_depth.
-void apply_depth_of_field_post(Film& film, const Image& view_depth, const Camera& camera);
+// The options' part of the rasterizer's settings (the depth-of-field method, frames accumulated).
+void apply_raster_effects_options(const RasterEffectsOptions& options,
+                                  raster::RenderSettings& settings);
 
 }  // namespace obscura::app

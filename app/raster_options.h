@@ -1,19 +1,14 @@
-// The rasterizer's part of `obscura render --renderer raster`: MSAA, shading, culling, wireframe;
-// and the render itself (scene → SceneRasterizer → film, plus the id/depth/normal outputs).
+// The rasterizer's part of `obscura render --renderer raster`: MSAA, shading, culling, wireframe,
+// shadows. The render itself is the library's (raster/render.h).
 #pragma once
 
-#include <optional>
 #include <string>
 #include <vector>
 
 #include <CLI/CLI.hpp>
 
-#include "aov_images.h"
-#include "obscura/film/film.h"
-#include "obscura/film/work_share.h"
-#include "obscura/raster/scene_rasterizer.h"
-#include "obscura/scene/scene.h"
-#include "partial_render.h"
+#include "obscura/raster/render.h"
+#include "obscura/render/renderer.h"
 
 namespace obscura::app {
 
@@ -28,26 +23,11 @@ struct RasterOptions {
 
 void add_raster_options(CLI::App& render, RasterOptions& options);
 // Throws UsageError for a bad value, or for raster options given to another renderer.
-void validate(const RasterOptions& options, const std::string& renderer);
+void validate(const RasterOptions& options, Renderer renderer);
 // A usage error naming the first of `registered` given on the command line, unless the renderer
 // is the rasterizer.
-void reject_unless_raster(const std::vector<CLI::Option*>& registered, const std::string& renderer);
-raster::RasterSettings raster_settings(const RasterOptions& options, bool aovs);
-
-struct RasterRender {
-  double seconds = 0;            // compiling the scene and drawing the frame(s)
-  std::vector<NamedImage> aovs;  // with aovs: normal, depth, id
-  // --raster-dof post: the view depth the post-process blurs with. It needs the whole frame, so
-  // it is applied once the frame is assembled (apply_depth_of_field_post).
-  std::optional<Image> post_dof_depth;
-  std::vector<std::string> warnings;
-  RenderProgress progress;  // frames drawn of those asked for, and how the render ended
-};
-// Renders one frame of `scene` with its camera into `film` (the crop's size), drawing the tiles
-// `share` owns; with `aovs`, also the normal, depth and id images, as the tracer's.
-RasterRender render_raster(const Scene& scene, const RasterOptions& options, bool aovs, Film& film,
-                           const WorkShare& share = {});
-// The target's normal, depth (distance from the eye) and id images.
-std::vector<NamedImage> raster_aov_images(const raster::RenderTarget& target, const Camera& camera);
+void reject_unless_raster(const std::vector<CLI::Option*>& registered, Renderer renderer);
+// The options' part of the rasterizer's settings (msaa, shading, culling, wireframe, shadows).
+void apply_raster_options(const RasterOptions& options, raster::RenderSettings& settings);
 
 }  // namespace obscura::app

@@ -62,7 +62,7 @@ std::string job_key(const CLI::App& render) {
 // `ranks`: "" alone, else " on N ranks, X MB to rank 0".
 void print_summary(const RenderOptions& options, const Scene& scene, const RenderedFrame& frame,
                    const std::string& ranks, double rays, double seconds) {
-  if (frame.renderer == "raster") {
+  if (frame.renderer == Renderer::kRaster) {
     std::fprintf(stderr, "rendered %s: %dx%d (raster%s) in %s%s\n", scene.name.c_str(),
                  options.width, options.height, ranks.c_str(), format_seconds(seconds).c_str(),
                  partial_note(frame.progress).c_str());
@@ -70,7 +70,7 @@ void print_summary(const RenderOptions& options, const Scene& scene, const Rende
   }
   std::fprintf(stderr, "rendered %s: %dx%d, %lld spp (%s%s) in %s (%.2f Mrays/s)%s\n",
                scene.name.c_str(), options.width, options.height, frame.progress.done,
-               frame.renderer.c_str(), ranks.c_str(), format_seconds(seconds).c_str(),
+               renderer_name(frame.renderer), ranks.c_str(), format_seconds(seconds).c_str(),
                seconds > 0 ? rays / seconds * 1e-6 : 0.0,
                frame.progress.partial()   ? partial_note(frame.progress).c_str()
                : frame.time_limit_reached ? " [time limit reached]"
@@ -90,6 +90,7 @@ void run_render(RenderOptions options, const std::string& job) {
         "--ground-truth writes one frame's file; it does not take --frames (render each "
         "frame with its own --ground-truth file)");
   if (!options.frames.empty()) return run_sequence(options, team);
+  validate(options.tracer);  // the renderer, parsed before the checks below use it
   std::optional<ShardSpec> shard;
   if (!options.shard.empty()) {
     shard = parse_shard(options.shard);
@@ -97,7 +98,7 @@ void run_render(RenderOptions options, const std::string& job) {
       throw UsageError(
           "--shard splits a frame between separate processes; under mpirun the "
           "ranks share the frame already (leave --shard out)");
-    if (options.tracer.renderer == "raster" && options.raster_effects.dof == "post")
+    if (options.tracer.renderer == Renderer::kRaster && options.raster_effects.dof == "post")
       throw UsageError(
           "--shard: --raster-dof post blurs the whole frame, which no part has; "
           "use --raster-dof accumulate, or render the frame in one process or "
@@ -135,7 +136,8 @@ void run_render(RenderOptions options, const std::string& job) {
   }
   // The tracer always shows progress; the rasterizer only when it accumulates several frames.
   const bool bar_wanted =
-      options.tracer.renderer != "raster" || wants_raster_effects(options.raster_effects, scene);
+      is_tracer(options.tracer.renderer) ||
+      raster::wants_effects(scene, scene.camera, frame_settings(options, share).raster);
   ProgressBar bar("render", !speaks || !bar_wanted);
   RenderedFrame frame =
       render_frame(scene, options, share, [&](int done, int total) { bar.update(done, total); });

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <charconv>
 #include <map>
+#include <optional>
 
 #include "obscura/io/image_io.h"
 #include "obscura/math/error.h"
@@ -46,7 +47,7 @@ int int_attribute(const ImageMetadata& m, const std::string& path, const std::st
 }
 
 // The channel names an auxiliary image is stored under: "albedo.R", … (its own names, or numbers).
-std::vector<std::string> stored_channels(const NamedImage& aov) {
+std::vector<std::string> stored_channels(const AovImage& aov) {
   std::vector<std::string> names;
   for (int c = 0; c < aov.image.channels; ++c)
     names.push_back(aov.name + "." +
@@ -57,9 +58,9 @@ std::vector<std::string> stored_channels(const NamedImage& aov) {
 
 // "albedo=R,G,B;depth=Z" ↔ the auxiliary images' names and channels, in order (OpenEXR files
 // keep channels sorted by name, so the order is kept here).
-std::string aov_layout(const std::vector<NamedImage>& aovs) {
+std::string aov_layout(const std::vector<AovImage>& aovs) {
   std::string layout;
-  for (const NamedImage& aov : aovs) {
+  for (const AovImage& aov : aovs) {
     if (!layout.empty()) layout.push_back(';');
     layout.append(aov.name).push_back('=');
     std::vector<std::string> names = stored_channels(aov);
@@ -69,6 +70,10 @@ std::string aov_layout(const std::vector<NamedImage>& aovs) {
     }
   }
   return layout;
+}
+
+std::vector<AovImage> aov_images(const RenderedFrame& frame) {
+  return frame.aovs ? frame.aovs->images() : std::vector<AovImage>();
 }
 
 std::vector<std::string> split(const std::string& text, char separator) {
@@ -100,16 +105,17 @@ ShardSpec parse_shard(const std::string& text) {
 void write_shard(const std::string& path, const RenderedFrame& frame, ShardSpec spec,
                  const std::string& job) {
   const Image& sums = frame.film_sums;
+  const std::vector<AovImage> aovs = aov_images(frame);
   int channels = sums.channels;
-  for (const NamedImage& aov : frame.aovs) channels += aov.image.channels;
+  for (const AovImage& aov : aovs) channels += aov.image.channels;
   Image data(sums.width, sums.height, channels);
   data.channel_names = {"R", "G", "B", "W"};
-  for (const NamedImage& aov : frame.aovs)
+  for (const AovImage& aov : aovs)
     for (const std::string& name : stored_channels(aov)) data.channel_names.push_back(name);
   for (size_t p = 0; p < size_t(sums.width) * sums.height; ++p) {
     float* out = &data.data[p * size_t(channels)];
     out = std::copy_n(&sums.data[p * 4], 4, out);
-    for (const NamedImage& aov : frame.aovs)
+    for (const AovImage& aov : aovs)
       out = std::copy_n(&aov.image.data[p * size_t(aov.image.channels)], aov.image.channels, out);
   }
   const TileDeal deal = tile_deal(frame.renderer, sums.width, sums.height, spec.parts);
@@ -121,9 +127,9 @@ void write_shard(const std::string& path, const RenderedFrame& frame, ShardSpec 
       {"obscura:format", kFormat},
       {"obscura:shard", std::to_string(spec.part) + "/" + std::to_string(spec.parts)},
       {"obscura:tile_size", std::to_string(deal.tile_size)},
-      {"obscura:renderer", frame.renderer},
+      {"obscura:renderer", renderer_name(frame.renderer)},
       {"obscura:job", job},
-      {"obscura:aovs", frame.aovs.empty() ? kNoAovs : aov_layout(frame.aovs)},
+      {"obscura:aovs", aovs.empty() ? kNoAovs : aov_layout(aovs)},
       {"obscura:end", end_name(frame.progress.end)},
       {"obscura:done", std::to_string(frame.progress.done)},
       {"obscura:requested", std::to_string(frame.progress.requested)},
@@ -146,14 +152,15 @@ ShardFile read_shard(const std::string& path) {
   }
   shard.job = attribute(m, path, "obscura:job");
   RenderedFrame& frame = shard.frame;
-  frame.renderer = attribute(m, path, "obscura:renderer");
-  if (frame.renderer != "path" && frame.renderer != "whitted" && frame.renderer != "direct" &&
-      frame.renderer != "raster")
-    throw Error(path, "obscura:renderer: unknown renderer '" + frame.renderer + "'");
+  const std::string renderer = attribute(m, path, "obscura:renderer");
+  if (std::optional<Renderer> parsed = parse_renderer(renderer))
+    frame.renderer = *parsed;
+  else
+    throw Error(path, "obscura:renderer: unknown renderer '" + renderer + "'");
   const int tile_size = int_attribute(m, path, "obscura:tile_size", 1, 1 << 20);
   if (tile_size != tile_deal(frame.renderer, 1, 1, 1).tile_size)
     throw Error(path, "obscura:tile_size: " + std::to_string(tile_size) + " is not the " +
-                          frame.renderer + " renderer's tiles");
+                          renderer + " renderer's tiles");
 
   std::string end = attribute(m, path, "obscura:end");
   frame.progress.end = end == "interrupted"  ? RenderEnd::kInterrupted
@@ -205,13 +212,21 @@ ShardFile read_shard(const std::string& path) {
   frame.film_sums = Image(data.width, data.height, 4);
   frame.film_sums.channel_names = {"R", "G", "B", "W"};
   copy_channels(frame.film_sums.channel_names, frame.film_sums);
+  std::vector<AovImage> images;
   for (const auto& [name, names] : layout) {
-    NamedImage aov{name, Image(data.width, data.height, int(names.size()))};
+    AovImage aov{name, Image(data.width, data.height, int(names.size()))};
     aov.image.channel_names = names;
     std::vector<std::string> stored;
     for (const std::string& channel : names) stored.push_back(name + "." + channel);
     copy_channels(stored, aov.image);
-    frame.aovs.push_back(std::move(aov));
+    images.push_back(std::move(aov));
+  }
+  if (!images.empty()) {
+    try {
+      frame.aovs = AovBuffers::from_images(images);
+    } catch (const Error& e) {
+      throw Error(path, std::string("obscura:aovs: ") + e.what());
+    }
   }
   return shard;
 }
@@ -235,7 +250,7 @@ RenderedFrame merge_shards(const std::vector<ShardFile>& shards) {
     if (s.frame.film_sums.width != first.frame.film_sums.width ||
         s.frame.film_sums.height != first.frame.film_sums.height)
       throw differs("has another size");
-    if (aov_layout(s.frame.aovs) != aov_layout(first.frame.aovs))
+    if (aov_layout(aov_images(s.frame)) != aov_layout(aov_images(first.frame)))
       throw differs("has other auxiliary images");
     if (!by_part.emplace(s.spec.part, &s).second)
       throw Error(s.path, "part " + std::to_string(s.spec.part) + " is given twice (also " +
@@ -249,6 +264,7 @@ RenderedFrame merge_shards(const std::vector<ShardFile>& shards) {
                              " (every part 0 … " + std::to_string(parts - 1) + " is needed once)");
 
   RenderedFrame whole = first.frame;
+  std::vector<AovImage> whole_aovs = aov_images(whole);
   const TileDeal deal =
       tile_deal(whole.renderer, whole.film_sums.width, whole.film_sums.height, parts);
   for (const auto& entry : by_part) {
@@ -261,8 +277,8 @@ RenderedFrame merge_shards(const std::vector<ShardFile>& shards) {
       unpack_owned_pixels(deal, part, pack_owned_pixels(deal, part, from), into);
     };
     take(shard->frame.film_sums, whole.film_sums);
-    for (size_t a = 0; a < whole.aovs.size(); ++a)
-      take(shard->frame.aovs[a].image, whole.aovs[a].image);
+    const std::vector<AovImage> aovs = aov_images(shard->frame);
+    for (size_t a = 0; a < whole_aovs.size(); ++a) take(aovs[a].image, whole_aovs[a].image);
     // The least done and the most severe ending of any part.
     const RenderProgress& p = shard->frame.progress;
     whole.progress.done = std::min(whole.progress.done, p.done);
@@ -270,6 +286,7 @@ RenderedFrame merge_shards(const std::vector<ShardFile>& shards) {
     if (p.done != first.frame.progress.done && whole.progress.end == RenderEnd::kComplete)
       whole.progress.end = RenderEnd::kTimeLimit;
   }
+  if (whole.aovs) whole.aovs = AovBuffers::from_images(whole_aovs);
   return whole;
 }
 

@@ -2,11 +2,9 @@
 
 #include <csignal>
 #include <limits>
+#include <optional>
 
 #include "obscura/io/image_io.h"
-#include "obscura/trace/direct_lighting.h"
-#include "obscura/trace/path_tracer.h"
-#include "obscura/trace/whitted.h"
 #include "option_ranges.h"
 #include "usage_error.h"
 
@@ -25,7 +23,7 @@ extern "C" void on_interrupt(int signal) {
 
 void add_tracer_options(CLI::App& render, TracerOptions& o) {
   render
-      .add_option("--renderer", o.renderer,
+      .add_option("--renderer", o.renderer_text,
                   "path (physically based), whitted, direct, or raster (the rasterizer)")
       ->capture_default_str();
   render.add_option("--sampler", o.sampler, "sobol (Owen-scrambled) or independent")
@@ -45,11 +43,12 @@ void add_tracer_options(CLI::App& render, TracerOptions& o) {
                   "Also write albedo, normal, depth and id images beside the output (.exr)");
 }
 
-void validate(const TracerOptions& o) {
-  if (o.renderer != "path" && o.renderer != "whitted" && o.renderer != "direct" &&
-      o.renderer != "raster")
-    throw UsageError("--renderer must be path, whitted, direct or raster; got '" + o.renderer +
+void validate(TracerOptions& o) {
+  std::optional<Renderer> renderer = parse_renderer(o.renderer_text);
+  if (!renderer)
+    throw UsageError("--renderer must be path, whitted, direct or raster; got '" + o.renderer_text +
                      "'");
+  o.renderer = *renderer;
   if (o.sampler != "sobol" && o.sampler != "independent")
     throw UsageError("--sampler must be sobol or independent; got '" + o.sampler + "'");
   bool depth_given = o.max_depth_option && o.max_depth_option->count() > 0;
@@ -64,14 +63,8 @@ SamplerType sampler_type(const TracerOptions& o) {
   return o.sampler == "independent" ? SamplerType::kIndependent : SamplerType::kSobol;
 }
 
-std::unique_ptr<Integrator> make_integrator(const TracerOptions& o) {
-  bool depth_given = o.max_depth_option && o.max_depth_option->count() > 0;
-  if (o.renderer == "whitted")
-    return std::make_unique<WhittedIntegrator>(
-        WhittedSettings{.max_depth = depth_given ? o.max_depth : WhittedSettings().max_depth});
-  if (o.renderer == "direct") return std::make_unique<DirectLightingIntegrator>();
-  return std::make_unique<PathTracer>(
-      PathTracerSettings{.max_depth = depth_given ? o.max_depth : PathTracerSettings().max_depth});
+int max_depth(const TracerOptions& o) {
+  return o.max_depth_option && o.max_depth_option->count() > 0 ? o.max_depth : 0;
 }
 
 int samples_per_pixel(const TracerOptions& o, int spp) {

@@ -3,7 +3,6 @@
 #pragma once
 
 #include <atomic>
-#include <memory>
 #include <string>
 
 #include <CLI/CLI.hpp>
@@ -11,13 +10,14 @@
 #include "obscura/film/aov_buffers.h"
 #include "obscura/io/image_io.h"
 #include "obscura/math/sampler.h"
-#include "obscura/trace/integrator.h"
+#include "obscura/render/renderer.h"
 
 namespace obscura::app {
 
 struct TracerOptions {
-  std::string renderer = "path";      // path | whitted | direct
-  std::string sampler = "sobol";      // sobol | independent
+  std::string renderer_text = "path";   // --renderer as given: path | whitted | direct | raster
+  Renderer renderer = Renderer::kPath;  // renderer_text, parsed by validate
+  std::string sampler = "sobol";        // sobol | independent
   int max_depth = 65;                 // path: scattering events per path; whitted: recursion depth
   double time_limit_s = 0;            // 0 = none
   bool aovs = false;                  // also write <output>.albedo/.normal/.depth/.id.exr
@@ -26,10 +26,12 @@ struct TracerOptions {
 };
 
 void add_tracer_options(CLI::App& render, TracerOptions& options);
-// Throws UsageError for an unknown renderer or sampler, or a bad depth or time limit.
-void validate(const TracerOptions& options);
+// Parses the renderer; throws UsageError for an unknown renderer or sampler, or a bad depth or
+// time limit.
+void validate(TracerOptions& options);
 SamplerType sampler_type(const TracerOptions& options);
-std::unique_ptr<Integrator> make_integrator(const TracerOptions& options);
+// --max-depth if given, else 0 (the integrator's default).
+int max_depth(const TracerOptions& options);
 // With --time-limit and no --spp, samples are unlimited (until the time is up).
 int samples_per_pixel(const TracerOptions& options, int spp);
 // While alive, SIGINT (Ctrl-C) and SIGTERM (what mpirun passes on to every rank for a Ctrl-C,

@@ -34,6 +34,7 @@
 #include <vector>
 
 #include "../tests/trace/trace_test_scenes.h"
+#include "obscura/film/image_metrics.h"
 #include "obscura/io/image_io.h"
 #include "obscura/io/scene_loader.h"
 #include "obscura/math/rng.h"
@@ -377,12 +378,7 @@ void cornell_path(benchmark::State& state) {
     Film film(128, 128);
     render(trace, camera, PathTracer(), {.samples_per_pixel = int(state.range(0)), .seed = seed++},
            film);
-    double se = 0;
-    for (int y = 0; y < 128; ++y)
-      for (int x = 0; x < 128; ++x)
-        for (int c = 0; c < 3; ++c)
-          se += std::pow(film.pixel({x, y})[c] - reference.at(x, y, c), 2);
-    rmse += std::sqrt(se / (128 * 128 * 3));
+    rmse += obscura::rmse(film.to_image(), reference, 3);
   }
   state.counters["rmse"] = rmse / state.iterations();
 }
@@ -406,12 +402,7 @@ void cornell_equal_time(benchmark::State& state, AreaLightSampling sampling) {
     RenderStats stats = render(trace, camera, PathTracer(),
                                {.samples_per_pixel = int(state.range(0)), .seed = seed++}, film);
     cpu_seconds += double(std::clock() - cpu_start) / CLOCKS_PER_SEC;
-    double se = 0;
-    for (int y = 0; y < 128; ++y)
-      for (int x = 0; x < 128; ++x)
-        for (int c = 0; c < 3; ++c)
-          se += std::pow(film.pixel({x, y})[c] - reference.at(x, y, c), 2);
-    rmse += std::sqrt(se / (128 * 128 * 3));
+    rmse += obscura::rmse(film.to_image(), reference, 3);
     seconds += stats.seconds;
   }
   double n = double(state.iterations());

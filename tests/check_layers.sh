@@ -15,6 +15,7 @@ declare -A allowed=(
   [io]="io scene film color math camera"
   [trace]="trace math color camera scene film shading"
   [raster]="raster math color camera scene film shading"
+  [render]="render math color camera scene shading film io trace raster"
 )
 
 status=0

@@ -8,6 +8,7 @@
 #include <fstream>
 #include <string>
 
+#include "obscura/film/image_metrics.h"
 #include "obscura/io/image_io.h"
 #include "obscura/io/scene_loader.h"
 #include "obscura/trace/path_tracer.h"
@@ -46,21 +47,13 @@ void expect_matches_cycles(const Camera& camera, const std::string& reference_ex
   Image reference = read_image(reference_exr);
   ASSERT_EQ(reference.width, film.width());
   ASSERT_EQ(reference.height, film.height());
-  double se = 0, sum = 0, sum_ref = 0;
-  for (int y = 0; y < film.height(); ++y)
-    for (int x = 0; x < film.width(); ++x)
-      for (int c = 0; c < 3; ++c) {
-        double ours = film.pixel({x, y})[c], ref = reference.at(x, y, c);
-        se += (ours - ref) * (ours - ref);
-        sum += ours, sum_ref += ref;
-      }
-  double n = double(film.width()) * film.height() * 3, rmse = std::sqrt(se / n);
+  const ImageDifference diff = compare_images(film.to_image(), reference, 3);
+  const double n = diff.pixels() * 3, rmse = diff.rmse();
   EXPECT_LT(rmse, 1.5 * cycles_rmse_256spp)
       << "RMSE " << rmse << " vs Cycles' " << cycles_rmse_256spp;
   // The mean of n values each with error ~rmse: a bias beyond 4·rmse/√(n/3) is not noise.
-  double bias = (sum - sum_ref) / n;
-  EXPECT_LT(std::abs(bias), 4 * rmse / std::sqrt(n / 3))
-      << "mean " << sum / n << " vs " << sum_ref / n;
+  const double bias = diff.mean_difference();
+  EXPECT_LT(std::abs(bias), 4 * rmse / std::sqrt(n / 3)) << "mean difference " << bias;
   ::testing::Test::RecordProperty("rmse", std::to_string(rmse));
 }
 
@@ -68,8 +61,9 @@ TEST(CyclesReference, PinholeCornellBox) {
   // data/reference/cornell: 16,384 spp, 128², pinhole at (0, 1, 3.9) looking at (0, 1, 0),
   // 50 mm on a 36 mm-wide sensor (horizontal FOV 39.5978°).
   Camera camera = testing::make_camera({0, 1, 3.9}, {0, 1, 0}, 128, 39.597752709049864);
-  expect_matches_cycles(camera, test::source_path("data/reference/cornell/cornell_ref.exr"),
-                        read_number(test::source_path("data/reference/cornell/cycles_rmse_256spp.txt")));
+  expect_matches_cycles(
+      camera, test::source_path("data/reference/cornell/cornell_ref.exr"),
+      read_number(test::source_path("data/reference/cornell/cycles_rmse_256spp.txt")));
 }
 
 TEST(CyclesReference, ThinLensCornellBox) {

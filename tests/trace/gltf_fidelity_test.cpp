@@ -17,6 +17,7 @@
 #include <variant>
 
 #include "gltf_fidelity_scene.h"
+#include "obscura/film/image_metrics.h"
 #include "obscura/io/default_environment.h"
 #include "obscura/io/image_io.h"
 #include "obscura/trace/path_tracer.h"
@@ -73,21 +74,14 @@ void expect_matches_cycles(const std::string& name, const std::string& model) {
   render(trace_scene, scene.camera, PathTracer({.max_depth = 65}),
          {.samples_per_pixel = kSamples, .seed = 3}, film);
 
-  double se = 0, sum = 0, sum_ref = 0;
-  for (int y = 0; y < kSize; ++y)
-    for (int x = 0; x < kSize; ++x)
-      for (int c = 0; c < 3; ++c) {
-        double ours = film.pixel({x, y})[c], ref = reference.at(x, y, c);
-        se += (ours - ref) * (ours - ref);
-        sum += ours, sum_ref += ref;
-      }
-  double n = double(kSize) * kSize * 3, rmse = std::sqrt(se / n);
+  const ImageDifference diff = compare_images(film.to_image(), reference, 3);
+  const double n = diff.pixels() * 3, rmse = diff.rmse();
   double cycles_rmse = cycles_rmse_256 * std::sqrt(256.0 / kSamples);
   EXPECT_LE(rmse, 1.5 * cycles_rmse) << "RMSE " << rmse << " vs Cycles' " << cycles_rmse;
   // A mean over n values each off by ~rmse: beyond 4·rmse/√(n/3) it is not noise.
-  double bias = (sum - sum_ref) / n;
+  const double bias = diff.mean_difference();
   EXPECT_LT(std::abs(bias), 4 * std::max(rmse, 1e-4) / std::sqrt(n / 3))
-      << "mean " << sum / n << " vs Cycles' " << sum_ref / n;
+      << "mean difference from Cycles " << bias;
   ::testing::Test::RecordProperty("rmse_over_cycles", std::to_string(rmse / cycles_rmse));
 }
 

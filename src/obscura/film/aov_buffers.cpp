@@ -7,7 +7,8 @@
 
 namespace obscura {
 
-AovBuffers::AovBuffers(int width, int height) : width_(width), height_(height) {
+AovBuffers::AovBuffers(int width, int height, bool has_albedo)
+    : width_(width), height_(height), has_albedo_(has_albedo) {
   if (width <= 0 || height <= 0)
     throw Error("AOV buffers", "need a positive size; got " + std::to_string(width) + "x" +
                                    std::to_string(height));
@@ -26,12 +27,26 @@ void AovBuffers::add_sample(Point2i pixel, bool hit, Rgb albedo, Normal3f normal
   if (p.id < 0) p.id = int32_t(id);
 }
 
+void AovBuffers::set_pixel(Point2i pixel, Rgb albedo, Vector3f normal, float depth, int32_t id) {
+  Pixel& p = pixels_[size_t(pixel.y) * width_ + pixel.x];
+  p = Pixel{.albedo = albedo,
+            .normal = normal,
+            .depth = depth,
+            .samples = 1,
+            .hits = 1,
+            .id = id,
+            .resolved = true};
+}
+
 Image AovBuffers::albedo() const {
   Image image(width_, height_, 3);
   for (int y = 0; y < height_; ++y)
     for (int x = 0; x < width_; ++x) {
       const Pixel& p = pixels_[size_t(y) * width_ + x];
-      image.set_rgb(x, y, p.samples > 0 ? p.albedo / float(p.samples) : Rgb());
+      image.set_rgb(x, y,
+                    p.resolved      ? p.albedo
+                    : p.samples > 0 ? p.albedo / float(p.samples)
+                                    : Rgb());
     }
   return image;
 }
@@ -41,9 +56,10 @@ Image AovBuffers::normal() const {
   image.channel_names = {"X", "Y", "Z"};
   for (int y = 0; y < height_; ++y)
     for (int x = 0; x < width_; ++x) {
-      Vector3f n = pixels_[size_t(y) * width_ + x].normal;
+      const Pixel& p = pixels_[size_t(y) * width_ + x];
+      Vector3f n = p.normal;
       float len = length(n);
-      if (len > 0) n = n / len;
+      if (len > 0 && !p.resolved) n = n / len;
       image.set_rgb(x, y, {n.x, n.y, n.z});
     }
   return image;
@@ -55,8 +71,9 @@ Image AovBuffers::depth() const {
   for (int y = 0; y < height_; ++y)
     for (int x = 0; x < width_; ++x) {
       const Pixel& p = pixels_[size_t(y) * width_ + x];
-      image.at(x, y, 0) =
-          p.hits > 0 ? float(p.depth / p.hits) : std::numeric_limits<float>::infinity();
+      image.at(x, y, 0) = p.resolved   ? float(p.depth)
+                          : p.hits > 0 ? float(p.depth / p.hits)
+                                       : std::numeric_limits<float>::infinity();
     }
   return image;
 }
@@ -67,6 +84,48 @@ Image AovBuffers::id() const {
   for (int y = 0; y < height_; ++y)
     for (int x = 0; x < width_; ++x) image.at(x, y, 0) = float(pixels_[size_t(y) * width_ + x].id);
   return image;
+}
+
+std::vector<AovImage> AovBuffers::images() const {
+  std::vector<AovImage> images;
+  if (has_albedo_) images.push_back({"albedo", albedo()});
+  images.push_back({"normal", normal()});
+  images.push_back({"depth", depth()});
+  images.push_back({"id", id()});
+  return images;
+}
+
+AovBuffers AovBuffers::from_images(const std::vector<AovImage>& images) {
+  auto find = [&](const std::string& name, int channels) -> const Image* {
+    const Image* found = nullptr;
+    for (const AovImage& aov : images)
+      if (aov.name == name) found = &aov.image;
+    if (found && found->channels != channels)
+      throw Error("AOV image '" + name + "'", "expected " + std::to_string(channels) +
+                                                  " channels; got " +
+                                                  std::to_string(found->channels));
+    return found;
+  };
+  for (const AovImage& aov : images)
+    if (aov.name != "albedo" && aov.name != "normal" && aov.name != "depth" && aov.name != "id")
+      throw Error("AOV image '" + aov.name + "'", "expected albedo, normal, depth or id");
+  const Image* albedo = find("albedo", 3);
+  const Image* normal = find("normal", 3);
+  const Image* depth = find("depth", 1);
+  const Image* id = find("id", 1);
+  if (!normal || !depth || !id) throw Error("AOV images", "expected normal, depth and id images");
+  const int width = normal->width, height = normal->height;
+  for (const Image* image : {albedo, depth, id})
+    if (image && (image->width != width || image->height != height))
+      throw Error("AOV images", "expected every image of " + std::to_string(width) + "x" +
+                                    std::to_string(height) + " pixels");
+  AovBuffers buffers(width, height, albedo != nullptr);
+  for (int y = 0; y < height; ++y)
+    for (int x = 0; x < width; ++x)
+      buffers.set_pixel({x, y}, albedo ? albedo->rgb(x, y) : Rgb(),
+                        {normal->at(x, y, 0), normal->at(x, y, 1), normal->at(x, y, 2)},
+                        depth->at(x, y, 0), int32_t(id->at(x, y, 0)));
+  return buffers;
 }
 
 }  // namespace obscura

@@ -4,6 +4,7 @@
 #pragma once
 
 #include <cstdint>
+#include <string>
 #include <vector>
 
 #include "obscura/color/rgb.h"
@@ -12,14 +13,29 @@
 
 namespace obscura {
 
+// One AOV as an image, by the name its file carries (render.png → render.<name>.exr).
+struct AovImage {
+  std::string name;  // "albedo", "normal", "depth", "id"
+  Image image;
+};
+
 class AovBuffers {
  public:
-  // Precondition: width > 0 and height > 0.
-  AovBuffers(int width, int height);
+  // Precondition: width > 0 and height > 0. Without `has_albedo` (a renderer that cannot tell a
+  // surface's reflectance), albedo() is black and images() leaves it out.
+  AovBuffers(int width, int height, bool has_albedo = true);
+
+  int width() const { return width_; }
+  int height() const { return height_; }
+  bool has_albedo() const { return has_albedo_; }
 
   // One camera sample: whether it hit, and if so what. Misses count towards the mean (they
   // contribute zero albedo and normal, and no depth).
   void add_sample(Point2i pixel, bool hit, Rgb albedo, Normal3f normal, float depth, uint32_t id);
+  // A pixel's final values, resolved elsewhere (the rasterizer's pixel centre, or another
+  // process's part of the frame): the images return them unchanged, bit for bit. `depth` is +∞
+  // and `id` −1 where nothing was hit.
+  void set_pixel(Point2i pixel, Rgb albedo, Vector3f normal, float depth, int32_t id);
 
   Image albedo() const;  // RGB, the mean reflectance
   Image normal() const;  // RGB = world-space XYZ of the mean normal, renormalized
@@ -28,6 +44,13 @@ class AovBuffers {
   Image id() const;      // one channel "id": the mesh index of the first sample that hit, −1
                          // where none did
 
+  // The images in the order they are written: albedo (if it has one), normal, depth, id. What
+  // gathering a frame's parts (MPI ranks, shard files) moves between processes.
+  std::vector<AovImage> images() const;
+  // The inverse of images(): buffers whose images are exactly `images` (names as images() gives
+  // them, each of one size). Throws obscura::Error for a missing, unknown or misshaped image.
+  static AovBuffers from_images(const std::vector<AovImage>& images);
+
  private:
   struct Pixel {
     Rgb albedo;
@@ -35,8 +58,10 @@ class AovBuffers {
     double depth = 0;
     int samples = 0, hits = 0;
     int32_t id = -1;
+    bool resolved = false;  // set_pixel: the values are final, not sums
   };
   int width_, height_;
+  bool has_albedo_;
   std::vector<Pixel> pixels_;
 };
 

@@ -1,0 +1,19 @@
+// The Python module's parts, one per concept; module.cpp calls each to add its names.
+#pragma once
+#include <pybind11/pybind11.h>
+
+#include "obscura/camera/camera.h"
+
+namespace obscura::python {
+
+namespace py = pybind11;
+
+void bind_errors(py::module_& m);  // obscura.Error, obscura.RenderInterrupted
+void bind_image(py::module_& m);   // read_image, write_image, read_exr
+void bind_color(py::module_& m);   // convert, develop, wavelength and blackbody colours
+void bind_camera(py::module_& m);  // Camera and its constructors
+void bind_camera_math(py::class_<Camera>& camera);  // project, unproject, K, exports
+void bind_scene(py::module_& m);   // Scene, load_scene, built-in scenes, scenes from arrays
+void bind_render(py::module_& m);  // render() and RenderResult
+
+}  // namespace obscura::python

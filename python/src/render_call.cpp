@@ -1,0 +1,101 @@
+#include "render_call.h"
+
+#include "obscura/film/film.h"
+#include "obscura/math/error.h"
+#include "obscura/render/render_frame.h"
+
+namespace obscura::python {
+
+namespace {
+
+SamplerType sampler_named(const std::string& name) {
+  if (name == "sobol") return SamplerType::kSobol;
+  if (name == "independent") return SamplerType::kIndependent;
+  throw Error("sampler", "expected 'sobol' or 'independent', got '" + name + "'");
+}
+
+raster::ShadingMode shading_named(const std::string& name) {
+  if (name == "flat") return raster::ShadingMode::kFlat;
+  if (name == "gouraud") return raster::ShadingMode::kGouraud;
+  if (name == "phong") return raster::ShadingMode::kPhong;
+  if (name == "blinn-phong") return raster::ShadingMode::kBlinnPhong;
+  throw Error("shading",
+              "expected 'flat', 'gouraud', 'phong' or 'blinn-phong', got '" + name + "'");
+}
+
+raster::DepthOfFieldMethod depth_of_field_named(const std::string& name) {
+  if (name == "off") return raster::DepthOfFieldMethod::kOff;
+  if (name == "accumulate") return raster::DepthOfFieldMethod::kAccumulate;
+  if (name == "post") return raster::DepthOfFieldMethod::kPost;
+  throw Error("raster_dof", "expected 'off', 'accumulate' or 'post', got '" + name + "'");
+}
+
+FrameSettings frame_settings(const RenderRequest& r, const std::atomic<bool>* cancel) {
+  std::optional<Renderer> renderer = parse_renderer(r.renderer);
+  if (!renderer)
+    throw Error("renderer",
+                "expected 'path', 'whitted', 'direct' or 'raster', got '" + r.renderer + "'");
+  if (r.samples_per_pixel <= 0 || r.samples_per_pixel > kMaxSamplesPerPixel)
+    throw Error("spp", "expected 1 to " + std::to_string(kMaxSamplesPerPixel) + ", got " +
+                           std::to_string(r.samples_per_pixel));
+  if (!(r.time_limit_s >= 0))
+    throw Error("time_limit", "expected seconds >= 0, got " + std::to_string(r.time_limit_s));
+  FrameSettings s{.renderer = *renderer,
+                  .samples_per_pixel = r.samples_per_pixel,
+                  .seed = r.seed,
+                  .sampler = sampler_named(r.sampler),
+                  .max_depth = r.max_depth,
+                  .time_limit_s = r.time_limit_s,
+                  .cancel = cancel};
+  s.raster.msaa_samples = r.msaa;
+  s.raster.shading = shading_named(r.shading);
+  s.raster.cull_back_faces = r.cull;
+  s.raster.wireframe = r.wireframe;
+  s.raster.shadow_map_size = r.shadow_map;
+  s.raster.depth_of_field = depth_of_field_named(r.raster_dof);
+  s.raster.effect_samples = r.raster_samples;
+  return s;
+}
+
+bool same_exposure(const Camera& a, const Camera& b) {
+  const Shutter sa = a.exposure_interval(), sb = b.exposure_interval();
+  return sa.open_s == sb.open_s && sa.close_s == sb.close_s;
+}
+
+}  // namespace
+
+RenderOutcome render_request(const Scene& scene, const Camera* camera, const RenderRequest& request,
+                             const std::atomic<bool>* cancel, const ProgressCallback& progress) {
+  const FrameSettings settings = frame_settings(request, cancel);
+  const Camera& view = camera ? *camera : scene.camera;
+  view.validate();
+  // The tracer compiles object motion for the scene camera's exposure; a camera exposed over
+  // another interval renders a copy of the scene that holds it (the usual case, the same
+  // shutter, renders the scene as it is).
+  std::optional<Scene> reframed;
+  if (camera && !same_exposure(*camera, scene.camera)) {
+    reframed.emplace(scene);
+    reframed->camera = *camera;
+  }
+  const Scene& framed = reframed ? *reframed : scene;
+  framed.validate();
+
+  const Bounds2i crop = view.film.crop_pixels();
+  Film film(crop.width(), crop.height());
+  RenderOutcome outcome;
+  if (request.aovs) outcome.aovs.emplace(film.width(), film.height());
+  FrameStats stats =
+      render_frame(framed, view, settings, film, outcome.aovs ? &*outcome.aovs : nullptr, progress);
+  outcome.image = film.to_image();
+  outcome.seconds = stats.seconds;
+  outcome.rays = stats.rays;
+  outcome.done = stats.done;
+  outcome.requested = stats.requested;
+  outcome.cancelled = stats.cancelled;
+  outcome.time_limited = stats.time_limited;
+  outcome.warnings = scene.warnings;
+  outcome.warnings.insert(outcome.warnings.end(), stats.warnings.begin(), stats.warnings.end());
+  return outcome;
+}
+
+}  // namespace obscura::python

@@ -1,0 +1,181 @@
+#include "obscura/raster/render.h"
+
+#include <algorithm>
+#include <chrono>
+
+#include "obscura/math/error.h"
+#include "obscura/raster/accumulation.h"
+#include "obscura/raster/depth_of_field_post.h"
+#include "obscura/raster/lens_warp.h"
+#include "obscura/raster/rolling_shutter.h"
+
+namespace obscura::raster {
+
+namespace {
+
+using Clock = std::chrono::steady_clock;
+
+double seconds_since(Clock::time_point start) {
+  return std::chrono::duration<double>(Clock::now() - start).count();
+}
+
+// Fills `aovs` (replaced by buffers without albedo) from the rasterizer's normal, distance and
+// id images.
+void fill_aovs(AovBuffers& aovs, const Image& normal, const Image& distance, const Image& id) {
+  aovs = AovBuffers(normal.width, normal.height, false);
+  for (int y = 0; y < normal.height; ++y)
+    for (int x = 0; x < normal.width; ++x)
+      aovs.set_pixel({x, y}, Rgb(), {normal.at(x, y, 0), normal.at(x, y, 1), normal.at(x, y, 2)},
+                     distance.at(x, y, 0), int32_t(id.at(x, y, 0)));
+}
+
+void fill_aovs(AovBuffers& aovs, const RenderTarget& target, const Camera& camera) {
+  fill_aovs(aovs, normal_image(target), distance_image(target, camera), id_image(target));
+}
+
+// Draws one frame of `camera` (a global shutter) into `film` and returns its AOV images (normal,
+// distance, id) when the rasterizer keeps them: through the camera's matrices, or — for a camera
+// without a projection matrix (calibrated lens, fisheye, panorama) — through pinhole views
+// resampled along its rays (lens_warp.h).
+std::vector<Image> draw_frame(const SceneRasterizer& rasterizer, const Camera& camera, Film& film,
+                              const WorkShare& share, std::vector<std::string>& warnings) {
+  if (!camera.has_projection_matrix()) {
+    LensWarpSettings settings{.part = share.part, .parts = share.parts};
+    LensRender lens = render_through_lens(rasterizer, camera, settings, film);
+    for (const std::string& w : lens.warnings)
+      if (std::find(warnings.begin(), warnings.end(), w) == warnings.end()) warnings.push_back(w);
+    if (!lens.normal) return {};
+    return {std::move(*lens.normal), std::move(*lens.distance), std::move(*lens.id)};
+  }
+  RenderTarget target = rasterizer.make_target(camera);
+  target.set_share(share.part, share.parts);
+  rasterizer.render(camera, film, &target);
+  if (!rasterizer.settings().aovs) return {};
+  return {normal_image(target), distance_image(target, camera), id_image(target)};
+}
+
+// One sharp frame at mid-shutter (or band by band for a rolling shutter).
+RenderStats render_sharp(const Scene& scene, const Camera& camera, const RenderSettings& settings,
+                         Film& film, AovBuffers* aovs) {
+  SceneRasterizer rasterizer(scene, rasterizer_settings(settings, aovs != nullptr));
+  RenderStats stats;
+  stats.warnings = rasterizer.warnings();
+  auto draw = [&](const Camera& c, Film& f) {
+    return draw_frame(rasterizer, c, f, settings.share, stats.warnings);
+  };
+  const bool rolling = camera.shutter.line_time_s > 0;
+  std::vector<Image> images =
+      rolling ? draw_rolling_shutter(camera, rolling_band_count(camera), draw, film)
+              : draw(camera, film);
+  if (rolling)
+    stats.warnings.push_back(
+        "rolling shutter: the rasterizer draws " + std::to_string(rolling_band_count(camera)) +
+        " bands of lines, each at its middle line's time (the tracer times every line)");
+  if ((rolling || !camera.has_projection_matrix()) && has_motion_blur(camera, scene_moves(scene)))
+    stats.warnings.push_back(
+        "the rasterizer draws this " + std::string(projection_name(camera.projection)) + " camera" +
+        (rolling ? " with a rolling shutter" : "") + " without motion blur (the tracer blurs it)");
+  stats.frames = stats.frames_requested = 1;
+  if (aovs && images.size() == 3) fill_aovs(*aovs, images[0], images[1], images[2]);
+  return stats;
+}
+
+// Accumulated frames through jittered lens points and shutter times (one when only the
+// post-process asks for effects), and the post-process's view depth.
+RenderStats render_effects(const Scene& scene, const Camera& camera, const RenderSettings& settings,
+                           Film& film, AovBuffers* aovs, const ProgressCallback& progress) {
+  const bool dof = camera.lens.depth_of_field;
+  const bool post = settings.depth_of_field == DepthOfFieldMethod::kPost && dof;
+  const bool lens_blur = settings.depth_of_field == DepthOfFieldMethod::kAccumulate && dof;
+  // Post-process or no depth of field: one frame, unless something moves (then motion blur).
+  const bool many = lens_blur || has_motion_blur(camera, scene_moves(scene));
+  const bool keep_aovs = aovs != nullptr || post;
+
+  SceneRasterizer rasterizer(scene, rasterizer_settings(settings, keep_aovs));
+  AccumulationSettings accumulation{.samples = many ? settings.effect_samples : 1,
+                                    .seed = settings.seed,
+                                    .msaa_samples = settings.msaa_samples,
+                                    .aovs = keep_aovs,
+                                    .depth_of_field = lens_blur,
+                                    .cancel = settings.cancel,
+                                    .time_limit_s = settings.time_limit_s,
+                                    .share = settings.share};
+  RenderTarget middle = rasterizer.make_target(camera);
+  AccumulationStats accumulated = accumulate(
+      camera, accumulation,
+      [&](const FrameParameters& frame, RenderTarget& target) {
+        rasterizer.render_frame(
+            camera, {frame.sample.time_s, frame.lens.view, frame.lens.projection}, target);
+      },
+      film, progress, &middle);
+
+  RenderStats stats;
+  stats.warnings = rasterizer.warnings();
+  stats.frames = accumulated.frames;
+  stats.frames_requested = accumulation.samples;
+  stats.cancelled = accumulated.cancelled;
+  stats.time_limited = accumulated.time_limited;
+  if (aovs) fill_aovs(*aovs, middle, camera);
+  // The post-process blurs the accumulated (motion-blurred) colour with the depth of the frame
+  // nearest mid-shutter; it needs the whole frame.
+  if (post) stats.post_dof_depth = middle.view_depth_image();
+  return stats;
+}
+
+}  // namespace
+
+RasterSettings rasterizer_settings(const RenderSettings& s, bool aovs) {
+  RasterSettings r;
+  r.msaa_samples = s.msaa_samples;
+  r.shading = s.shading;
+  r.cull_back_faces = s.cull_back_faces;
+  r.wireframe.enabled = s.wireframe;
+  r.aovs = aovs;
+  r.shadow_map_size = s.shadow_map_size;
+  return r;
+}
+
+bool scene_moves(const Scene& scene) {
+  for (const Instance& instance : scene.instances)
+    if (instance.animated() || scene.meshes[instance.mesh].deforms()) return true;
+  return false;
+}
+
+bool wants_effects(const Scene& scene, const Camera& camera, const RenderSettings& settings) {
+  if (!camera.has_projection_matrix() || camera.shutter.line_time_s > 0) return false;
+  const bool lens =
+      camera.lens.depth_of_field && settings.depth_of_field != DepthOfFieldMethod::kOff;
+  return lens || has_motion_blur(camera, scene_moves(scene));
+}
+
+RenderStats render(const Scene& scene, const Camera& camera, const RenderSettings& settings,
+                   Film& film, AovBuffers* aovs, const ProgressCallback& progress) {
+  const auto start = Clock::now();
+  const Bounds2i crop = camera.film.crop_pixels();
+  if (film.width() != crop.width() || film.height() != crop.height())
+    throw Error("raster::render",
+                "the film must have the camera's crop size (" + std::to_string(crop.width()) + "x" +
+                    std::to_string(crop.height()) + "); got " + std::to_string(film.width()) + "x" +
+                    std::to_string(film.height()));
+  if (settings.effect_samples < 1)
+    throw Error("raster::render", "effect_samples must be a positive number of frames; got " +
+                                      std::to_string(settings.effect_samples));
+  RenderStats stats = wants_effects(scene, camera, settings)
+                          ? render_effects(scene, camera, settings, film, aovs, progress)
+                          : render_sharp(scene, camera, settings, film, aovs);
+  if (stats.post_dof_depth && settings.share.parts <= 1) {
+    apply_depth_of_field_post(film, *stats.post_dof_depth, camera);
+    stats.post_dof_depth.reset();
+  }
+  stats.seconds = seconds_since(start);
+  return stats;
+}
+
+void apply_depth_of_field_post(Film& film, const Image& view_depth, const Camera& camera) {
+  Image blurred = depth_of_field_post(film.to_image(), view_depth, camera);
+  film = Film(film.width(), film.height());
+  for (int y = 0; y < film.height(); ++y)
+    for (int x = 0; x < film.width(); ++x) film.add_sample({x, y}, blurred.rgb(x, y));
+}
+
+}  // namespace obscura::raster

@@ -1,0 +1,83 @@
+// The rasterizer's one entry point, beside the tracer's obscura::render (trace/render.h): a scene
+// seen by a camera into a film, with the camera's effects composed as the scene needs them —
+// depth of field by accumulating jittered lens views or as a z-buffer post-process, motion blur
+// by accumulating shutter times whenever the shutter is open and something moves, lens-warped
+// views for cameras without a projection matrix, bands for a rolling shutter (see
+// docs/raster-effects.md).
+#pragma once
+
+#include <atomic>
+#include <cstdint>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "obscura/camera/camera.h"
+#include "obscura/film/aov_buffers.h"
+#include "obscura/film/film.h"
+#include "obscura/film/image.h"
+#include "obscura/film/tiles.h"
+#include "obscura/film/work_share.h"
+#include "obscura/raster/scene_rasterizer.h"
+#include "obscura/scene/scene.h"
+
+namespace obscura::raster {
+
+enum class DepthOfFieldMethod {
+  kOff,         // every frame through the lens centre: sharp (motion blur still accumulates)
+  kAccumulate,  // frames through jittered lens points, averaged
+  kPost,        // one frame blurred by its z-buffer's circle of confusion
+};
+
+struct RenderSettings {
+  int msaa_samples = 1;  // 1, 4 or 8
+  ShadingMode shading = ShadingMode::kPhong;
+  bool cull_back_faces = false;
+  bool wireframe = false;      // triangle edges over the shaded image
+  int shadow_map_size = 1024;  // texels per side; 0: no shadows
+  DepthOfFieldMethod depth_of_field = DepthOfFieldMethod::kAccumulate;
+  int effect_samples = 32;  // frames accumulated for depth of field and motion blur (≥ 1)
+  uint64_t seed = 0;        // the lens points and shutter times of accumulated frames
+  // Stopping an accumulation early (after at least one frame): 0 = no time limit.
+  double time_limit_s = 0;
+  const std::atomic<bool>* cancel = nullptr;
+  // The tiles (of kTileSize) this process draws when several draw the frame together.
+  WorkShare share = {};
+};
+
+struct RenderStats {
+  double seconds = 0;  // compiling the scene and drawing the frame(s)
+  int frames = 0;      // frames drawn (accumulated)
+  int frames_requested = 0;
+  bool cancelled = false;
+  bool time_limited = false;
+  std::vector<std::string> warnings;
+  // Post-process depth of field with a share of a frame: the view depth to blur the whole frame
+  // with once its parts are assembled (apply_depth_of_field_post). Alone, render applies it.
+  std::optional<Image> post_dof_depth;
+};
+
+// The SceneRasterizer's settings for `settings` (with AOV targets if `aovs`).
+RasterSettings rasterizer_settings(const RenderSettings& settings, bool aovs);
+
+// Whether an instance moves or a mesh deforms over the shutter.
+bool scene_moves(const Scene& scene);
+
+// Whether the render accumulates frames or post-processes (rather than drawing one sharp frame
+// at mid-shutter): the camera has depth of field (and the method is not off), or the shutter is
+// open while the camera or an instance moves. Never for cameras drawn through lens views or band
+// by band (drawn sharp; render warns when something moves).
+bool wants_effects(const Scene& scene, const Camera& camera, const RenderSettings& settings);
+
+// Renders `camera` over `scene` into `film` (the camera's crop size) and, if given, `aovs` (the
+// same size): the normal, the distance along the pixel centre's ray and the instance id of the
+// frame nearest mid-shutter. The rasterizer has no albedo: `aovs` is replaced by buffers without
+// one. Throws obscura::Error for invalid settings or a film of another size.
+RenderStats render(const Scene& scene, const Camera& camera, const RenderSettings& settings,
+                   Film& film, AovBuffers* aovs = nullptr, const ProgressCallback& progress = {});
+
+// The depth-of-field post-process on a whole frame: `film` blurred by the camera's lens with the
+// view depth of RenderStats::post_dof_depth.
+void apply_depth_of_field_post(Film& film, const Image& view_depth, const Camera& camera);
+
+}  // namespace obscura::raster

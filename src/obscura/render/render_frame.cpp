@@ -1,0 +1,90 @@
+#include "obscura/render/render_frame.h"
+
+#include <memory>
+#include <string>
+
+#include "obscura/math/error.h"
+#include "obscura/trace/direct_lighting.h"
+#include "obscura/trace/embree_scene.h"
+#include "obscura/trace/path_tracer.h"
+#include "obscura/trace/render.h"
+#include "obscura/trace/trace_scene.h"
+#include "obscura/trace/whitted.h"
+
+namespace obscura {
+
+namespace {
+
+std::unique_ptr<Integrator> make_integrator(Renderer renderer, int max_depth) {
+  switch (renderer) {
+    case Renderer::kWhitted:
+      return std::make_unique<WhittedIntegrator>(
+          WhittedSettings{.max_depth = max_depth > 0 ? max_depth : WhittedSettings().max_depth});
+    case Renderer::kDirect:
+      return std::make_unique<DirectLightingIntegrator>();
+    case Renderer::kPath:
+    case Renderer::kRaster:
+      break;
+  }
+  return std::make_unique<PathTracer>(
+      PathTracerSettings{.max_depth = max_depth > 0 ? max_depth : PathTracerSettings().max_depth});
+}
+
+FrameStats trace_frame(const Scene& scene, const Camera& camera, const FrameSettings& settings,
+                       Film& film, AovBuffers* aovs, const ProgressCallback& progress) {
+  if (settings.samples_per_pixel <= 0)
+    throw Error("render_frame", "samples_per_pixel must be positive; got " +
+                                    std::to_string(settings.samples_per_pixel));
+  if (settings.max_depth < 0)
+    throw Error("render_frame", "max_depth must be 0 (the default) or positive; got " +
+                                    std::to_string(settings.max_depth));
+  auto device = std::make_shared<EmbreeDevice>();
+  TraceScene trace_scene(scene, device);
+  RenderSettings render_settings{.samples_per_pixel = settings.samples_per_pixel,
+                                 .seed = settings.seed,
+                                 .sampler = settings.sampler,
+                                 .tile_size = tile_size(settings.renderer),
+                                 .time_limit_s = settings.time_limit_s,
+                                 .cancel = settings.cancel,
+                                 .share = settings.share};
+  RenderStats stats =
+      render(trace_scene, camera, *make_integrator(settings.renderer, settings.max_depth),
+             render_settings, film, progress, aovs);
+  FrameStats frame;
+  frame.seconds = stats.seconds;
+  frame.rays = double(stats.rays.total());
+  frame.done = stats.samples_per_pixel;
+  frame.requested = settings.samples_per_pixel;
+  frame.cancelled = stats.cancelled;
+  frame.time_limited = stats.partial && !stats.cancelled;
+  return frame;
+}
+
+FrameStats raster_frame(const Scene& scene, const Camera& camera, const FrameSettings& settings,
+                        Film& film, AovBuffers* aovs, const ProgressCallback& progress) {
+  raster::RenderSettings raster_settings = settings.raster;
+  raster_settings.seed = settings.seed;
+  raster_settings.time_limit_s = settings.time_limit_s;
+  raster_settings.cancel = settings.cancel;
+  raster_settings.share = settings.share;
+  raster::RenderStats stats = raster::render(scene, camera, raster_settings, film, aovs, progress);
+  FrameStats frame;
+  frame.seconds = stats.seconds;
+  frame.done = stats.frames;
+  frame.requested = stats.frames_requested;
+  frame.cancelled = stats.cancelled;
+  frame.time_limited = stats.time_limited;
+  frame.warnings = std::move(stats.warnings);
+  frame.post_dof_depth = std::move(stats.post_dof_depth);
+  return frame;
+}
+
+}  // namespace
+
+FrameStats render_frame(const Scene& scene, const Camera& camera, const FrameSettings& settings,
+                        Film& film, AovBuffers* aovs, const ProgressCallback& progress) {
+  return is_tracer(settings.renderer) ? trace_frame(scene, camera, settings, film, aovs, progress)
+                                      : raster_frame(scene, camera, settings, film, aovs, progress);
+}
+
+}  // namespace obscura

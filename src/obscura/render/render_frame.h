@@ -1,0 +1,58 @@
+// One frame by any renderer, through one call: what the command line and the Python module
+// share. The tracer's integrators go through obscura::render (trace/render.h), the rasterizer
+// through raster::render (raster/render.h); this picks and sets them up.
+#pragma once
+
+#include <atomic>
+#include <cstdint>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "obscura/camera/camera.h"
+#include "obscura/film/aov_buffers.h"
+#include "obscura/film/film.h"
+#include "obscura/film/image.h"
+#include "obscura/film/tiles.h"
+#include "obscura/film/work_share.h"
+#include "obscura/math/sampler.h"
+#include "obscura/raster/render.h"
+#include "obscura/render/renderer.h"
+#include "obscura/scene/scene.h"
+
+namespace obscura {
+
+struct FrameSettings {
+  Renderer renderer = Renderer::kPath;
+  int samples_per_pixel = 16;  // tracer: samples per pixel (> 0); the most a time limit takes
+  uint64_t seed = 0;
+  SamplerType sampler = SamplerType::kSobol;
+  int max_depth = 0;        // 0: the integrator's default (path 65, whitted 8); direct ignores it
+  double time_limit_s = 0;  // 0: none
+  const std::atomic<bool>* cancel = nullptr;  // set from another thread to stop early
+  WorkShare share = {};                       // MPI/--shard parts; default alone
+  // The rasterizer's own settings; its seed, time limit, cancel and share are the ones above.
+  raster::RenderSettings raster = {};
+};
+
+struct FrameStats {
+  double seconds = 0;
+  double rays = 0;                               // tracer only
+  int done = 0, requested = 0;                   // samples per pixel (tracer) or frames (raster)
+  bool cancelled = false, time_limited = false;  // partial = cancelled || time_limited
+  std::vector<std::string> warnings;
+  // Only with share.parts > 1 and the rasterizer's post-process depth of field: the caller
+  // applies raster::apply_depth_of_field_post after assembling the frame.
+  std::optional<Image> post_dof_depth;
+
+  bool partial() const { return cancelled || time_limited; }
+};
+
+// Renders `camera` over `scene` into `film` (the camera's crop size) and, if given, `aovs` (same
+// size; the rasterizer replaces them by buffers without albedo). Throws obscura::Error for
+// invalid settings (samples or max depth out of range) or sizes.
+FrameStats render_frame(const Scene& scene, const Camera& camera, const FrameSettings& settings,
+                        Film& film, AovBuffers* aovs = nullptr,
+                        const ProgressCallback& progress = {});
+
+}  // namespace obscura

@@ -1,0 +1,73 @@
+// AovBuffers, the one AOV model: sums of samples (the tracer), resolved pixels (the rasterizer,
+// another process's part), and the images a frame's parts travel as.
+#include "obscura/film/aov_buffers.h"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <limits>
+
+#include "obscura/math/error.h"
+
+namespace obscura {
+namespace {
+
+TEST(AovBuffers, SamplesAreAveragedAndMissesCountAsBlack) {
+  AovBuffers aovs(2, 1);
+  aovs.add_sample({0, 0}, true, Rgb(0.5f), {0, 0, 1}, 2.f, 3);
+  aovs.add_sample({0, 0}, false, Rgb(), {}, 0, 0);
+  EXPECT_FLOAT_EQ(aovs.albedo().at(0, 0, 0), 0.25f);  // (0.5 + 0) / 2
+  EXPECT_FLOAT_EQ(aovs.depth().at(0, 0, 0), 2.f);     // over the hits only
+  EXPECT_FLOAT_EQ(aovs.id().at(0, 0, 0), 3.f);
+  EXPECT_FLOAT_EQ(aovs.normal().at(0, 0, 2), 1.f);  // renormalized
+  EXPECT_TRUE(std::isinf(aovs.depth().at(1, 0, 0)));
+  EXPECT_FLOAT_EQ(aovs.id().at(1, 0, 0), -1.f);
+}
+
+TEST(AovBuffers, ResolvedPixelsComeBackUnchanged) {
+  AovBuffers aovs(1, 1, false);
+  // Not unit length: a resolved normal is not renormalized.
+  aovs.set_pixel({0, 0}, Rgb(), {0.f, 0.6f, 0.79f}, 1.25f, 7);
+  EXPECT_FLOAT_EQ(aovs.normal().at(0, 0, 2), 0.79f);
+  EXPECT_FLOAT_EQ(aovs.depth().at(0, 0, 0), 1.25f);
+  EXPECT_FLOAT_EQ(aovs.id().at(0, 0, 0), 7.f);
+  ASSERT_EQ(aovs.images().size(), 3u);  // no albedo
+  EXPECT_EQ(aovs.images()[0].name, "normal");
+}
+
+TEST(AovBuffers, ImagesRoundTripBitForBit) {
+  AovBuffers aovs(3, 2);
+  aovs.add_sample({0, 0}, true, Rgb(0.3f, 0.2f, 0.1f), {0.1f, 0.2f, 0.97f}, 1.7f, 4);
+  aovs.add_sample({0, 0}, true, Rgb(0.1f, 0.7f, 0.2f), {0.3f, 0.1f, 0.95f}, 1.9f, 5);
+  aovs.add_sample({2, 1}, true, Rgb(0.9f), {1, 0, 0}, 0.3f, 1);
+  const std::vector<AovImage> images = aovs.images();
+  ASSERT_EQ(images.size(), 4u);
+  const std::vector<AovImage> again = AovBuffers::from_images(images).images();
+  ASSERT_EQ(again.size(), images.size());
+  for (size_t i = 0; i < images.size(); ++i) {
+    EXPECT_EQ(again[i].name, images[i].name);
+    for (size_t k = 0; k < images[i].image.data.size(); ++k) {
+      const float a = images[i].image.data[k], b = again[i].image.data[k];
+      EXPECT_TRUE(a == b || (std::isnan(a) && std::isnan(b))) << images[i].name << " " << k;
+    }
+  }
+}
+
+TEST(AovBuffers, MisshapedImagesAreRefused) {
+  AovBuffers aovs(2, 2);
+  std::vector<AovImage> images = aovs.images();
+  images.pop_back();  // no id
+  EXPECT_THROW(AovBuffers::from_images(images), Error);
+  images = aovs.images();
+  images[1].image = Image(2, 2, 1);  // a one-channel normal
+  EXPECT_THROW(AovBuffers::from_images(images), Error);
+  images = aovs.images();
+  images[2].image = Image(3, 2, 1);  // depth of another size
+  EXPECT_THROW(AovBuffers::from_images(images), Error);
+  images = aovs.images();
+  images.push_back({"position", Image(2, 2, 3)});
+  EXPECT_THROW(AovBuffers::from_images(images), Error);
+}
+
+}  // namespace
+}  // namespace obscura
