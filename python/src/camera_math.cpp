@@ -62,10 +62,12 @@ void bind_camera_math(py::class_<Camera>& camera) {
         {
           py::gil_scoped_release release;
           const Camera camera_copy = c;  // no Python object is touched while the GIL is free
+          // The per-call constants (screen window, lens map) once, not per point.
+          const PreparedCamera prepared = camera_copy.prepare();
           tbb::parallel_for(tbb::blocked_range<size_t>(0, n, 1024), [&](const auto& r) {
             for (size_t i = r.begin(); i < r.end(); ++i) {
               std::optional<FilmProjection> fp =
-                  camera_copy.project({p[3 * i], p[3 * i + 1], p[3 * i + 2]}, time);
+                  prepared.project({p[3 * i], p[3 * i + 1], p[3 * i + 2]}, time);
               film[2 * i] = fp ? fp->film_point.x : kNaN;
               film[2 * i + 1] = fp ? fp->film_point.y : kNaN;
               depth[i] = fp ? fp->depth_m : kNaN;
@@ -96,10 +98,11 @@ void bind_camera_math(py::class_<Camera>& camera) {
         {
           py::gil_scoped_release release;
           const Camera camera_copy = c;
+          const PreparedCamera prepared = camera_copy.prepare();
           tbb::parallel_for(tbb::blocked_range<size_t>(0, n, 1024), [&](const auto& r) {
             for (size_t i = r.begin(); i < r.end(); ++i) {
               std::optional<Point3d> w =
-                  camera_copy.unproject({fv[2 * i], fv[2 * i + 1]}, dv[i], time);
+                  prepared.unproject({fv[2 * i], fv[2 * i + 1]}, dv[i], time);
               for (int k = 0; k < 3; ++k) world[3 * i + k] = w ? (*w)[k] : kNaN;
             }
           });
