@@ -52,7 +52,8 @@ void bind_camera_math(py::class_<Camera>& camera) {
   camera.def(
       "project",
       [](const Camera& c, const py::handle& points, double time) {
-        py::array in = checked_points(points, "project(points)", 3);
+        // Finite values are checked in the parallel loop below, not in a serial pass here.
+        py::array in = checked_points(points, "project(points)", 3, /*finite=*/false);
         const size_t n = size_t(in.shape(0));
         const py::ssize_t count = py::ssize_t(n);
         py::array_t<double> film({count, py::ssize_t(2)}), depth(count);
@@ -60,13 +61,16 @@ void bind_camera_math(py::class_<Camera>& camera) {
         double* depth_out = depth.mutable_data();
         const bool is_f32 = in.dtype().is(py::dtype::of<float>());
         const void* world = in.data();  // `in` holds the array while the GIL is free
+        bool finite = true;
         {
           py::gil_scoped_release release;
-          if (is_f32)
-            project_points(c, static_cast<const float*>(world), n, time, film_out, depth_out);
-          else
-            project_points(c, static_cast<const double*>(world), n, time, film_out, depth_out);
+          finite = is_f32 ? project_points(c, static_cast<const float*>(world), n, time, film_out,
+                                           depth_out)
+                          : project_points(c, static_cast<const double*>(world), n, time, film_out,
+                                           depth_out);
         }
+        if (!finite)
+          throw py::value_error("project(points): expected finite values, found NaN or Inf");
         return py::make_tuple(film, depth);
       },
       py::arg("points"), py::arg("time") = 0.0,

@@ -2,6 +2,8 @@
 
 #include <tbb/parallel_for.h>
 
+#include <atomic>
+#include <cmath>
 #include <limits>
 #include <variant>
 
@@ -49,14 +51,18 @@ struct PlanarCamera {
            y <= height_px + kSlackPx;
   }
 
+  // Returns whether every coordinate was finite.
   template <bool kPerspective, typename T>
-  void project(const T* world, size_t begin, size_t end, double* film, double* depth) const {
+  bool project(const T* world, size_t begin, size_t end, double* film, double* depth) const {
+    bool finite = true;
     for (size_t i = begin; i < end; ++i) {
-      const Point3d q =
-          camera_from_world(Point3d(world[3 * i], world[3 * i + 1], world[3 * i + 2]));
+      const Point3d p(world[3 * i], world[3 * i + 1], world[3 * i + 2]);
+      const bool point_finite = std::isfinite(p.x) && std::isfinite(p.y) && std::isfinite(p.z);
+      finite = finite && point_finite;
+      const Point3d q = camera_from_world(p);
       const double d = -q.z;
       double x = kNaN, y = kNaN, z = kNaN;
-      if (d >= near_m && d <= far_m) {
+      if (point_finite && d >= near_m && d <= far_m) {
         const double wx = kPerspective ? q.x / d : q.x, wy = kPerspective ? q.y / d : q.y;
         const double rx = (wx - window.x_min) / window_width * width_px;
         const double ry = (window.y_max - wy) / window_height * height_px;
@@ -64,6 +70,7 @@ struct PlanarCamera {
       }
       film[2 * i] = x, film[2 * i + 1] = y, depth[i] = z;
     }
+    return finite;
   }
 
   template <typename T>
@@ -82,29 +89,35 @@ struct PlanarCamera {
 }  // namespace
 
 template <typename T>
-void project_points(const Camera& camera, const T* world, size_t n, double time_s, double* film,
+bool project_points(const Camera& camera, const T* world, size_t n, double time_s, double* film,
                     double* depth) {
+  std::atomic<bool> finite = true;
   if (camera.has_projection_matrix()) {
     const PlanarCamera planar(camera, time_s);
     for_chunks(n, [&](size_t begin, size_t end) {
-      if (planar.perspective)
-        planar.project<true>(world, begin, end, film, depth);
-      else
-        planar.project<false>(world, begin, end, film, depth);
+      const bool chunk_finite = planar.perspective
+                                    ? planar.project<true>(world, begin, end, film, depth)
+                                    : planar.project<false>(world, begin, end, film, depth);
+      if (!chunk_finite) finite = false;
     });
-    return;
+    return finite;
   }
   // Spherical and calibrated cameras: their per-point trigonometry or lens solve outweighs the
   // pose and the dispatch, so they go through Camera::project itself.
   for_chunks(n, [&](size_t begin, size_t end) {
     for (size_t i = begin; i < end; ++i) {
-      std::optional<FilmProjection> p =
-          camera.project({world[3 * i], world[3 * i + 1], world[3 * i + 2]}, time_s);
-      film[2 * i] = p ? p->film_point.x : kNaN;
-      film[2 * i + 1] = p ? p->film_point.y : kNaN;
-      depth[i] = p ? p->depth_m : kNaN;
+      const Point3d p(world[3 * i], world[3 * i + 1], world[3 * i + 2]);
+      std::optional<FilmProjection> fp;
+      if (std::isfinite(p.x) && std::isfinite(p.y) && std::isfinite(p.z))
+        fp = camera.project(p, time_s);
+      else
+        finite = false;
+      film[2 * i] = fp ? fp->film_point.x : kNaN;
+      film[2 * i + 1] = fp ? fp->film_point.y : kNaN;
+      depth[i] = fp ? fp->depth_m : kNaN;
     }
   });
+  return finite;
 }
 
 template <typename T>
@@ -124,8 +137,8 @@ void unproject_points(const Camera& camera, const T* film, const T* depth, size_
   });
 }
 
-template void project_points(const Camera&, const float*, size_t, double, double*, double*);
-template void project_points(const Camera&, const double*, size_t, double, double*, double*);
+template bool project_points(const Camera&, const float*, size_t, double, double*, double*);
+template bool project_points(const Camera&, const double*, size_t, double, double*, double*);
 template void unproject_points(const Camera&, const float*, const float*, size_t, double, double*);
 template void unproject_points(const Camera&, const double*, const double*, size_t, double,
                                double*);

@@ -12,9 +12,10 @@
 namespace obscura::python {
 
 // world: n points (x, y, z); film: n raster points (x, y); depth: n depths. Points the camera does
-// not see get NaN in both outputs.
+// not see get NaN in both outputs. Returns whether every coordinate was finite (checked here, in
+// the parallel loop, rather than in a serial pass before it; a non-finite point gets NaN).
 template <typename T>
-void project_points(const Camera& camera, const T* world, size_t n, double time_s, double* film,
+bool project_points(const Camera& camera, const T* world, size_t n, double time_s, double* film,
                     double* depth);
 
 // film: n raster points, depth: n depths; world: n points, NaN where the camera sees nothing.
