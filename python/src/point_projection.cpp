@@ -32,6 +32,9 @@ struct PlanarCamera {
   double width_px, height_px;
   double near_m, far_m;
   bool perspective;
+  // The pose's last row is (0, 0, 0, 1), so Transform's homogeneous w is exactly 1 for every
+  // finite point and its divide never happens: the loop may skip it and run without branches.
+  bool affine;
 
   PlanarCamera(const Camera& c, double time_s)
       : world_from_camera(c.world_from_camera.at(time_s)),
@@ -43,7 +46,10 @@ struct PlanarCamera {
         height_px(c.film.height_px),
         near_m(c.near_m),
         far_m(c.far_m),
-        perspective(std::holds_alternative<Perspective>(c.projection)) {}
+        perspective(std::holds_alternative<Perspective>(c.projection)) {
+    const auto& m = camera_from_world.matrix().m;
+    affine = m[3][0] == 0 && m[3][1] == 0 && m[3][2] == 0 && m[3][3] == 1;
+  }
 
   bool on_film(double x, double y) const {
     constexpr double kSlackPx = 1e-9;  // as camera.cpp's on_film
@@ -73,6 +79,35 @@ struct PlanarCamera {
     return finite;
   }
 
+  // project() for an affine pose with every test evaluated and the results selected, so that
+  // the compiler can vectorize it. Transform::operator()'s sums in its order (w = 1 needs no
+  // divide); a point that fails a test computes garbage that is thrown away.
+  template <bool kPerspective, typename T>
+  bool project_affine(const T* world, size_t begin, size_t end, double* film, double* depth) const {
+    const auto& m = camera_from_world.matrix().m;
+    constexpr double kSlackPx = 1e-9;  // as camera.cpp's on_film
+    bool finite = true;
+    for (size_t i = begin; i < end; ++i) {
+      const double x = world[3 * i], y = world[3 * i + 1], z = world[3 * i + 2];
+      const bool point_finite = std::isfinite(x) & std::isfinite(y) & std::isfinite(z);
+      finite &= point_finite;
+      const double qx = m[0][0] * x + m[0][1] * y + m[0][2] * z + m[0][3];
+      const double qy = m[1][0] * x + m[1][1] * y + m[1][2] * z + m[1][3];
+      const double qz = m[2][0] * x + m[2][1] * y + m[2][2] * z + m[2][3];
+      const double d = -qz;
+      const double wx = kPerspective ? qx / d : qx, wy = kPerspective ? qy / d : qy;
+      const double rx = (wx - window.x_min) / window_width * width_px;
+      const double ry = (window.y_max - wy) / window_height * height_px;
+      const bool seen = point_finite & (d >= near_m) & (d <= far_m) & (rx >= -kSlackPx) &
+                        (rx <= width_px + kSlackPx) & (ry >= -kSlackPx) &
+                        (ry <= height_px + kSlackPx);
+      film[2 * i] = seen ? rx : kNaN;
+      film[2 * i + 1] = seen ? ry : kNaN;
+      depth[i] = seen ? d : kNaN;
+    }
+    return finite;
+  }
+
   template <typename T>
   void unproject(const T* film, const T* depth, size_t begin, size_t end, double* world) const {
     for (size_t i = begin; i < end; ++i) {
@@ -95,9 +130,14 @@ bool project_points(const Camera& camera, const T* world, size_t n, double time_
   if (camera.has_projection_matrix()) {
     const PlanarCamera planar(camera, time_s);
     for_chunks(n, [&](size_t begin, size_t end) {
-      const bool chunk_finite = planar.perspective
-                                    ? planar.project<true>(world, begin, end, film, depth)
-                                    : planar.project<false>(world, begin, end, film, depth);
+      bool chunk_finite;
+      if (planar.affine)
+        chunk_finite = planar.perspective
+                           ? planar.project_affine<true>(world, begin, end, film, depth)
+                           : planar.project_affine<false>(world, begin, end, film, depth);
+      else
+        chunk_finite = planar.perspective ? planar.project<true>(world, begin, end, film, depth)
+                                          : planar.project<false>(world, begin, end, film, depth);
       if (!chunk_finite) finite = false;
     });
     return finite;
