@@ -7,6 +7,8 @@
 // derived from the primaries, IEC curve, round half up): the counters report the mismatches
 // (expected only where the exact value lies within float rounding of a code boundary).
 #include <benchmark/benchmark.h>
+#include <tbb/global_control.h>
+#include <tbb/parallel_for.h>
 
 #include <algorithm>
 #include <cmath>
@@ -16,6 +18,7 @@
 #include <vector>
 
 #include "obscura/color/color_space.h"
+#include "obscura/color/convert_pixels.h"
 #include "obscura/color/develop.h"
 
 namespace {
@@ -116,6 +119,26 @@ void BM_Lin709ToP3_U8_Bayer(benchmark::State& state) {
   run(state, obscura::Dither::kBayer);
 }
 
+// The same image to Display P3 as float RGB through convert_pixels, the double-precision path of
+// `obscura color convert` and Python's convert(), on TBB chunks of 4096 pixels as Python runs it:
+// the C++ side of bench/python_overhead.py's convert row.
+void BM_ConvertLin709ToP3_F32(benchmark::State& state) {
+  tbb::global_control threads(tbb::global_control::max_allowed_parallelism, size_t(state.range(0)));
+  const obscura::ColorSpaceInfo& from = obscura::color_space("srgb-linear");
+  const obscura::ColorSpaceInfo& to = obscura::color_space("display-p3");
+  const std::vector<float>& src = input();
+  std::vector<float> dst(src.size());
+  const size_t pixels = src.size() / 3;
+  for (auto _ : state) {
+    tbb::parallel_for(tbb::blocked_range<size_t>(0, pixels, 4096),
+                      [&](const tbb::blocked_range<size_t>& r) {
+                        obscura::convert_pixels(from, to, src.data() + 3 * r.begin(),
+                                                dst.data() + 3 * r.begin(), r.size());
+                      });
+    benchmark::ClobberMemory();
+  }
+}
+
 }  // namespace
 
 BENCHMARK(BM_Lin709ToP3_U8)
@@ -133,6 +156,13 @@ BENCHMARK(BM_Lin709ToP3_U8_BlueNoise)
     ->UseRealTime()
     ->MinTime(1.0);
 BENCHMARK(BM_Lin709ToP3_U8_Bayer)
+    ->Arg(1)
+    ->Arg(2)
+    ->ArgName("threads")
+    ->Unit(benchmark::kMillisecond)
+    ->UseRealTime()
+    ->MinTime(1.0);
+BENCHMARK(BM_ConvertLin709ToP3_F32)
     ->Arg(1)
     ->Arg(2)
     ->ArgName("threads")

@@ -7,9 +7,11 @@ paths. Run from the repository root after building:
 1. A 1-spp 512x512 path-traced Cornell box: the CLI's own render time (its summary line, the
    renderer alone) and wall time of the process, against render() in Python (RenderResult.seconds,
    the same library timer, and the wall time of the call including the numpy hand-over).
-2. Vectorized Camera.project of 10^6 points against the same pinhole formula in NumPy.
+2. Vectorized Camera.project of 10^6 points against the same pinhole formula in NumPy, and
+   project / unproject throughput of every camera model.
 3. Colour of a 3840x2160 float32 image: convert() srgb-linear -> display-p3 (the per-colour
-   library functions, threaded) and develop() to Display P3 8-bit (the table path the C++
+   library functions, threaded; color_bench's BM_ConvertLin709ToP3_F32 is the same work in C++)
+   and develop() to Display P3 8-bit (the table path the C++
    color_bench measures; build/bench/color_bench runs too when it was built).
 Prints CPU and wall times and the machine's load (/proc/loadavg) so that runs can be compared.
 """
@@ -101,6 +103,7 @@ def main():
     rng = np.random.default_rng(0)
     points = rng.uniform([-3, -2, -12], [3, 2, -1], size=(1_000_000, 3))
     cam = obscura.Camera.perspective(fov=55, width=640, height=480)
+    cam.project(points)  # warm-up: TBB's workers and the first touch of the output pages
     wall, cpu, _ = timed(lambda: cam.project(points), args.repeat)
     f = 240 / np.tan(np.radians(27.5))
 
@@ -114,6 +117,23 @@ def main():
           f"CPU {cpu * 1e3:.1f} ms)")
     print(f"  NumPy pinhole: {len(points) / nwall / 1e6:6.1f} M points/s (wall {nwall * 1e3:.1f} "
           f"ms, CPU {ncpu * 1e3:.1f} ms)")
+    k = np.array([[500, 0, 320], [0, 500, 240], [0, 0, 1.0]])
+    models = {
+        "orthographic": obscura.Camera.orthographic(view_height=4, width=640, height=480),
+        "spherical": obscura.Camera.spherical(width=640, height=320),
+        "fisheye": obscura.Camera.fisheye(width=640, height=480),
+        "calibrated (OpenCV k1 k2)": obscura.Camera.calibrated(
+            k, distortion="opencv", coefficients=[-0.1, 0.01, 0, 0, 0], width=640, height=480),
+    }
+    for name, model in [("perspective", cam)] + list(models.items()):
+        film, depth = model.project(points)
+        seen = ~np.isnan(depth)
+        film = np.where(seen[:, None], film, 320.0)
+        depth = np.where(seen, depth, 1.0)
+        pw, _, _ = timed(lambda: model.project(points), args.repeat)
+        uw, _, _ = timed(lambda: model.unproject(film, depth), args.repeat)
+        print(f"  {name:26s} project {len(points) / pw / 1e6:6.1f}  unproject "
+              f"{len(points) / uw / 1e6:6.1f} M points/s")
 
     # 3. colour of a 4K image
     u = rng.uniform(0, 1, size=(2160, 3840, 3)).astype(np.float32)
@@ -125,9 +145,10 @@ def main():
     print(f"  develop to Display P3 8-bit:       wall {dwall * 1e3:8.1f} ms, CPU {dcpu * 1e3:8.1f} ms")
     bench = os.path.join(os.path.dirname(args.cli), "bench", "color_bench")
     if os.path.exists(bench):
-        out = subprocess.run([bench, "--benchmark_filter=BM_Lin709ToP3_U8$"], capture_output=True,
-                             text=True).stdout
-        print("  C++ color_bench: " + " ".join(out.strip().splitlines()[-1].split()[:3]))
+        for name in ["BM_ConvertLin709ToP3_F32", "BM_Lin709ToP3_U8"]:
+            out = subprocess.run([bench, f"--benchmark_filter={name}/threads:2/"],
+                                 capture_output=True, text=True).stdout
+            print("  C++ color_bench: " + " ".join(out.strip().splitlines()[-1].split()[:3]))
     print(f"load after: {loadavg()}")
 
 

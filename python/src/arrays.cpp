@@ -64,8 +64,9 @@ py::array checked_float_array(const py::handle& value, const char* what, py::ssi
   return array;
 }
 
-py::array checked_points(const py::handle& value, const char* what, py::ssize_t last_dim) {
-  py::array array = checked_float_array(value, what, last_dim);
+py::array checked_points(const py::handle& value, const char* what, py::ssize_t last_dim,
+                         bool finite) {
+  py::array array = checked_float_array(value, what, last_dim, finite);
   if (array.ndim() != 2)
     throw py::value_error(std::string(what) + ": expected shape (N, " + std::to_string(last_dim) +
                           "), got " + shape_text(array));

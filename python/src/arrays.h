@@ -33,8 +33,9 @@ py::array_t<T> vector_to_array(std::vector<T>&& values, std::vector<py::ssize_t>
 py::array checked_float_array(const py::handle& value, const char* what, py::ssize_t last_dim,
                               bool finite = true);
 
-// checked_float_array, then exactly `ndim` dimensions (2: (N, last_dim)).
-py::array checked_points(const py::handle& value, const char* what, py::ssize_t last_dim);
+// checked_float_array, then exactly two dimensions: (N, last_dim).
+py::array checked_points(const py::handle& value, const char* what, py::ssize_t last_dim,
+                         bool finite = true);
 
 // The values of a float32/float64 array as doubles (a copy for float32).
 std::vector<double> as_doubles(const py::array& array);

@@ -3,11 +3,9 @@
 // exports of `obscura camera --export` (io/calibration_file.h, io/colmap_model.h).
 #include <pybind11/numpy.h>
 #include <pybind11/stl.h>
-#include <tbb/parallel_for.h>
 
 #include <cmath>
 #include <filesystem>
-#include <limits>
 
 #include "arrays.h"
 #include "bindings.h"
@@ -17,12 +15,11 @@
 #include "obscura/io/camera_calibration.h"
 #include "obscura/io/colmap_model.h"
 #include "obscura/math/error.h"
+#include "point_projection.h"
 
 namespace obscura::python {
 
 namespace {
-
-constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
 
 py::array_t<double> matrix_array(const Matrix4& m) {
   py::array_t<double> out({4, 4});
@@ -55,28 +52,26 @@ void bind_camera_math(py::class_<Camera>& camera) {
   camera.def(
       "project",
       [](const Camera& c, const py::handle& points, double time) {
-        py::array in = checked_points(points, "project(points)", 3);
-        const std::vector<double> p = as_doubles(in);
-        const size_t n = p.size() / 3;
-        std::vector<double> film(2 * n), depth(n);
+        // Finite values are checked in the parallel loop below, not in a serial pass here.
+        py::array in = checked_points(points, "project(points)", 3, /*finite=*/false);
+        const size_t n = size_t(in.shape(0));
+        const py::ssize_t count = py::ssize_t(n);
+        py::array_t<double> film({count, py::ssize_t(2)}), depth(count);
+        double* film_out = film.mutable_data();
+        double* depth_out = depth.mutable_data();
+        const bool is_f32 = in.dtype().is(py::dtype::of<float>());
+        const void* world = in.data();  // `in` holds the array while the GIL is free
+        bool finite = true;
         {
           py::gil_scoped_release release;
-          const Camera camera_copy = c;  // no Python object is touched while the GIL is free
-          // The per-call constants (screen window, lens map) once, not per point.
-          const PreparedCamera prepared = camera_copy.prepare();
-          tbb::parallel_for(tbb::blocked_range<size_t>(0, n, 1024), [&](const auto& r) {
-            for (size_t i = r.begin(); i < r.end(); ++i) {
-              std::optional<FilmProjection> fp =
-                  prepared.project({p[3 * i], p[3 * i + 1], p[3 * i + 2]}, time);
-              film[2 * i] = fp ? fp->film_point.x : kNaN;
-              film[2 * i + 1] = fp ? fp->film_point.y : kNaN;
-              depth[i] = fp ? fp->depth_m : kNaN;
-            }
-          });
+          finite = is_f32 ? project_points(c, static_cast<const float*>(world), n, time, film_out,
+                                           depth_out)
+                          : project_points(c, static_cast<const double*>(world), n, time, film_out,
+                                           depth_out);
         }
-        const py::ssize_t count = py::ssize_t(n);
-        return py::make_tuple(vector_to_array(std::move(film), {count, 2}),
-                              vector_to_array(std::move(depth), {count}));
+        if (!finite)
+          throw py::value_error("project(points): expected finite values, found NaN or Inf");
+        return py::make_tuple(film, depth);
       },
       py::arg("points"), py::arg("time") = 0.0,
       "Projects world points (N, 3) onto the film at `time`: returns (film (N, 2) raster "
@@ -92,22 +87,27 @@ void bind_camera_math(py::class_<Camera>& camera) {
         if (d.ndim() != 1 || d.shape(0) != f.shape(0))
           throw py::value_error("unproject(depth): expected shape (" + std::to_string(f.shape(0)) +
                                 ",), one depth per film point");
-        const std::vector<double> fv = as_doubles(f), dv = as_doubles(d);
-        const size_t n = dv.size();
-        std::vector<double> world(3 * n);
+        // One element type for both inputs (a float32 one widens exactly to float64).
+        const bool is_f32 =
+            f.dtype().is(py::dtype::of<float>()) && d.dtype().is(py::dtype::of<float>());
+        if (!is_f32) {
+          f = py::array_t<double, py::array::c_style | py::array::forcecast>::ensure(f);
+          d = py::array_t<double, py::array::c_style | py::array::forcecast>::ensure(d);
+        }
+        const size_t n = size_t(d.shape(0));
+        py::array_t<double> world({py::ssize_t(n), py::ssize_t(3)});
+        double* out = world.mutable_data();
+        const void *film_in = f.data(), *depth_in = d.data();
         {
           py::gil_scoped_release release;
-          const Camera camera_copy = c;
-          const PreparedCamera prepared = camera_copy.prepare();
-          tbb::parallel_for(tbb::blocked_range<size_t>(0, n, 1024), [&](const auto& r) {
-            for (size_t i = r.begin(); i < r.end(); ++i) {
-              std::optional<Point3d> w =
-                  prepared.unproject({fv[2 * i], fv[2 * i + 1]}, dv[i], time);
-              for (int k = 0; k < 3; ++k) world[3 * i + k] = w ? (*w)[k] : kNaN;
-            }
-          });
+          if (is_f32)
+            unproject_points(c, static_cast<const float*>(film_in),
+                             static_cast<const float*>(depth_in), n, time, out);
+          else
+            unproject_points(c, static_cast<const double*>(film_in),
+                             static_cast<const double*>(depth_in), n, time, out);
         }
-        return vector_to_array(std::move(world), {py::ssize_t(n), 3});
+        return world;
       },
       py::arg("film"), py::arg("depth"), py::arg("time") = 0.0,
       "The world points (N, 3) at raster points `film` (N, 2) and depths (N,) as project() gives "

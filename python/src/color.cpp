@@ -10,6 +10,7 @@
 #include "bindings.h"
 #include "color_settings.h"
 #include "obscura/color/color_space.h"
+#include "obscura/color/convert_pixels.h"
 #include "obscura/color/develop.h"
 #include "obscura/color/gamut.h"
 #include "obscura/color/quantize.h"
@@ -51,17 +52,13 @@ py::array convert_typed(const py::array& in, const ColorSpaceInfo& from, const C
   py::array_t<T> out(shape);
   const T* src = static_cast<const T*>(in.data());
   T* dst = out.mutable_data();
-  const int fc = from.components, tc = to.components;
+  const size_t fc = size_t(from.components), tc = size_t(to.components);
   py::gil_scoped_release release;
-  tbb::parallel_for(tbb::blocked_range<size_t>(0, n, 4096),
-                    [&](const tbb::blocked_range<size_t>& r) {
-                      std::vector<double> values(static_cast<size_t>(fc), 0.0);
-                      for (size_t i = r.begin(); i < r.end(); ++i) {
-                        for (int k = 0; k < fc; ++k) values[k] = double(src[i * fc + k]);
-                        std::vector<double> result = from_xyz_d65(to, xyz_d65_from(from, values));
-                        for (int k = 0; k < tc; ++k) dst[i * tc + k] = T(result[k]);
-                      }
-                    });
+  // Chunks of pixels (a 4K row is 3840): each pixel's result depends on that pixel alone.
+  tbb::parallel_for(
+      tbb::blocked_range<size_t>(0, n, 4096), [&](const tbb::blocked_range<size_t>& r) {
+        convert_pixels(from, to, src + r.begin() * fc, dst + r.begin() * tc, r.size());
+      });
   return out;
 }
 

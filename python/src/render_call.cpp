@@ -57,11 +57,6 @@ FrameSettings frame_settings(const RenderRequest& r, const std::atomic<bool>* ca
   return s;
 }
 
-bool same_exposure(const Camera& a, const Camera& b) {
-  const Shutter sa = a.exposure_interval(), sb = b.exposure_interval();
-  return sa.open_s == sb.open_s && sa.close_s == sb.close_s;
-}
-
 }  // namespace
 
 RenderOutcome render_request(const Scene& scene, const Camera* camera, const RenderRequest& request,
@@ -69,23 +64,16 @@ RenderOutcome render_request(const Scene& scene, const Camera* camera, const Ren
   const FrameSettings settings = frame_settings(request, cancel);
   const Camera& view = camera ? *camera : scene.camera;
   view.validate();
-  // The tracer compiles object motion for the scene camera's exposure; a camera exposed over
-  // another interval renders a copy of the scene that holds it (the usual case, the same
-  // shutter, renders the scene as it is).
-  std::optional<Scene> reframed;
-  if (camera && !same_exposure(*camera, scene.camera)) {
-    reframed.emplace(scene);
-    reframed->camera = *camera;
-  }
-  const Scene& framed = reframed ? *reframed : scene;
-  framed.validate();
+  scene.validate();
+  // render_frame renders `view` over the scene as it is: the tracer compiles object motion over
+  // view's exposure, so another camera needs no copy of the scene.
 
   const Bounds2i crop = view.film.crop_pixels();
   Film film(crop.width(), crop.height());
   RenderOutcome outcome;
   if (request.aovs) outcome.aovs.emplace(film.width(), film.height());
   FrameStats stats =
-      render_frame(framed, view, settings, film, outcome.aovs ? &*outcome.aovs : nullptr, progress);
+      render_frame(scene, view, settings, film, outcome.aovs ? &*outcome.aovs : nullptr, progress);
   outcome.image = film.to_image();
   outcome.seconds = stats.seconds;
   outcome.rays = stats.rays;

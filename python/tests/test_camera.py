@@ -140,3 +140,26 @@ def test_fov_matches_the_cli(cli):
 def test_bad_camera_input_raises(call, error):
     with pytest.raises(error):
         call(obscura.Camera.perspective())
+
+
+@pytest.mark.parametrize("bad", [np.nan, np.inf, -np.inf])
+@pytest.mark.parametrize("model", ["perspective", "orthographic", "fisheye"])
+def test_one_non_finite_coordinate_among_many_points_raises(bad, model):
+    # project checks finiteness inside its parallel loop: one bad value far from the start,
+    # in either dtype, must still be reported for the whole call.
+    camera = getattr(obscura.Camera, model)()
+    for dtype in (np.float64, np.float32):
+        points = np.tile(np.array([0.0, 0.0, -2.0], dtype=dtype), (300_000, 1))
+        points[257_123, 1] = bad
+        with pytest.raises(ValueError, match="finite"):
+            camera.project(points)
+
+
+def test_float32_points_project_as_their_float64_values(points):
+    # A float32 array widens exactly to float64, so both dtypes give the same raster points.
+    for camera in (obscura.Camera.perspective(fov=55), obscura.Camera.spherical()):
+        single = points.astype(np.float32)
+        film32, depth32 = camera.project(single)
+        film64, depth64 = camera.project(single.astype(np.float64))
+        assert np.array_equal(film32, film64, equal_nan=True)
+        assert np.array_equal(depth32, depth64, equal_nan=True)

@@ -39,7 +39,9 @@ FrameStats trace_frame(const Scene& scene, const Camera& camera, const FrameSett
     throw Error("render_frame", "max_depth must be 0 (the default) or positive; got " +
                                     std::to_string(settings.max_depth));
   auto device = std::make_shared<EmbreeDevice>();
-  TraceScene trace_scene(scene, device);
+  // Object motion compiled over the exposure of the camera being rendered, which need not be the
+  // scene's own (the scene's camera gives the same interval as the default).
+  TraceScene trace_scene(scene, device, TraceSceneOptions{.shutter = camera.exposure_interval()});
   RenderSettings render_settings{.samples_per_pixel = settings.samples_per_pixel,
                                  .seed = settings.seed,
                                  .sampler = settings.sampler,
