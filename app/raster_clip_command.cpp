@@ -12,11 +12,10 @@
 
 #include <nlohmann/json.hpp>
 
-#include "obscura/color/srgb.h"
 #include "obscura/io/atomic_file.h"
 #include "obscura/io/image_io.h"
 #include "obscura/math/error.h"
-#include "obscura/raster/pipeline.h"
+#include "obscura/raster/clip_triangles.h"
 #include "raster_clip_input.h"
 #include "usage_error.h"
 
@@ -25,17 +24,6 @@ namespace obscura::app {
 namespace {
 
 namespace fs = std::filesystem;
-
-// Passes clip positions through and paints each triangle with its own colour.
-struct TriangleColorProgram {
-  using Vertex = Vector4f;
-  struct Varyings {
-    float unused;
-  };
-  const std::vector<Rgb>* colors;
-  raster::VertexOutput<Varyings> vertex(const Vector4f& clip) const { return {clip, {0.f}}; }
-  Rgb fragment(const Varyings&, raster::FragmentInfo f) const { return (*colors)[f.primitive]; }
-};
 
 // Plain ("P2") greyscale PGM, row 0 first; written whole or not at all (AtomicFile).
 void write_plain_pgm(const fs::path& path, int width, int height, const std::vector<uint32_t>& v) {
@@ -64,15 +52,11 @@ void write_grey_pfm(const fs::path& path, const Image& image) {
   file.commit();
 }
 
-Rgb decode_255(Rgb c) {  // PNG stores sRGB-encoded bytes; the film holds linear values
-  return {srgb_decode(c.r / 255.f), srgb_decode(c.g / 255.f), srgb_decode(c.b / 255.f)};
-}
-
 void run_raster_clip(const std::string& file, const std::string& out_dir) {
   if (!fs::is_directory(out_dir)) throw UsageError("--out: '" + out_dir + "' is not a directory");
   ClipTriangles input = read_raster_clip_file(file);
   const fs::path base = fs::path(out_dir) / input.name;
-  RasterClipImages images = rasterize(input);
+  raster::ClipTriangleImages images = raster::draw_clip_triangles(input);
   write_image(base.string() + ".png", images.color);
   write_plain_pgm(base.string() + ".ids.pgm", input.width, input.height, images.ids);
   write_plain_pgm(base.string() + ".count.pgm", input.width, input.height, images.count);
@@ -81,46 +65,6 @@ void run_raster_clip(const std::string& file, const std::string& out_dir) {
 }
 
 }  // namespace
-
-RasterClipImages rasterize(const ClipTriangles& input) {
-  std::vector<Rgb> linear;
-  for (Rgb c : input.colors) linear.push_back(decode_255(c));
-  TriangleColorProgram program{&linear};
-  raster::RenderTarget target(input.width, input.height, 1, /*aovs=*/true);
-  target.clear(decode_255(input.clear_color), input.clear_depth);
-  raster::DrawState state;
-  state.depth_func = input.depth_func;
-  state.cull = input.cull;
-  raster::draw(target, state, program, input.clip);
-
-  // Coverage counts: the same triangles, depth test off, each adding one.
-  std::vector<Rgb> ones(input.colors.size(), Rgb(1.f));
-  TriangleColorProgram count_program{&ones};
-  raster::RenderTarget counts(input.width, input.height);
-  counts.clear();
-  raster::DrawState count_state;
-  count_state.depth_func = raster::DepthFunc::kAlways;
-  count_state.depth_write = false;
-  count_state.cull = input.cull;
-  count_state.blend = raster::BlendMode::kAdd;
-  raster::draw(counts, count_state, count_program, input.clip);
-
-  RasterClipImages images;
-  size_t n = size_t(input.width) * input.height;
-  images.ids.resize(n);
-  images.count.resize(n);
-  for (int y = 0; y < input.height; ++y)
-    for (int x = 0; x < input.width; ++x) {
-      size_t i = size_t(y) * input.width + x;
-      images.ids[i] = target.object_id_at(x, y) == raster::kNoObject
-                          ? 0
-                          : input.ids[target.primitive_id_at(x, y)];
-      images.count[i] = uint32_t(counts.color_at(x, y).r);
-    }
-  images.color = target.resolve_color();
-  images.depth = target.depth_image();
-  return images;
-}
 
 void add_raster_clip_command(CLI::App& app) {
   auto file = std::make_shared<std::string>();

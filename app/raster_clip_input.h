@@ -11,21 +11,11 @@
 
 #include "obscura/color/rgb.h"
 #include "obscura/math/vector.h"
-#include "obscura/raster/pipeline.h"
+#include "obscura/raster/clip_triangles.h"
 
 namespace obscura::app {
 
-struct ClipTriangles {
-  std::string name;
-  int width = 0, height = 0;
-  Rgb clear_color;  // 0–255 per channel, as the triangles' colours
-  float clear_depth = 1.f;
-  raster::DepthFunc depth_func = raster::DepthFunc::kLess;
-  raster::CullMode cull = raster::CullMode::kNone;
-  std::vector<uint32_t> ids;
-  std::vector<Rgb> colors;     // 0–255
-  std::vector<Vector4f> clip;  // three per triangle
-};
+using raster::ClipTriangles;
 
 // Reads and checks the file (a regular file of at most 64 MiB, as scene files).
 ClipTriangles read_raster_clip_file(const std::string& file);

@@ -8,7 +8,7 @@
 
 #include "obscura/io/json_reader.h"
 #include "obscura/math/error.h"
-#include "raster_clip_command.h"
+#include "obscura/raster/clip_triangles.h"
 #include "raster_clip_input.h"
 
 extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
@@ -18,7 +18,7 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
         obscura::app::parse_raster_clip(obscura::parse_json_text(text, "fuzz.json"), "fuzz.json");
     // Draw what parses, when small: the clipper and rasterizer see hostile coordinates too
     // (a 16384 x 16384 target would only measure memory).
-    if (int64_t(input.width) * input.height <= 64 * 64) obscura::app::rasterize(input);
+    if (int64_t(input.width) * input.height <= 64 * 64) obscura::raster::draw_clip_triangles(input);
   } catch (const obscura::Error&) {
     // a clear error for bad input: the expected outcome
   }
