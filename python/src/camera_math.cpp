@@ -15,7 +15,7 @@
 #include "obscura/io/camera_calibration.h"
 #include "obscura/io/colmap_model.h"
 #include "obscura/math/error.h"
-#include "point_projection.h"
+#include "obscura/camera/point_projection.h"
 
 namespace obscura::python {
 

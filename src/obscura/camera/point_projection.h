@@ -1,15 +1,14 @@
-// Camera::project and Camera::unproject over many points at one time, for the vectorized
-// Camera.project / Camera.unproject: the same doubles, point for point, with what does not change
-// from point to point (the pose at that time, the screen window) computed once and the
+// Camera::project and Camera::unproject over arrays of points at one time (what Python's
+// Camera.project / Camera.unproject call): the same doubles, point for point, with what does not
+// change from point to point (the pose at that time, the screen window) computed once and the
 // perspective and orthographic cameras in a loop of their own. Runs in parallel over chunks;
-// each point's result depends only on that point, so it does not depend on the thread count.
-// Touches no Python object: callers release the GIL around it.
+// each point's result depends only on that point, so not on the thread count.
 #pragma once
 #include <cstddef>
 
 #include "obscura/camera/camera.h"
 
-namespace obscura::python {
+namespace obscura {
 
 // world: n points (x, y, z); film: n raster points (x, y); depth: n depths. Points the camera does
 // not see get NaN in both outputs. Returns whether every coordinate was finite (checked here, in
@@ -23,4 +22,4 @@ template <typename T>
 void unproject_points(const Camera& camera, const T* film, const T* depth, size_t n, double time_s,
                       double* world);
 
-}  // namespace obscura::python
+}  // namespace obscura

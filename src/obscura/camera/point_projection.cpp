@@ -1,4 +1,4 @@
-#include "point_projection.h"
+#include "obscura/camera/point_projection.h"
 
 #include <tbb/parallel_for.h>
 
@@ -7,7 +7,7 @@
 #include <limits>
 #include <variant>
 
-namespace obscura::python {
+namespace obscura {
 
 namespace {
 
@@ -186,4 +186,4 @@ template void unproject_points(const Camera&, const float*, const float*, size_t
 template void unproject_points(const Camera&, const double*, const double*, size_t, double,
                                double*);
 
-}  // namespace obscura::python
+}  // namespace obscura
