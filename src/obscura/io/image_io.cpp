@@ -183,7 +183,7 @@ void check_output_path(const std::string& path) {
   if (fs::is_directory(target, ec))
     throw Error(path, "output path is a directory; expected a file name such as " +
                           (target / "render.png").string());
-  image_format_for_path(path);
+  ImageFormat format = image_format_for_path(path);
   fs::path parent = target.parent_path().empty() ? fs::path(".") : target.parent_path();
   if (!fs::is_directory(parent, ec))
     throw Error(path, "output directory '" + parent.string() + "' does not exist");
@@ -191,6 +191,15 @@ void check_output_path(const std::string& path) {
     throw Error(path, "output directory '" + parent.string() + "' is not writable");
   if (fs::exists(target, ec) && access(target.c_str(), W_OK) != 0)
     throw Error(path, "output file exists and is not writable");
+  // The codecs are loaded now, so that a missing plugin stops a command before its work, not
+  // after (PFM and Y4M are written without them).
+  if (format != ImageFormat::kPfm && format != ImageFormat::kY4m) {
+    try {
+      image_codecs();
+    } catch (const Error& e) {
+      throw Error(path, e.what());
+    }
+  }
 }
 
 void write_display_image(const std::string& path, const DisplayImage& image,
