@@ -3,8 +3,9 @@
 
     python3 bench/startup.py [--build build] [--repeat 20]
 
-Times `BUILD/obscura --version` and `python3 -c "import obscura"` (PYTHONPATH=BUILD/python), each
-REPEAT times, alternating, and prints the median and range of wall time and of peak resident
+Times `BUILD/obscura --version`, `python3 -c "import obscura"` (PYTHONPATH=BUILD/python) and, for
+the cost that moved rather than vanished, a render of 8×8 pixels at 1 spp to a PNG (which loads
+the image codecs) and to a PFM (which needs none), each REPEAT times, alternating, and prints the median and range of wall time and of peak resident
 memory (the child's ru_maxrss, from wait4), the shared libraries each loads (counted in
 /proc/PID/maps of a process that has done the same start-up), and the machine's load
 (/proc/loadavg) before and after. A plain `python3 -c pass` is timed too, as the floor of the
@@ -16,6 +17,7 @@ import os
 import statistics
 import subprocess
 import sys
+import tempfile
 import time
 
 
@@ -42,8 +44,13 @@ def main():
     parser.add_argument("--repeat", type=int, default=20)
     args = parser.parse_args()
     env = dict(os.environ, PYTHONPATH=os.path.join(args.build, "python"))
+    cli = os.path.join(args.build, "obscura")
+    scratch = tempfile.mkdtemp(prefix="obscura-startup-")
+    tiny = [cli, "render", "--width", "8", "--height", "8", "--spp", "1", "--quiet", "-o"]
     cases = {
-        "obscura --version": [os.path.join(args.build, "obscura"), "--version"],
+        "obscura --version": [cli, "--version"],
+        "obscura render 8x8 -o .png": tiny + [os.path.join(scratch, "tiny.png")],
+        "obscura render 8x8 -o .pfm": tiny + [os.path.join(scratch, "tiny.pfm")],
         "python3 -c 'import obscura'": [sys.executable, "-c", "import obscura"],
         "python3 -c pass (floor)": [sys.executable, "-c", "pass"],
     }
@@ -61,6 +68,7 @@ def main():
     }
     ldd = subprocess.run(["ldd", cases["obscura --version"][0]], capture_output=True, text=True)
     libraries["obscura --version"] = len(ldd.stdout.splitlines())
+    libraries["obscura render 8x8 -o .png"] = libraries["obscura render 8x8 -o .pfm"] = 0
     print(f"{'command':32} {'wall ms median (min–max)':>26} {'peak RSS MiB median (min–max)':>31}"
           f" {'shared libs':>11}")
     for name, runs in samples.items():
@@ -68,7 +76,10 @@ def main():
         rss = [r for _, r in runs]
         print(f"{name:32} {statistics.median(walls):9.1f} ({min(walls):6.1f}–{max(walls):6.1f})"
               f"   {statistics.median(rss):12.1f} ({min(rss):6.1f}–{max(rss):6.1f})"
-              f"   {libraries[name]:11d}")
+              f"   {libraries[name] or '':>11}")
+    for name in os.listdir(scratch):
+        os.remove(os.path.join(scratch, name))
+    os.rmdir(scratch)
 
 
 if __name__ == "__main__":
