@@ -1,4 +1,5 @@
-// The team of an MPI job (built when CMake finds MPI; see team.h).
+// The team of an MPI job (built when CMake finds MPI, as the plugin of mpi_team_plugin.h; see
+// team.h).
 #ifdef OBSCURA_WITH_MPI
 
 #include <mpi.h>
@@ -7,6 +8,7 @@
 #include <climits>
 #include <cstdio>
 
+#include "mpi_team_plugin.h"
 #include "obscura/math/error.h"
 #include "team.h"
 
@@ -169,8 +171,6 @@ class MpiTeam : public Team {
 
 bool initialized_here = false;
 
-}  // namespace
-
 std::unique_ptr<Team> make_mpi_team(int& argc, char**& argv) {
   int provided = 0;
   // Only the main thread calls MPI; the renderers' worker threads never do.
@@ -187,6 +187,15 @@ void finalize_mpi_team() {
   initialized_here = false;
 }
 
+}  // namespace
+
 }  // namespace obscura::app
+
+extern "C" __attribute__((visibility("default"))) const obscura::app::MpiTeamPlugin*
+obscura_mpi_team_v1() {
+  static const obscura::app::MpiTeamPlugin plugin{&obscura::app::make_mpi_team,
+                                                  &obscura::app::finalize_mpi_team};
+  return &plugin;
+}
 
 #endif  // OBSCURA_WITH_MPI

@@ -147,9 +147,9 @@ bool finished_frame_exists(const std::string& path, int width, int height) {
     return false;
   try {
     CheckedImageInput in = CheckedImageInput::open_file(path);
-    const OIIO::ImageSpec& spec = in.spec();
-    return spec.width == width && spec.height == height &&
-           spec.find_attribute("obscura:partial") == nullptr;
+    const ImageHeader& header = in.header();
+    return header.width == width && header.height == height &&
+           !header.has_attribute("obscura:partial");
   } catch (const Error&) {
     return false;  // unreadable: rendered again
   }

@@ -5,16 +5,31 @@
 #include <cstdlib>
 #include <map>
 
-namespace obscura::app {
-
 #ifdef OBSCURA_WITH_MPI
-// mpi_team.cpp: the team of an MPI job, or null when the process was not started by an MPI
-// launcher.
-std::unique_ptr<Team> make_mpi_team(int& argc, char**& argv);
-void finalize_mpi_team();
+#include "mpi_team_plugin.h"
+#include "obscura/io/plugin_loader.h"
+#include "obscura/math/error.h"
 #endif
 
+namespace obscura::app {
+
 namespace {
+
+#ifdef OBSCURA_WITH_MPI
+// The MPI team plugin, once loaded (only under a launcher).
+const MpiTeamPlugin* mpi_team_plugin = nullptr;
+
+const MpiTeamPlugin& load_mpi_team_plugin() {
+  try {
+    using Entry = const MpiTeamPlugin* (*)();
+    auto entry = reinterpret_cast<Entry>(
+        load_plugin_entry(kMpiTeamPluginFile, kMpiTeamEntryPoint, "join the MPI job"));
+    return *entry();
+  } catch (const Error& e) {
+    throw TeamFailure(e.what());
+  }
+}
+#endif
 
 std::unique_ptr<Team>& current_team() {
   static std::unique_ptr<Team> team = std::make_unique<Team>();
@@ -86,7 +101,10 @@ Team& team() {
 void join_team([[maybe_unused]] int& argc, [[maybe_unused]] char**& argv) {
 #ifdef OBSCURA_WITH_MPI
   // MPI is started only under a launcher: a plain `obscura` does not pay for MPI_Init.
-  if (launched_job_size() > 0) current_team() = make_mpi_team(argc, argv);
+  if (launched_job_size() > 0) {
+    mpi_team_plugin = &load_mpi_team_plugin();
+    current_team() = mpi_team_plugin->make(argc, argv);
+  }
 #else
   if (launched_job_size() > 1)
     throw TeamFailure(
@@ -99,7 +117,7 @@ void join_team([[maybe_unused]] int& argc, [[maybe_unused]] char**& argv) {
 
 void leave_team() {
 #ifdef OBSCURA_WITH_MPI
-  finalize_mpi_team();
+  if (mpi_team_plugin) mpi_team_plugin->finalize();
 #endif
 }
 

@@ -4,25 +4,16 @@
 
 #include <algorithm>
 #include <bit>
-#include <cerrno>
 #include <cfloat>
 #include <cmath>
 #include <cstdint>
-#include <cstdio>
-#include <cstring>
 #include <filesystem>
-#include <fstream>
-#include <functional>
-#include <iterator>
-#include <memory>
 #include <system_error>
 #include <vector>
 
-#include <OpenImageIO/filesystem.h>
-#include <OpenImageIO/imageio.h>
-
 #include "obscura/color/quantize.h"
 #include "obscura/io/atomic_file.h"
+#include "obscura/io/image_codecs_loader.h"
 #include "obscura/io/image_reader.h"
 #include "obscura/io/y4m_writer.h"
 #include "obscura/math/error.h"
@@ -40,61 +31,10 @@ std::string lowercase_extension(const std::string& path) {
   return ext;
 }
 
-// OpenImageIO 2.4's TIFF writer leaves out the image directory when it writes through an IOProxy
-// (readers then fail with "TIFF directory is missing required ImageLength"), so a TIFF is encoded
-// into a private temporary file instead, read back and removed. libtiff reports its errors
-// through OpenImageIO, so nothing there ends the process.
-std::vector<unsigned char> encode_through_temporary_file(
-    const std::string& path, const OIIO::ImageSpec& spec,
-    const std::function<bool(OIIO::ImageOutput&)>& write) {
-  std::string pattern = (fs::temp_directory_path() / "obscura-encode-XXXXXX.tif").string();
-  int fd = mkstemps(pattern.data(), 4);
-  if (fd < 0) throw Error(path, "cannot create a temporary file to encode into");
-  close(fd);
-  struct Remove {
-    std::string file;
-    ~Remove() { std::remove(file.c_str()); }
-  } remove{pattern};
-  auto out = OIIO::ImageOutput::create(pattern);
-  if (!out) throw Error(path, "no image writer: " + OIIO::geterror());
-  errno = 0;
-  bool ok = out->open(pattern, spec) && write(*out);
-  int write_errno = errno;  // libtiff's messages leave out why a write failed
-  std::string message = out->geterror();
-  ok = out->close() && ok;
-  if (!ok)
-    throw Error(path,
-                "cannot encode: " + message + out->geterror() +
-                    (write_errno ? std::string(" (") + std::strerror(write_errno) + ")" : ""));
-  std::ifstream in(pattern, std::ios::binary);
-  std::vector<unsigned char> bytes{std::istreambuf_iterator<char>(in),
-                                   std::istreambuf_iterator<char>()};
-  if (!in.good() && !in.eof()) throw Error(path, "cannot read back the encoded image");
-  return bytes;
-}
-
-// Encodes the image in memory (OpenImageIO writes to a proxy) and only then writes the bytes
-// through an AtomicFile, whose every write is checked. The codecs never touch the output, so a
-// full disk cannot be ignored by a writer that does not check fwrite, nor end the process the way
-// libjpeg's default error handler does (exit(1)).
-void write_encoded(const std::string& path, const OIIO::ImageSpec& spec,
-                   const std::function<bool(OIIO::ImageOutput&)>& write) {
-  if (image_format_for_path(path) == ImageFormat::kTiff) {
-    write_file_atomically(path, encode_through_temporary_file(path, spec, write));
-    return;
-  }
-  std::vector<unsigned char> encoded;
-  OIIO::Filesystem::IOVecOutput memory(encoded);
-  auto out = OIIO::ImageOutput::create(path, &memory);
-  if (!out) throw Error(path, "no image writer: " + OIIO::geterror());
-  if (!out->supports("ioproxy"))
-    throw Error(path, "this OpenImageIO cannot encode the format into memory");
-  if (!out->open(path, spec)) throw Error(path, "cannot encode: " + out->geterror());
-  bool ok = write(*out);
-  std::string message = out->geterror();
-  ok = out->close() && ok;
-  if (!ok) throw Error(path, "cannot encode: " + message + out->geterror());
-  write_file_atomically(path, encoded);
+// Encodes through the image codecs plugin, which returns the file's bytes, and only then writes
+// them through an AtomicFile, whose every write is checked.
+void write_encoded(const EncodeRequest& request) {
+  write_file_atomically(request.path, image_codecs().encode(request));
 }
 
 // Linear values with NaN/Inf replaced by defined ones (and counted).
@@ -119,9 +59,21 @@ std::vector<float> sanitized(const Image& image, float largest, DevelopStats& st
   return data;
 }
 
-void add_metadata(OIIO::ImageSpec& spec, const ImageMetadata& metadata) {
-  if (!metadata.description.empty()) spec.attribute("ImageDescription", metadata.description);
-  for (const auto& [name, value] : metadata.attributes) spec.attribute(name, value);
+void add_metadata(std::vector<HeaderAttribute>& attributes, const ImageMetadata& metadata) {
+  if (!metadata.description.empty())
+    attributes.push_back({"ImageDescription", metadata.description});
+  for (const auto& [name, value] : metadata.attributes) attributes.push_back({name, value});
+}
+
+EncodeRequest encode_request(const std::string& path, int width, int height, int channels,
+                             SampleType stored) {
+  EncodeRequest request;
+  request.path = path;
+  request.width = width;
+  request.height = height;
+  request.channels = channels;
+  request.stored = stored;
+  return request;
 }
 
 std::string colorspace_attribute(DisplaySpace d) {
@@ -172,22 +124,23 @@ WriteReport write_linear(const std::string& path, ImageFormat format, const Imag
     write_file_atomically(path, encode_pfm(image.width, image.height, channels, data));
     return report;
   }
-  OIIO::ImageSpec spec(image.width, image.height, channels,
-                       half ? OIIO::TypeDesc::HALF : OIIO::TypeDesc::FLOAT);
+  EncodeRequest request = encode_request(path, image.width, image.height, channels,
+                                         half ? SampleType::kHalf : SampleType::kFloat);
   if (!image.channel_names.empty() && channels == image.channels)
-    spec.channelnames = image.channel_names;
-  spec.attribute("oiio:ColorSpace", "Linear");
-  spec.attribute("Software", "Obscura " OBSCURA_VERSION);
-  add_metadata(spec, options.metadata);
+    request.channel_names = image.channel_names;
+  request.attributes.push_back({"oiio:ColorSpace", std::string("Linear")});
+  request.attributes.push_back({"Software", std::string("Obscura " OBSCURA_VERSION)});
+  add_metadata(request.attributes, options.metadata);
   if (format == ImageFormat::kExr) {
     // The film's working space: Rec.709 primaries, D65 white (x, y of R, G, B, white).
-    const float chromaticities[8] = {0.64f, 0.33f, 0.30f, 0.60f, 0.15f, 0.06f, 0.3127f, 0.3290f};
-    spec.attribute("chromaticities", OIIO::TypeDesc(OIIO::TypeDesc::FLOAT, 8), chromaticities);
-    spec.attribute("compression", "zip");
+    request.attributes.push_back(
+        {"chromaticities",
+         std::vector<float>{0.64f, 0.33f, 0.30f, 0.60f, 0.15f, 0.06f, 0.3127f, 0.3290f}});
+    request.attributes.push_back({"compression", std::string("zip")});
   }
-  write_encoded(path, spec, [&](OIIO::ImageOutput& out) {
-    return out.write_image(OIIO::TypeDesc::FLOAT, data.data());
-  });
+  request.data_type = SampleType::kFloat;
+  request.data = data.data();
+  write_encoded(request);
   return report;
 }
 
@@ -230,7 +183,7 @@ void check_output_path(const std::string& path) {
   if (fs::is_directory(target, ec))
     throw Error(path, "output path is a directory; expected a file name such as " +
                           (target / "render.png").string());
-  image_format_for_path(path);
+  ImageFormat format = image_format_for_path(path);
   fs::path parent = target.parent_path().empty() ? fs::path(".") : target.parent_path();
   if (!fs::is_directory(parent, ec))
     throw Error(path, "output directory '" + parent.string() + "' does not exist");
@@ -238,6 +191,15 @@ void check_output_path(const std::string& path) {
     throw Error(path, "output directory '" + parent.string() + "' is not writable");
   if (fs::exists(target, ec) && access(target.c_str(), W_OK) != 0)
     throw Error(path, "output file exists and is not writable");
+  // The codecs are loaded now, so that a missing plugin stops a command before its work, not
+  // after (PFM and Y4M are written without them).
+  if (format != ImageFormat::kPfm && format != ImageFormat::kY4m) {
+    try {
+      image_codecs();
+    } catch (const Error& e) {
+      throw Error(path, e.what());
+    }
+  }
 }
 
 void write_display_image(const std::string& path, const DisplayImage& image,
@@ -260,24 +222,31 @@ void write_display_image(const std::string& path, const DisplayImage& image,
   // Container depth: 8 bits up to 8 (JPEG: always 8), else 16; codes of fewer bits are spread
   // over the container's range exactly (q·(2ᴹ−1)/(2ᴺ−1), rounded), so 5-bit banding stays visible.
   int container = image.bits <= 8 || format == ImageFormat::kJpeg ? 8 : 16;
-  OIIO::ImageSpec spec(image.width, image.height, image.channels,
-                       container == 8 ? OIIO::TypeDesc::UINT8 : OIIO::TypeDesc::UINT16);
-  spec.attribute("oiio:ColorSpace", colorspace_attribute(image.display));
-  spec.attribute("obscura:display", display_space_info(image.display).name);
-  spec.attribute("obscura:bits", image.bits);
-  spec.attribute("Software", "Obscura " OBSCURA_VERSION);
-  if (format == ImageFormat::kJpeg) spec.attribute("Compression", "jpeg:95");
-  add_metadata(spec, metadata);
+  EncodeRequest request = encode_request(path, image.width, image.height, image.channels,
+                                         container == 8 ? SampleType::kUint8 : SampleType::kUint16);
+  request.attributes.push_back({"oiio:ColorSpace", colorspace_attribute(image.display)});
+  request.attributes.push_back(
+      {"obscura:display", std::string(display_space_info(image.display).name)});
+  request.attributes.push_back({"obscura:bits", image.bits});
+  request.attributes.push_back({"Software", std::string("Obscura " OBSCURA_VERSION)});
+  if (format == ImageFormat::kJpeg)
+    request.attributes.push_back({"Compression", std::string("jpeg:95")});
+  add_metadata(request.attributes, metadata);
   std::vector<uint16_t> codes(image.codes.size());
   for (size_t i = 0; i < codes.size(); ++i)
     codes[i] =
         uint16_t(image.bits == container ? image.codes[i]
                                          : requantize(image.codes[i], image.bits, container));
-  write_encoded(path, spec, [&](OIIO::ImageOutput& out) {
-    if (container == 16) return out.write_image(OIIO::TypeDesc::UINT16, codes.data());
-    std::vector<uint8_t> bytes(codes.begin(), codes.end());
-    return out.write_image(OIIO::TypeDesc::UINT8, bytes.data());
-  });
+  std::vector<uint8_t> bytes;
+  if (container == 16) {
+    request.data_type = SampleType::kUint16;
+    request.data = codes.data();
+  } else {
+    bytes.assign(codes.begin(), codes.end());
+    request.data_type = SampleType::kUint8;
+    request.data = bytes.data();
+  }
+  write_encoded(request);
 }
 
 WriteReport write_image(const std::string& path, const Image& image,
@@ -308,41 +277,41 @@ void write_exr_data(const std::string& path, const Image& image, const ImageMeta
   if (image_format_for_path(path) != ImageFormat::kExr)
     throw Error(path, "data files are OpenEXR: the name must end in .exr");
   check_output_path(path);
-  OIIO::ImageSpec spec(image.width, image.height, image.channels, OIIO::TypeDesc::FLOAT);
-  spec.channelnames = image.channel_names;
-  spec.attribute("Software", "Obscura " OBSCURA_VERSION);
-  spec.attribute("compression", "zip");
-  add_metadata(spec, metadata);
-  write_encoded(path, spec, [&](OIIO::ImageOutput& out) {
-    return out.write_image(OIIO::TypeDesc::FLOAT, image.data.data());
-  });
+  EncodeRequest request =
+      encode_request(path, image.width, image.height, image.channels, SampleType::kFloat);
+  request.channel_names = image.channel_names;
+  request.attributes.push_back({"Software", std::string("Obscura " OBSCURA_VERSION)});
+  request.attributes.push_back({"compression", std::string("zip")});
+  add_metadata(request.attributes, metadata);
+  request.data_type = SampleType::kFloat;
+  request.data = image.data.data();
+  write_encoded(request);
 }
 
 Image read_exr_data(const std::string& path, ImageMetadata& metadata) {
   CheckedImageInput in = CheckedImageInput::open_file(path);
-  const OIIO::ImageSpec& spec = in.spec();
-  if (std::string(in.format_name()) != "openexr")
-    throw Error(path, "not an OpenEXR file (a " + std::string(in.format_name()) + " file)");
-  Image image(spec.width, spec.height, spec.nchannels);
-  image.channel_names = spec.channelnames;
-  in.read(spec.nchannels, OIIO::TypeDesc::FLOAT, image.data.data());
+  const ImageHeader& header = in.header();
+  if (in.format_name() != "openexr")
+    throw Error(path, "not an OpenEXR file (a " + in.format_name() + " file)");
+  Image image(header.width, header.height, header.channels);
+  image.channel_names = header.channel_names;
+  in.read(header.channels, SampleType::kFloat, image.data.data());
   metadata = {};
-  for (const OIIO::ParamValue& p : spec.extra_attribs) {
-    if (p.type() != OIIO::TypeDesc::STRING) continue;
-    if (p.name() == "ImageDescription")
-      metadata.description = p.get_string();
+  for (const auto& [name, value] : header.text_attributes) {
+    if (name == "ImageDescription")
+      metadata.description = value;
     else
-      metadata.attributes.emplace_back(p.name().string(), p.get_string());
+      metadata.attributes.emplace_back(name, value);
   }
   return image;
 }
 
 Image read_image(const std::string& path) {
   CheckedImageInput in = CheckedImageInput::open_file(path);
-  const OIIO::ImageSpec& spec = in.spec();
-  Image image(spec.width, spec.height, spec.nchannels);
-  image.channel_names = spec.channelnames;
-  in.read(spec.nchannels, OIIO::TypeDesc::FLOAT, image.data.data());
+  const ImageHeader& header = in.header();
+  Image image(header.width, header.height, header.channels);
+  image.channel_names = header.channel_names;
+  in.read(header.channels, SampleType::kFloat, image.data.data());
   return image;
 }
 

@@ -1,4 +1,5 @@
-// Reading and writing image files through OpenImageIO.
+// Reading and writing image files, through the image codecs plugin (OpenImageIO; image_codecs.h),
+// which is loaded on the first read or write.
 //
 // The format follows the file's extension:
 //   display-referred (developed: exposure, tone map, display encoding, N bits, dither):

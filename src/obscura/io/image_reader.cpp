@@ -14,6 +14,7 @@
 #include <vector>
 
 #include "obscura/io/exr_header_check.h"
+#include "obscura/io/image_codecs_loader.h"
 #include "obscura/io/image_limits.h"
 #include "obscura/math/error.h"
 
@@ -74,44 +75,10 @@ std::string reader_for(std::span<const uint8_t> head, const std::string& extensi
               "Radiance HDR, PFM/PNM, TIFF or BMP file (nor is it a .tga)");
 }
 
-// Opens `name` with `reader`; `proxy`, when given, supplies the bytes.
-std::unique_ptr<OIIO::ImageInput> open_with(const std::string& reader, const std::string& name,
-                                            BoundedMemoryReader* proxy, const std::string& source) {
-  // OpenImageIO 2.4's TIFF reader decompresses zip strips on its thread pool and, when a strip
-  // read fails, returns before those tasks finish: they go on reading its freed scratch buffer
-  // and writing into the caller's pixels after the read has failed (a published advisory, fixed
-  // upstream in 3.1.16; the image fuzz target met it as heap corruption in a freed block).
-  // Decompressing on the calling thread closes it, at the cost of parallel decompression of zip
-  // TIFFs.
-  static const bool tiff_serial = OIIO::attribute("tiff:multithread", 0);
-  (void)tiff_serial;
-  OIIO::ImageSpec config;
-  if (proxy) {
-    void* p = proxy;
-    config.attribute("oiio:ioproxy", OIIO::TypeDesc::PTR, &p);
-  }
-  // Colour as stored, never multiplied by alpha: OpenImageIO premultiplies the straight alpha of
-  // PNG, Targa and the like by default, which darkened every partly transparent texel of a glTF
-  // texture (whose alpha is straight by the specification) — by 2× on AlphaBlendModeTest's
-  // cutoff panels, against Cycles. Files that store premultiplied colour (OpenEXR) keep it.
-  config.attribute("oiio:UnassociatedAlpha", 1);
-  // create() with do_open = false picks the reader by name and never falls back to others.
-  std::unique_ptr<OIIO::ImageInput> input = OIIO::ImageInput::create(reader, false, &config);
-  if (!input) throw Error(source, "cannot read image: " + OIIO::geterror());
-  OIIO::ImageSpec spec;
-  bool opened = input->open(name, spec, config);
-  if (!opened) {
-    std::string why = input->geterror();
-    if (why.empty()) why = OIIO::geterror();
-    throw Error(source, "cannot read image as " + reader + (why.empty() ? "" : ": " + why));
-  }
-  return input;
-}
-
 // Refuses, before anything is decoded, what the readers below cannot or must not decode.
-void check_header(const OIIO::ImageSpec& spec, const std::string& source) {
-  if (spec.deep) throw Error(source, "deep images are not supported; expected a flat image");
-  check_decoded_size(source, spec.width, spec.height, spec.depth, spec.nchannels);
+void check_header(const ImageHeader& header, const std::string& source) {
+  if (header.deep) throw Error(source, "deep images are not supported; expected a flat image");
+  check_decoded_size(source, header.width, header.height, header.depth, header.channels);
 }
 
 // OpenEXR allocates what its header declares before reading it: check the header first.
@@ -155,24 +122,9 @@ void check_exr_memory(std::span<const uint8_t> bytes, const std::string& source)
 
 }  // namespace
 
-size_t BoundedMemoryReader::pread(void* buffer, size_t size, int64_t offset) {
-  if (offset < 0 || uint64_t(offset) >= bytes_.size()) return 0;
-  size_t n = std::min(size, bytes_.size() - size_t(offset));
-  std::memcpy(buffer, bytes_.data() + offset, n);
-  return n;
-}
-
-size_t BoundedMemoryReader::read(void* buffer, size_t size) {
-  size_t n = pread(buffer, size, m_pos);
-  m_pos += int64_t(n);
-  return n;
-}
-
-CheckedImageInput::CheckedImageInput(std::string source,
-                                     std::unique_ptr<BoundedMemoryReader> memory,
-                                     std::unique_ptr<OIIO::ImageInput> input)
-    : source_(std::move(source)), memory_(std::move(memory)), input_(std::move(input)) {
-  check_header(input_->spec(), source_);
+CheckedImageInput::CheckedImageInput(std::string source, std::unique_ptr<ImageDecoder> decoder)
+    : source_(std::move(source)), decoder_(std::move(decoder)) {
+  check_header(decoder_->header(), source_);
 }
 
 CheckedImageInput CheckedImageInput::open_file(const std::string& path) {
@@ -184,7 +136,7 @@ CheckedImageInput CheckedImageInput::open_file(const std::string& path) {
   check_exr_file(path);
   std::string ext = std::filesystem::path(path).extension().string();
   std::string reader = reader_for(read_head(path), ext.empty() ? ext : ext.substr(1), path);
-  return CheckedImageInput(path, nullptr, open_with(reader, path, nullptr, path));
+  return CheckedImageInput(path, image_codecs().open(reader, path, false, {}, path));
 }
 
 CheckedImageInput CheckedImageInput::open_memory(std::span<const uint8_t> bytes,
@@ -192,61 +144,11 @@ CheckedImageInput CheckedImageInput::open_memory(std::span<const uint8_t> bytes,
                                                  const std::string& format_hint) {
   if (bytes.empty()) throw Error(source, "embedded image is empty");
   check_exr_memory(bytes, source);
-  // OpenImageIO reads from memory through an IOProxy; the made-up file name is only a name.
-  auto memory = std::make_unique<BoundedMemoryReader>(bytes);
   std::string reader = reader_for(bytes.first(std::min<size_t>(bytes.size(), 16)),
                                   extension_for(format_hint), source);
-  std::unique_ptr<OIIO::ImageInput> input =
-      open_with(reader, "embedded." + reader, memory.get(), source);
-  return CheckedImageInput(source, std::move(memory), std::move(input));
-}
-
-void CheckedImageInput::read(int channels, OIIO::TypeDesc type, void* pixels) {
-  const OIIO::ImageSpec& spec = input_->spec();
-  // OpenImageIO 2.4 reads a scanline image through a buffer of 64 MiB, whatever the image's size
-  // (every 4 × 4 texture allocated it), unless the read asks for TypeDesc::UNKNOWN — the file's
-  // own types — even when the type asked is the file's. So: read that way, into a buffer of the
-  // image's size, and convert here.
-  auto read_native = [&](void* out) {
-    if (!input_->read_image(0, 0, 0, channels, OIIO::TypeDesc::UNKNOWN, out))
-      throw Error(source_, "cannot decode image: " + input_->geterror());
-  };
-  auto unconvertible = [&](OIIO::TypeDesc from) {
-    return Error(source_, "cannot convert the image's " + std::string(from.c_str()) +
-                              " values to " + type.c_str());
-  };
-  if (spec.channelformats.empty() && spec.format == type) return read_native(pixels);
-  size_t pixel_count = size_t(spec.width) * size_t(spec.height);
-  size_t native_pixel_bytes = spec.pixel_bytes(0, channels, true);
-  std::vector<std::byte> native(pixel_count * native_pixel_bytes);
-  read_native(native.data());
-  auto* out = static_cast<std::byte*>(pixels);
-  if (spec.channelformats.empty()) {
-    // In pieces: the count is an int, and a raised pixel limit may pass more values than it holds.
-    size_t values = pixel_count * size_t(channels);
-    constexpr size_t kPiece = size_t(1) << 24;
-    for (size_t first = 0; first < values; first += kPiece) {
-      int n = int(std::min(kPiece, values - first));
-      if (!OIIO::convert_pixel_values(spec.format, native.data() + first * spec.format.size(), type,
-                                      out + first * type.size(), n))
-        throw unconvertible(spec.format);
-    }
-    return;
-  }
-  // Channels stored in different types (an OpenEXR with half colour and float depth): one
-  // channel at a time, each from its own type.
-  size_t offset = 0;
-  OIIO::stride_t out_pixel_bytes = OIIO::stride_t(channels) * OIIO::stride_t(type.size());
-  for (int c = 0; c < channels; ++c) {
-    OIIO::TypeDesc from = spec.channelformats[size_t(c)];
-    if (!OIIO::convert_image(1, spec.width, spec.height, 1, native.data() + offset, from,
-                             OIIO::stride_t(native_pixel_bytes),
-                             OIIO::stride_t(native_pixel_bytes) * spec.width, OIIO::AutoStride,
-                             out + size_t(c) * type.size(), type, out_pixel_bytes,
-                             out_pixel_bytes * spec.width, OIIO::AutoStride))
-      throw unconvertible(from);
-    offset += from.size();
-  }
+  // The made-up file name is only a name: the codecs read `bytes`.
+  return CheckedImageInput(source,
+                           image_codecs().open(reader, "embedded." + reader, true, bytes, source));
 }
 
 }  // namespace obscura

@@ -12,22 +12,22 @@ namespace {
 
 // Reads every pixel of an opened, checked image into a Texture.
 Texture read_pixels(CheckedImageInput& in, TextureEncoding encoding) {
-  const OIIO::ImageSpec& spec = in.spec();
+  const ImageHeader& header = in.header();
   Texture t;
   t.source = in.source();
   t.name = std::filesystem::path(in.source()).filename().string();
-  t.width = spec.width;
-  t.height = spec.height;
-  t.channels = std::min(spec.nchannels, 4);
+  t.width = header.width;
+  t.height = header.height;
+  t.channels = std::min(header.channels, 4);
   t.encoding = encoding;
   size_t count = size_t(t.width) * t.height * t.channels;
-  if (spec.format == OIIO::TypeDesc::UINT8) {
+  if (header.format == SampleType::kUint8) {
     t.texels_8bit.resize(count);
-    in.read(t.channels, OIIO::TypeDesc::UINT8, t.texels_8bit.data());
+    in.read(t.channels, SampleType::kUint8, t.texels_8bit.data());
   } else {
     // 16-bit integer files are normalized to [0, 1] like 8-bit ones; float files keep values.
     t.texels_float.resize(count);
-    in.read(t.channels, OIIO::TypeDesc::FLOAT, t.texels_float.data());
+    in.read(t.channels, SampleType::kFloat, t.texels_float.data());
   }
   return t;
 }

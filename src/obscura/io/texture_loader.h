@@ -1,5 +1,5 @@
-// Texture images decoded through OpenImageIO, from a file or from bytes in memory (glTF's
-// embedded images).
+// Texture images decoded by the image codecs (image_codecs.h), from a file or from bytes in memory
+// (glTF's embedded images).
 #pragma once
 
 #include <cstddef>
