@@ -22,7 +22,7 @@ void add_raster_effects_options(CLI::App& render, RasterEffectsOptions& o) {
 void validate(const RasterEffectsOptions& o, Renderer renderer) {
   reject_unless_raster(o.registered, renderer);
   if (renderer != Renderer::kRaster) return;
-  if (o.dof != "off" && o.dof != "accumulate" && o.dof != "post")
+  if (!raster::parse_depth_of_field_method(o.dof))
     throw UsageError("--raster-dof must be off, accumulate or post; got '" + o.dof + "'");
   if (o.samples < 1)
     throw UsageError("--raster-samples must be a positive number of frames; got " +
@@ -30,9 +30,8 @@ void validate(const RasterEffectsOptions& o, Renderer renderer) {
 }
 
 void apply_raster_effects_options(const RasterEffectsOptions& o, raster::RenderSettings& s) {
-  s.depth_of_field = o.dof == "off"    ? raster::DepthOfFieldMethod::kOff
-                     : o.dof == "post" ? raster::DepthOfFieldMethod::kPost
-                                       : raster::DepthOfFieldMethod::kAccumulate;
+  s.depth_of_field =
+      raster::parse_depth_of_field_method(o.dof).value_or(raster::DepthOfFieldMethod::kAccumulate);
   s.effect_samples = o.samples;
 }
 

@@ -38,18 +38,14 @@ void validate(const RasterOptions& o, Renderer renderer) {
   if (o.shadow_map_size < 0 || o.shadow_map_size > 16384)
     throw UsageError("--shadow-map must be 0 (no shadows) to 16384 texels; got " +
                      std::to_string(o.shadow_map_size));
-  if (o.shading != "flat" && o.shading != "gouraud" && o.shading != "phong" &&
-      o.shading != "blinn-phong")
+  if (!raster::parse_shading_mode(o.shading))
     throw UsageError("--shading must be flat, gouraud, phong or blinn-phong; got '" + o.shading +
                      "'");
 }
 
 void apply_raster_options(const RasterOptions& o, raster::RenderSettings& s) {
   s.msaa_samples = o.msaa;
-  s.shading = o.shading == "flat"          ? raster::ShadingMode::kFlat
-              : o.shading == "gouraud"     ? raster::ShadingMode::kGouraud
-              : o.shading == "blinn-phong" ? raster::ShadingMode::kBlinnPhong
-                                           : raster::ShadingMode::kPhong;
+  s.shading = raster::parse_shading_mode(o.shading).value_or(raster::ShadingMode::kPhong);
   s.cull_back_faces = o.cull;
   s.wireframe = o.wireframe;
   s.shadow_map_size = o.shadow_map_size;

@@ -98,7 +98,9 @@ void run_render(RenderOptions options, const std::string& job) {
       throw UsageError(
           "--shard splits a frame between separate processes; under mpirun the "
           "ranks share the frame already (leave --shard out)");
-    if (options.tracer.renderer == Renderer::kRaster && options.raster_effects.dof == "post")
+    if (options.tracer.renderer == Renderer::kRaster &&
+        raster::parse_depth_of_field_method(options.raster_effects.dof) ==
+            raster::DepthOfFieldMethod::kPost)
       throw UsageError(
           "--shard: --raster-dof post blurs the whole frame, which no part has; "
           "use --raster-dof accumulate, or render the frame in one process or "

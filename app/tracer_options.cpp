@@ -49,7 +49,7 @@ void validate(TracerOptions& o) {
     throw UsageError("--renderer must be path, whitted, direct or raster; got '" + o.renderer_text +
                      "'");
   o.renderer = *renderer;
-  if (o.sampler != "sobol" && o.sampler != "independent")
+  if (!parse_sampler_type(o.sampler))
     throw UsageError("--sampler must be sobol or independent; got '" + o.sampler + "'");
   bool depth_given = o.max_depth_option && o.max_depth_option->count() > 0;
   if (depth_given && o.max_depth < 1)
@@ -60,7 +60,7 @@ void validate(TracerOptions& o) {
 }
 
 SamplerType sampler_type(const TracerOptions& o) {
-  return o.sampler == "independent" ? SamplerType::kIndependent : SamplerType::kSobol;
+  return parse_sampler_type(o.sampler).value_or(SamplerType::kSobol);
 }
 
 int max_depth(const TracerOptions& o) {

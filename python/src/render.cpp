@@ -20,6 +20,7 @@
 #include "arrays.h"
 #include "bindings.h"
 #include "errors.h"
+#include "obscura/render/renderer.h"
 #include "render_call.h"
 
 namespace obscura::python {
@@ -95,7 +96,8 @@ RenderResult render_frame_py(const Scene& scene, std::optional<Camera> camera,
     if (!known.count(name))
       throw py::value_error("aovs: unknown AOV '" + name +
                             "'; expected 'albedo', 'normal', 'depth' or 'id'");
-  if (renderer == "raster" && std::count(aov_names.begin(), aov_names.end(), "albedo"))
+  const std::optional<Renderer> kind = parse_renderer(renderer);  // unknown: render_call says so
+  if (kind && !renders_albedo(*kind) && std::count(aov_names.begin(), aov_names.end(), "albedo"))
     throw py::value_error(
         "aovs: the rasterizer has no 'albedo' AOV (it has 'normal', 'depth' "
         "and 'id'); the tracer's renderers have all four");

@@ -9,24 +9,19 @@ namespace obscura::python {
 namespace {
 
 SamplerType sampler_named(const std::string& name) {
-  if (name == "sobol") return SamplerType::kSobol;
-  if (name == "independent") return SamplerType::kIndependent;
+  if (std::optional<SamplerType> type = parse_sampler_type(name)) return *type;
   throw Error("sampler", "expected 'sobol' or 'independent', got '" + name + "'");
 }
 
 raster::ShadingMode shading_named(const std::string& name) {
-  if (name == "flat") return raster::ShadingMode::kFlat;
-  if (name == "gouraud") return raster::ShadingMode::kGouraud;
-  if (name == "phong") return raster::ShadingMode::kPhong;
-  if (name == "blinn-phong") return raster::ShadingMode::kBlinnPhong;
+  if (std::optional<raster::ShadingMode> mode = raster::parse_shading_mode(name)) return *mode;
   throw Error("shading",
               "expected 'flat', 'gouraud', 'phong' or 'blinn-phong', got '" + name + "'");
 }
 
 raster::DepthOfFieldMethod depth_of_field_named(const std::string& name) {
-  if (name == "off") return raster::DepthOfFieldMethod::kOff;
-  if (name == "accumulate") return raster::DepthOfFieldMethod::kAccumulate;
-  if (name == "post") return raster::DepthOfFieldMethod::kPost;
+  if (std::optional<raster::DepthOfFieldMethod> method = raster::parse_depth_of_field_method(name))
+    return *method;
   throw Error("raster_dof", "expected 'off', 'accumulate' or 'post', got '" + name + "'");
 }
 

@@ -13,6 +13,7 @@
 #pragma once
 
 #include <cstdint>
+#include <optional>
 #include <string_view>
 
 #include "obscura/math/rng.h"
@@ -25,6 +26,8 @@ enum class SamplerType { kSobol, kIndependent };
 
 // "sobol", "independent"
 std::string_view sampler_type_name(SamplerType type);
+// The type of that name; nothing for any other name.
+std::optional<SamplerType> parse_sampler_type(std::string_view name);
 
 class Sampler {
  public:

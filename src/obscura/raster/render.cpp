@@ -124,6 +124,13 @@ RenderStats render_effects(const Scene& scene, const Camera& camera, const Rende
 
 }  // namespace
 
+std::optional<DepthOfFieldMethod> parse_depth_of_field_method(std::string_view name) {
+  if (name == "off") return DepthOfFieldMethod::kOff;
+  if (name == "accumulate") return DepthOfFieldMethod::kAccumulate;
+  if (name == "post") return DepthOfFieldMethod::kPost;
+  return std::nullopt;
+}
+
 RasterSettings rasterizer_settings(const RenderSettings& s, bool aovs) {
   RasterSettings r;
   r.msaa_samples = s.msaa_samples;

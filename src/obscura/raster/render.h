@@ -10,6 +10,7 @@
 #include <cstdint>
 #include <optional>
 #include <string>
+#include <string_view>
 #include <vector>
 
 #include "obscura/camera/camera.h"
@@ -28,6 +29,8 @@ enum class DepthOfFieldMethod {
   kAccumulate,  // frames through jittered lens points, averaged
   kPost,        // one frame blurred by its z-buffer's circle of confusion
 };
+// "off", "accumulate", "post"; nothing for any other name.
+std::optional<DepthOfFieldMethod> parse_depth_of_field_method(std::string_view name);
 
 struct RenderSettings {
   int msaa_samples = 1;  // 1, 4 or 8

@@ -16,6 +16,14 @@
 
 namespace obscura::raster {
 
+std::optional<ShadingMode> parse_shading_mode(std::string_view name) {
+  if (name == "flat") return ShadingMode::kFlat;
+  if (name == "gouraud") return ShadingMode::kGouraud;
+  if (name == "phong") return ShadingMode::kPhong;
+  if (name == "blinn-phong") return ShadingMode::kBlinnPhong;
+  return std::nullopt;
+}
+
 namespace {
 
 constexpr float kPi = std::numbers::pi_v<float>;

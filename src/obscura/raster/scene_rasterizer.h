@@ -16,6 +16,7 @@
 #include <optional>
 #include <span>
 #include <string>
+#include <string_view>
 #include <vector>
 
 #include "obscura/camera/animated_transform.h"
@@ -43,6 +44,9 @@ enum class ShadingMode {
   kPhong,       // per-pixel lighting with interpolated normals; materials keep their lobes
   kBlinnPhong,  // as kPhong, and Phong materials use the half-vector lobe
 };
+// "flat", "gouraud", "phong", "blinn-phong" (as the command line and Python name them); nothing
+// for any other name.
+std::optional<ShadingMode> parse_shading_mode(std::string_view name);
 
 struct RasterSettings {
   int msaa_samples = 1;  // 1, 4 or 8
