@@ -51,6 +51,14 @@ class Sampler {
     float u = next_1d();
     return {u, next_1d()};
   }
+  // Pass over numbers nobody reads (a pinhole camera's lens point, the shutter time of a still
+  // scene) without computing them: as every number depends only on its dimension, the numbers
+  // drawn after are the same as if these had been drawn.
+  void skip_1d() { ++dimension_; }
+  void skip_2d() {
+    if (type_ == SamplerType::kSobol) dimension_ += dimension_ & 1;
+    dimension_ += 2;
+  }
   uint32_t dimension() const { return dimension_; }
 
  private:

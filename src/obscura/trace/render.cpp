@@ -54,6 +54,13 @@ RenderStats render(const TraceScene& scene, const Camera& camera, const Integrat
   const PreparedCamera prepared_camera = camera.prepare(/*for_many_rays=*/true);
   const FilterSampler filter(camera.film.filter);
   const auto exposure = float(camera.exposure_scale());
+  // Which of the camera's numbers change the image: the lens point only with depth of field, the
+  // time only where something moves during the shutter. The others are skipped, not drawn (most
+  // of a sample's sampler cost where camera rays escape to the environment); a still scene's
+  // rays all carry the shutter's middle.
+  const bool lens_matters = camera.lens.depth_of_field;
+  const bool time_matters = scene.has_motion() || camera.world_from_camera.is_animated();
+  const double still_time = camera.shutter.time_at(0.5);
   auto start = Clock::now();
   RenderStats stats;
   std::mutex stats_mutex;
@@ -87,8 +94,16 @@ RenderStats render(const TraceScene& scene, const Camera& camera, const Integrat
           FilterSample fs = filter.sample({u_filter.x, u_filter.y});
           Point2d film_point(pixel.x + 0.5 + fs.offset_px.x, pixel.y + 0.5 + fs.offset_px.y);
           // 2. A point on the lens and a time in the shutter interval.
-          Point2f u_lens = sampler.next_2d();
-          double time = camera.shutter.time_at(sampler.next_1d()) + delay;
+          Point2f u_lens{0.5f, 0.5f};
+          if (lens_matters)
+            u_lens = sampler.next_2d();
+          else
+            sampler.skip_2d();
+          double time = still_time + delay;
+          if (time_matters)
+            time = camera.shutter.time_at(sampler.next_1d()) + delay;
+          else
+            sampler.skip_1d();
           // 3. The radiance along the ray, exposed, into this pixel with the filter's weight.
           std::optional<CameraRay> ray =
               prepared_camera.generate_ray(film_point, {u_lens.x, u_lens.y}, time);
