@@ -8,6 +8,7 @@
 #include <string>
 #include <vector>
 
+#include "obscura/camera/pinhole_rays.h"
 #include "obscura/camera/pixel_filter.h"
 #include "obscura/math/error.h"
 
@@ -52,6 +53,7 @@ RenderStats render(const TraceScene& scene, const Camera& camera, const Integrat
                               ", " + std::to_string(exposed.close_s) +
                               "] s; build the TraceScene with this camera's exposure interval");
   const PreparedCamera prepared_camera = camera.prepare(/*for_many_rays=*/true);
+  const std::optional<PinholeRays> pinhole = PinholeRays::of(camera);
   const FilterSampler filter(camera.film.filter);
   const auto exposure = float(camera.exposure_scale());
   // Which of the camera's numbers change the image: the lens point only with depth of field, the
@@ -105,12 +107,17 @@ RenderStats render(const TraceScene& scene, const Camera& camera, const Integrat
           else
             sampler.skip_1d();
           // 3. The radiance along the ray, exposed, into this pixel with the filter's weight.
-          std::optional<CameraRay> ray =
-              prepared_camera.generate_ray(film_point, {u_lens.x, u_lens.y}, time);
+          std::optional<Ray> ray;
+          if (pinhole) {
+            ray = pinhole->generate(film_point, time);
+          } else if (std::optional<CameraRay> r =
+                         prepared_camera.generate_ray(film_point, {u_lens.x, u_lens.y}, time)) {
+            ray = r->to_ray();
+          }
           FirstHit first;
-          Rgb radiance = ray ? integrator.radiance(scene, ray->to_ray(), sampler, counts,
-                                                   aovs ? &first : nullptr)
-                             : Rgb();
+          Rgb radiance =
+              ray ? integrator.radiance(scene, *ray, sampler, counts, aovs ? &first : nullptr)
+                  : Rgb();
           film.add_sample({x, y}, radiance * exposure, float(fs.weight));
           if (aovs)
             aovs->add_sample({x, y}, first.hit, first.albedo, first.normal, first.depth, first.id);
