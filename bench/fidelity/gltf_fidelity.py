@@ -123,17 +123,25 @@ def lambert_copy(model, out_dir, name):
 
 # --- renders ---------------------------------------------------------------------------------
 
-def cycles(model, out, name, spp, seed, camera, write_camera=False, threads=2, depth="half"):
+def cycles(model, out, name, spp, seed, camera, write_camera=False, threads=2, depth="half",
+           environment_map=""):
     """Cycles' render composited over the background, as NAME.rgb.exr (`depth`: half or float);
-    returns its path and Blender's log."""
+    returns its path and Blender's log. With `environment_map` (an equirectangular image) the
+    world is that map, as Obscura's `--environment FILE` orients it, and the background is
+    rendered, not composited."""
     script = os.path.join(SHARED, "tools", "peers", "cycles", "gltf_cycles.py")
     # linear_textures.py: Cycles filters colour textures in linear light, as Obscura does.
     cmd = ["blender", "-b", "--factory-startup", "--python",
-           os.path.join(HERE, "linear_textures.py"), "--python", script, "--", "--model", model,
+           os.path.join(HERE, "linear_textures.py")]
+    env = None
+    if environment_map:
+        cmd += ["--python", os.path.join(HERE, "environment_map.py")]
+        env = dict(os.environ, OBSCURA_FIDELITY_ENVMAP=environment_map)
+    cmd += ["--python", script, "--", "--model", model,
            "--out", out, "--name", name, "--spp", str(spp), "--seed", str(seed), "--threads",
            str(threads), "--max-bounces", "64", "--fov", "40", "--size", str(SIZE), "--diffuse"]
     cmd += (["--write-camera", camera] if write_camera else ["--camera", camera])
-    log = run(cmd)
+    log = run(cmd, env=env)
     # Transparent film: composite over the background radiance 1, keep RGB, store as half.
     rgba = os.path.join(out, name + ".exr")
     opaque = os.path.join(out, name + ".rgb.exr")
