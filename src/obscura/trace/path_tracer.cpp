@@ -82,23 +82,37 @@ Rgb PathTracer::radiance(const TraceScene& scene, const Ray& camera_ray, Sampler
     }
     if (depth + 1 >= settings_.max_depth) break;
 
-    // Numbers for this vertex, all drawn before any is used so dimensions stay aligned path by
-    // path. Drawn only here, past the exits above, which need none: a path that escapes (most
-    // camera rays under an environment) or ends draws nothing more, and as the sampler's numbers
-    // depend only on the dimension, every number used is the same as when drawn up front.
-    float u_light_select = sampler.next_1d();
-    Point2f u_light = sampler.next_2d();
-    float u_lobe = sampler.next_1d();
-    Point2f u_bsdf = sampler.next_2d();
-    float u_roulette = sampler.next_1d();
-
     AnyBsdf bsdf = material.bsdf_at(*hit);
     ShadingFrame frame = frame_for(*hit, bsdf, wo);
     bsdf.orient(frame);
     Vector3f wo_local = frame.to_local(wo);
+    const bool sample_light =
+        use_light_sampling && !bsdf.is_delta() && !lights.empty(light_sampling);
+    const bool roulette = depth + 1 >= settings_.roulette_depth;
+
+    // Numbers for this vertex, at the same dimensions path by path. Drawn only here, past the
+    // exits above, which need none: a path that escapes (most camera rays under an environment)
+    // or ends draws nothing more. Numbers this vertex will not use (no light to sample, no
+    // roulette yet) are skipped rather than computed; as the sampler's numbers depend only on
+    // the dimension, every number used is the same as when all are drawn up front.
+    float u_light_select = 0, u_roulette = 0;
+    Point2f u_light;
+    if (sample_light) {
+      u_light_select = sampler.next_1d();
+      u_light = sampler.next_2d();
+    } else {
+      sampler.skip_1d();
+      sampler.skip_2d();
+    }
+    float u_lobe = sampler.next_1d();
+    Point2f u_bsdf = sampler.next_2d();
+    if (roulette)
+      u_roulette = sampler.next_1d();
+    else
+      sampler.skip_1d();
 
     // 3. Next-event estimation: a light sample, shadow ray, MIS weight against the BSDF.
-    if (use_light_sampling && !bsdf.is_delta() && !lights.empty(light_sampling)) {
+    if (sample_light) {
       std::optional<LightSample> ls =
           lights.sample(hit->position, u_light_select, u_light, light_sampling);
       if (ls && ls->pdf > 0 && !ls->radiance.is_black()) {
@@ -132,7 +146,7 @@ Rgb PathTracer::radiance(const TraceScene& scene, const Ray& camera_ray, Sampler
 
     // 5. Russian roulette: continue with probability ∝ throughput, reweighting survivors.
     Rgb rr_beta = beta * eta_scale;
-    if (depth + 1 >= settings_.roulette_depth) {
+    if (roulette) {
       float q = std::max(0.f, 1 - rr_beta.max_component());
       if (u_roulette < q) break;
       beta = beta / (1 - q);
