@@ -111,5 +111,44 @@ TEST(Sampler, SobolMeanConvergesFasterThanIndependent) {
   EXPECT_LT(error(SamplerType::kSobol) * 3, error(SamplerType::kIndependent));
 }
 
+// Skipping numbers nobody reads must leave every later number as drawing them would: images
+// stay the same whether or not a camera or a vertex skips its unused numbers.
+TEST(Sampler, SkippedNumbersLeaveTheLaterOnesUnchanged) {
+  for (SamplerType type : {SamplerType::kSobol, SamplerType::kIndependent})
+    for (uint32_t index : {0u, 3u, 200u}) {
+      Sampler drawn(type, 11, {5, 9}, index), skipped(type, 11, {5, 9}, index);
+      for (int vertex = 0; vertex < 6; ++vertex) {
+        // As the path tracer's vertex: 1d, 2d, 1d, 2d, 1d; odd vertices skip their first three.
+        float a = drawn.next_1d();
+        Point2f b = drawn.next_2d();
+        if (vertex % 2) {
+          skipped.skip_1d();
+          skipped.skip_2d();
+        } else {
+          EXPECT_EQ(skipped.next_1d(), a);
+          EXPECT_EQ(skipped.next_2d(), b);
+        }
+        EXPECT_EQ(skipped.next_1d(), drawn.next_1d());
+        Point2f c = drawn.next_2d();
+        EXPECT_EQ(skipped.next_2d(), c);
+        EXPECT_EQ(skipped.dimension(), drawn.dimension());
+      }
+    }
+}
+
+// A pixel's cached pair hashes, shared by its samples, give the numbers the sampler computes on
+// its own: past the cache's pairs too.
+TEST(Sampler, CachedPixelKeysGiveTheSameNumbers) {
+  for (Point2i pixel : {Point2i(0, 0), Point2i(17, -3)}) {
+    SobolPixelKeys keys(42, pixel);
+    for (uint32_t index : {0u, 1u, 2u, 77u}) {
+      Sampler cached(SamplerType::kSobol, 42, pixel, index, keys);
+      Sampler own(SamplerType::kSobol, 42, pixel, index);
+      for (uint32_t d = 0; d < 2 * SobolPixelKeys::kPairs + 9; ++d)
+        EXPECT_EQ(cached.next_1d(), own.next_1d()) << "dimension " << d;
+    }
+  }
+}
+
 }  // namespace
 }  // namespace obscura

@@ -29,6 +29,41 @@ std::string_view sampler_type_name(SamplerType type);
 // The type of that name; nothing for any other name.
 std::optional<SamplerType> parse_sampler_type(std::string_view name);
 
+// The Sobol sampler's per-pair hashes of one (seed, pixel): the same for every sample of the pixel,
+// so a render loop that takes a pixel's samples one after another keeps them here and each is
+// computed once per pixel instead of once per sample. Filled on first use.
+class SobolPixelKeys {
+ public:
+  static constexpr uint32_t kPairs = 32;  // the camera's and about ten path vertices'
+
+  SobolPixelKeys(uint64_t seed, Point2i pixel)
+      : seed_pixel_hash_(
+            hash_words_first(seed, (uint64_t(uint32_t(pixel.y)) << 32) | uint32_t(pixel.x))) {}
+  uint64_t seed_pixel_hash() const { return seed_pixel_hash_; }
+  // hash_words(seed, pixel key, pair, 0x50b01u) and its mix_bits (component 1's scramble seed).
+  struct Pair {
+    uint64_t key, mixed;
+  };
+  static Pair compute(uint64_t seed_pixel_hash, uint32_t pair) {
+    uint64_t key = hash_words_last(seed_pixel_hash, pair, 0x50b01u);
+    return {key, mix_bits(key)};
+  }
+  Pair pair(uint32_t pair) {
+    if (pair >= kPairs) return compute(seed_pixel_hash_, pair);
+    const uint32_t bit = 1u << pair;
+    if (!(filled_ & bit)) {
+      pairs_[pair] = compute(seed_pixel_hash_, pair);
+      filled_ |= bit;
+    }
+    return pairs_[pair];
+  }
+
+ private:
+  uint64_t seed_pixel_hash_;
+  uint32_t filled_ = 0;
+  Pair pairs_[kPairs];
+};
+
 class Sampler {
  public:
   Sampler(SamplerType type, uint64_t seed, Point2i pixel, uint32_t sample_index)
@@ -38,6 +73,13 @@ class Sampler {
       uint64_t pixel_key = (uint64_t(uint32_t(pixel_.y)) << 32) | uint32_t(pixel_.x);
       seed_pixel_hash_ = hash_words_first(seed_, pixel_key);
     }
+  }
+  // The same numbers, with the pair hashes taken from `keys`, which must be those of this
+  // (seed, pixel) and outlive the sampler.
+  Sampler(SamplerType type, uint64_t seed, Point2i pixel, uint32_t sample_index,
+          SobolPixelKeys& keys)
+      : type_(type), seed_(seed), pixel_(pixel), sample_index_(sample_index), keys_(&keys) {
+    seed_pixel_hash_ = keys.seed_pixel_hash();
   }
 
   float next_1d() {
@@ -66,14 +108,14 @@ class Sampler {
     if (pair != pair_) {
       pair_ = pair;
       // hash_words(seed_, pixel key, pair, 0x50b01u), its first half mixed at construction.
-      pair_key_ = hash_words_last(seed_pixel_hash_, pair, 0x50b01u);
+      pair_keys_ = keys_ ? keys_->pair(pair) : SobolPixelKeys::compute(seed_pixel_hash_, pair);
       // Shuffle which Sobol point this sample gets: scrambling the index from its high bits
       // down maps the first 2^k indices onto an aligned block of 2^k, whose points form a net.
-      pair_index_ = owen_scramble(sample_index_, uint32_t(pair_key_));
+      pair_index_ = owen_scramble(sample_index_, uint32_t(pair_keys_.key));
     }
     uint32_t bits = sobol_bits(pair_index_, component);
     uint32_t scramble_seed =
-        component == 0 ? uint32_t(pair_key_ >> 32) : uint32_t(mix_bits(pair_key_));
+        component == 0 ? uint32_t(pair_keys_.key >> 32) : uint32_t(pair_keys_.mixed);
     return fraction_to_float(owen_scramble(bits, scramble_seed));
   }
 
@@ -84,8 +126,9 @@ class Sampler {
   uint32_t dimension_ = 0;
   // The current pair's hash and shuffled index, computed once for its two components.
   uint32_t pair_ = ~0u, pair_index_ = 0;
-  uint64_t pair_key_ = 0;
-  uint64_t seed_pixel_hash_ = 0;  // hash_words_first(seed, pixel), Sobol only
+  SobolPixelKeys::Pair pair_keys_{};
+  uint64_t seed_pixel_hash_ = 0;    // hash_words_first(seed, pixel), Sobol only
+  SobolPixelKeys* keys_ = nullptr;  // the pixel's cached pair hashes, if given
 };
 
 }  // namespace obscura

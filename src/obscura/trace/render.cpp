@@ -89,8 +89,11 @@ RenderStats render(const TraceScene& scene, const Camera& camera, const Integrat
         // A rolling shutter exposes the pixel's sensor line later: every sample of the pixel
         // takes its line's delay.
         const double delay = camera.readout_delay_s({pixel.x + 0.5, pixel.y + 0.5});
+        SobolPixelKeys keys(settings.seed, pixel);
         for (int s = first_sample; s < end_sample; ++s) {
-          Sampler sampler(settings.sampler, settings.seed, pixel, uint32_t(s));
+          Sampler sampler = settings.sampler == SamplerType::kSobol
+                                ? Sampler(settings.sampler, settings.seed, pixel, uint32_t(s), keys)
+                                : Sampler(settings.sampler, settings.seed, pixel, uint32_t(s));
           // 1. A film point around the pixel centre, distributed as the reconstruction filter.
           Point2f u_filter = sampler.next_2d();
           FilterSample fs = filter.sample({u_filter.x, u_filter.y});
