@@ -10,6 +10,7 @@
 #include <tbb/parallel_pipeline.h>
 #include <tbb/task_arena.h>
 
+#include "obscura/io/first_index_table.h"
 #include "obscura/io/flat_index_map.h"
 #include "obscura/io/mesh_file.h"
 #include "obscura/io/mtl_reader.h"
@@ -28,12 +29,13 @@ struct MeshBuild {
   Mesh mesh;
   std::string object;    // the instance's name
   std::string material;  // "" = DefaultMaterial
-  // Each distinct (v, vt, vn) the faces use → its vertex. The indices are canonical: the first
-  // of the v (vt, vn) lines with the same values, so that a position written twice in the file
-  // is one vertex, as Assimp's vertex joining made it.
+  // Each distinct (v, vt, vn) the faces use → its vertex, but for those held by
+  // ObjReader::first_use_. The indices are canonical: the first of the v (vt, vn) lines with the
+  // same values, so that a position written twice in the file is one vertex, as Assimp's vertex
+  // joining made it.
   FlatIndexMap<3> corners;
   std::vector<uint8_t> has_normal;  // per vertex
-  uint32_t serial = 0;              // which mesh this is, for ObjReader::last_use_
+  uint32_t serial = 0;              // which mesh this is, for ObjReader::first_use_
 };
 
 // Takes the statements of each block in file order and builds the scene: what depends on the
@@ -44,14 +46,18 @@ class ObjReader {
       : name_(name), base_dir_(base_dir) {}
 
   void take(const ObjStatements& block) {
-    for (const ObjStatement& s : block.statements) {
+    const std::vector<ObjStatement>& statements = block.statements;
+    constexpr size_t kAhead = 8;
+    for (size_t i = 0; i < statements.size(); ++i) {
+      if (i + kAhead < statements.size()) prefetch(block, statements[i + kAhead]);
+      const ObjStatement& s = statements[i];
       line_number_ = first_line_ + s.line;
       switch (s.keyword) {
         case ObjKeyword::kV:
           vertex_position(&block.floats[s.begin], s.count);
           break;
         case ObjKeyword::kVt:
-          texture_coordinate(block.floats[s.begin], block.floats[s.begin + 1]);
+          texture_coordinate(&block.floats[s.begin]);
           break;
         case ObjKeyword::kVn:
           normal(&block.floats[s.begin]);
@@ -90,32 +96,61 @@ class ObjReader {
     throw Error(name_ + ":" + std::to_string(line_number_), message);
   }
 
-  void vertex_position(const float* v, uint32_t count) {
-    positions_.push_back({v[0], v[1], v[2]});
-    last_use_.emplace_back();
-    Rgb color(1.f);
-    if (count == 6) {
-      if (colors_.size() < positions_.size() - 1) colors_.resize(positions_.size() - 1, Rgb(1.f));
-      color = {v[3], v[4], v[5]};
-      colors_.push_back(color);
-    }
-    auto key = FlatIndexMap<6>::float_key(v[0], v[1], v[2], color.r, color.g, color.b);
-    canonical_v_.push_back(
-        int32_t(position_index_.find_or_add(key, uint32_t(positions_.size() - 1)).first));
+  // The values a v, vt or vn line is shared by: a position's colour is part of it (white if it
+  // has none), and texture coordinates are compared as written.
+  static std::array<uint32_t, 6> position_key(const float* v, uint32_t count) {
+    return count == 6 ? float_words(v[0], v[1], v[2], v[3], v[4], v[5])
+                      : float_words(v[0], v[1], v[2], 1.f, 1.f, 1.f);
+  }
+  static std::array<uint32_t, 2> uv_key(const float* uv) { return float_words(uv[0], uv[1]); }
+  static std::array<uint32_t, 3> normal_key(const float* n) {
+    return float_words(n[0], n[1], n[2]);
   }
 
-  void texture_coordinate(float u, float v) {
-    uvs_.push_back({u, 1 - v});  // glTF's convention: v = 0 at the image's top
-    canonical_vt_.push_back(int32_t(
-        uv_index_.find_or_add(FlatIndexMap<2>::float_key(u, v), uint32_t(uvs_.size() - 1)).first));
+  // Brings in the table slots that the statement `ahead` will look up: each lookup of a large
+  // file's tables is a cache miss, and taking several at once hides most of their latency.
+  void prefetch(const ObjStatements& block, const ObjStatement& ahead) const {
+    const float* f = block.floats.data() + ahead.begin;
+    if (ahead.keyword == ObjKeyword::kV)
+      position_index_.prefetch(hash_words(position_key(f, ahead.count)));
+    else if (ahead.keyword == ObjKeyword::kVt)
+      uv_index_.prefetch(hash_words(uv_key(f)));
+    else if (ahead.keyword == ObjKeyword::kVn)
+      normal_index_.prefetch(hash_words(normal_key(f)));
+  }
+
+  void vertex_position(const float* v, uint32_t count) {
+    positions_.push_back({v[0], v[1], v[2]});
+    first_use_.emplace_back();
+    if (count == 6) {
+      if (colors_.size() < positions_.size() - 1) colors_.resize(positions_.size() - 1, Rgb(1.f));
+      colors_.push_back({v[3], v[4], v[5]});
+    }
+    const auto key = position_key(v, count);
+    canonical_v_.push_back(int32_t(position_index_.find_or_add(
+        hash_words(key), uint32_t(positions_.size() - 1), [&](uint32_t j) {
+          Point3f p = positions_[j];
+          Rgb c = j < colors_.size() ? colors_[j] : Rgb(1.f);
+          return float_words(p.x, p.y, p.z, c.r, c.g, c.b) == key;
+        })));
+  }
+
+  void texture_coordinate(const float* uv) {
+    uvs_.push_back({uv[0], uv[1]});
+    const auto key = uv_key(uv);
+    canonical_vt_.push_back(
+        int32_t(uv_index_.find_or_add(hash_words(key), uint32_t(uvs_.size() - 1), [&](uint32_t j) {
+          return float_words(uvs_[j].x, uvs_[j].y) == key;
+        })));
   }
 
   void normal(const float* n) {
     normals_.push_back({n[0], n[1], n[2]});
-    canonical_vn_.push_back(int32_t(normal_index_
-                                        .find_or_add(FlatIndexMap<3>::float_key(n[0], n[1], n[2]),
-                                                     uint32_t(normals_.size() - 1))
-                                        .first));
+    const auto key = normal_key(n);
+    canonical_vn_.push_back(int32_t(
+        normal_index_.find_or_add(hash_words(key), uint32_t(normals_.size() - 1), [&](uint32_t j) {
+          return float_words(normals_[j].x, normals_[j].y, normals_[j].z) == key;
+        })));
   }
 
   MeshBuild* current() { return objects_.empty() ? nullptr : &objects_.back().back(); }
@@ -186,21 +221,26 @@ class ObjReader {
     auto v = uint32_t(canonical_v_[corner.v]);
     int32_t vt = corner.vt == kNone ? kNone : canonical_vt_[corner.vt];
     int32_t vn = corner.vn == kNone ? kNone : canonical_vn_[corner.vn];
-    // Neighbouring faces share corners: most lookups are answered here, in file order, without
-    // the random access of the hash table.
-    LastUse& last = last_use_[v];
-    if (last.mesh == m.serial && last.vt == vt && last.vn == vn) return last.vertex;
-    auto next = uint32_t(m.mesh.positions.size());
-    auto [index, added] = m.corners.find_or_add({v, uint32_t(vt), uint32_t(vn)}, next);
-    last = {m.serial, vt, vn, index};
-    if (!added) return index;
+    // A position's first (mesh, vt, vn) is looked up by its index, without the random access of
+    // a hash table: in most files it is the only one. Later ones (seams, meshes sharing
+    // positions) go to the mesh's table.
+    FirstUse& first = first_use_[v];
+    if (first.mesh == m.serial && first.vt == vt && first.vn == vn) return first.vertex;
+    auto index = uint32_t(m.mesh.positions.size());
+    if (first.mesh == FirstUse::kNone) {
+      first = {m.serial, vt, vn, index};
+    } else {
+      auto [found, added] = m.corners.find_or_add({v, uint32_t(vt), uint32_t(vn)}, index);
+      if (!added) return found;
+    }
     // Attributes are stored from the first vertex that has one (earlier vertices get the
     // default), so a mesh without uvs, normals or colours never allocates them.
     size_t at = m.mesh.positions.size();
     m.mesh.positions.push_back(positions_[corner.v]);  // equal to the canonical one's
     if (corner.vt != kNone) {
       pad(m.mesh.uvs, at, kNoUv);
-      m.mesh.uvs.push_back(uvs_[corner.vt]);
+      const Point2f uv = uvs_[corner.vt];
+      m.mesh.uvs.push_back({uv.x, 1 - uv.y});  // glTF's convention: v = 0 at the image's top
     }
     if (corner.vn != kNone) {
       pad(m.mesh.normals, at, Normal3f());
@@ -295,6 +335,8 @@ class ObjReader {
         normals[i] = unit(to_vector(normals[i]), ok);
         m.has_normal[i] = ok;
       }
+    if (std::all_of(m.has_normal.begin(), m.has_normal.end(), [](uint8_t has) { return has; }))
+      return;  // nothing to fill: skip the per-vertex sums
     std::vector<Vector3f> sums(normals.size());
     const std::vector<Point3f>& p = m.mesh.positions;
     const std::vector<uint32_t>& idx = m.mesh.indices;
@@ -370,24 +412,23 @@ class ObjReader {
   size_t line_number_ = 0;  // of the statement being taken
   std::string base_dir_;
   std::vector<Point3f> positions_;
-  std::vector<Rgb> colors_;  // only as long as the last vertex that had a colour
-  std::vector<Point2f> uvs_;
+  std::vector<Rgb> colors_;   // only as long as the last vertex that had a colour
+  std::vector<Point2f> uvs_;  // as written (v = 0 at the image's bottom)
   std::vector<Normal3f> normals_;
   std::vector<Corner> corners_;
   std::vector<uint32_t> polygon_;  // the current face's vertices
-  // Per canonical v: the mesh vertex its last corner became, and with which vt and vn.
-  struct LastUse {
-    uint32_t mesh = ~0u;
+  // Per canonical v: the mesh, vt and vn of the first corner that used it, and its vertex.
+  struct FirstUse {
+    static constexpr uint32_t kNone = ~0u;
+    uint32_t mesh = kNone;
     int32_t vt = 0, vn = 0;
     uint32_t vertex = 0;
   };
-  std::vector<LastUse> last_use_;
+  std::vector<FirstUse> first_use_;
   uint32_t mesh_count_ = 0;
   // Per v/vt/vn line, the first line with the same values, and the maps that find it.
   std::vector<int32_t> canonical_v_, canonical_vt_, canonical_vn_;
-  FlatIndexMap<6> position_index_;
-  FlatIndexMap<2> uv_index_;
-  FlatIndexMap<3> normal_index_;
+  FirstIndexTable position_index_, uv_index_, normal_index_;
   // Objects in file order, each with its meshes in order of creation; faces go to the last.
   std::vector<std::vector<MeshBuild>> objects_;
   std::string material_;
