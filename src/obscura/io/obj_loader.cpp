@@ -110,13 +110,13 @@ class ObjReader {
   // Brings in the table slots that the statement `ahead` will look up: each lookup of a large
   // file's tables is a cache miss, and taking several at once hides most of their latency.
   void prefetch(const ObjStatements& block, const ObjStatement& ahead) const {
-    const float* f = block.floats.data() + ahead.begin;
+    // `begin` indexes the floats only for these three (a face's indexes its corners).
     if (ahead.keyword == ObjKeyword::kV)
-      position_index_.prefetch(hash_words(position_key(f, ahead.count)));
+      position_index_.prefetch(hash_words(position_key(&block.floats[ahead.begin], ahead.count)));
     else if (ahead.keyword == ObjKeyword::kVt)
-      uv_index_.prefetch(hash_words(uv_key(f)));
+      uv_index_.prefetch(hash_words(uv_key(&block.floats[ahead.begin])));
     else if (ahead.keyword == ObjKeyword::kVn)
-      normal_index_.prefetch(hash_words(normal_key(f)));
+      normal_index_.prefetch(hash_words(normal_key(&block.floats[ahead.begin])));
   }
 
   void vertex_position(const float* v, uint32_t count) {
