@@ -5,12 +5,17 @@
 #include <chrono>
 #include <cstdio>
 #include <memory>
+#include <optional>
 #include <variant>
+
+#include <tbb/global_control.h>
 
 #include "image_limit_option.h"
 #include "obscura/io/scene_loader.h"
 #include "obscura/scene/material_variants.h"
+#include "obscura/trace/trace_scene.h"
 #include "scene_choice_options.h"
+#include "usage_error.h"
 
 namespace obscura::app {
 
@@ -37,14 +42,60 @@ const char* light_type(const LightModel& model) {
   return "directional";
 }
 
-void run_info(const std::string& name, bool verbose, const SceneChoiceOptions& choice,
-              const std::string& variant) {
-  auto start = std::chrono::steady_clock::now();
+double peak_resident_bytes() {
+  rusage usage{};
+  getrusage(RUSAGE_SELF, &usage);
+  return double(usage.ru_maxrss) * 1024;  // ru_maxrss is in kilobytes on Linux
+}
+
+// Wall time and the CPU time of all the process's threads (user + system) since a start.
+struct Stopwatch {
+  std::chrono::steady_clock::time_point wall = std::chrono::steady_clock::now();
+  double cpu = cpu_seconds();
+
+  static double cpu_seconds() {
+    rusage usage{};
+    getrusage(RUSAGE_SELF, &usage);
+    auto seconds = [](timeval t) { return double(t.tv_sec) + double(t.tv_usec) * 1e-6; };
+    return seconds(usage.ru_utime) + seconds(usage.ru_stime);
+  }
+  double wall_seconds() const {
+    return std::chrono::duration<double>(std::chrono::steady_clock::now() - wall).count();
+  }
+  double cpu_seconds_since() const { return cpu_seconds() - cpu; }
+};
+
+struct InfoOptions {
+  bool verbose = false;
+  bool bvh = false;  // also build the tracer's scene (Embree's BVH), timed
+  int threads = 0;   // for the BVH build; 0 = all cores
+  std::string variant;
+};
+
+void run_info(const std::string& name, const SceneChoiceOptions& choice,
+              const InfoOptions& options) {
+  if (options.threads < 0)
+    throw UsageError("--threads must be 0 (all cores) or positive; got " +
+                     std::to_string(options.threads));
+  std::optional<tbb::global_control> thread_limit;
+  if (options.threads > 0)
+    thread_limit.emplace(tbb::global_control::max_allowed_parallelism, size_t(options.threads));
+  const std::string& variant = options.variant;
+  const double baseline_bytes = peak_resident_bytes();  // what the process held before loading
+  Stopwatch load;
   Scene scene = load_scene(name, gltf_load_options(choice, Shutter{}));
   if (!variant.empty()) select_material_variant(scene, variant);
-  double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-  rusage usage{};
-  getrusage(RUSAGE_SELF, &usage);  // ru_maxrss is in kilobytes on Linux
+  const double seconds = load.wall_seconds(), cpu_seconds = load.cpu_seconds_since();
+  double bvh_seconds = 0, bvh_cpu_seconds = 0, embree_bytes = 0;
+  if (options.bvh) {
+    Stopwatch build;
+    auto device = std::make_shared<EmbreeDevice>();
+    TraceScene trace(scene, device);
+    bvh_seconds = build.wall_seconds();
+    bvh_cpu_seconds = build.cpu_seconds_since();
+    embree_bytes = double(device->memory_bytes());
+  }
+  const double peak_bytes = peak_resident_bytes();
 
   SceneStats s = scene.stats();
   Bounds3f b = scene.bounds();
@@ -73,12 +124,18 @@ void run_info(const std::string& name, bool verbose, const SceneChoiceOptions& c
     std::printf("bounds       (%.4g, %.4g, %.4g) to (%.4g, %.4g, %.4g), size %.4g x %.4g x %.4g\n",
                 b.min.x, b.min.y, b.min.z, b.max.x, b.max.y, b.max.z, b.max.x - b.min.x,
                 b.max.y - b.min.y, b.max.z - b.min.z);
-  std::printf("load time    %.3f s\n", seconds);
-  std::printf("memory       %s in the scene (%.1f bytes per stored triangle), %s peak process\n",
-              megabytes(double(s.memory_bytes)).c_str(),
-              s.unique_triangles ? double(s.memory_bytes) / double(s.unique_triangles) : 0.0,
-              megabytes(double(usage.ru_maxrss) * 1024).c_str());
-  if (verbose) {
+  std::printf("load time    %.3f s (%.3f s CPU)\n", seconds, cpu_seconds);
+  if (options.bvh)
+    std::printf("bvh build    %.3f s (%.3f s CPU) for the tracer's scene; Embree holds %s\n",
+                bvh_seconds, bvh_cpu_seconds, megabytes(embree_bytes).c_str());
+  std::printf(
+      "memory       %s in the scene (%.1f bytes per stored triangle), %s peak process (%s above "
+      "the %s before loading)\n",
+      megabytes(double(s.memory_bytes)).c_str(),
+      s.unique_triangles ? double(s.memory_bytes) / double(s.unique_triangles) : 0.0,
+      megabytes(peak_bytes).c_str(), megabytes(peak_bytes - baseline_bytes).c_str(),
+      megabytes(baseline_bytes).c_str());
+  if (options.verbose) {
     for (const Material& m : scene.materials)
       std::printf("  material   %s (%s)\n", m.name.c_str(),
                   std::string(material_type_name(m.model)).c_str());
@@ -101,20 +158,24 @@ void run_info(const std::string& name, bool verbose, const SceneChoiceOptions& c
 
 void add_info_command(CLI::App& app) {
   auto scene = std::make_shared<std::string>();
-  auto verbose = std::make_shared<bool>(false);
-  auto variant = std::make_shared<std::string>();
+  auto options = std::make_shared<InfoOptions>();
   auto choice = std::make_shared<SceneChoiceOptions>();
   CLI::App* info =
       app.add_subcommand("info", "Print what a scene holds: counts, bounds, load time, memory");
   info->add_option("scene", *scene,
                    "A scene file or a built-in scene name; default: the Cornell box");
-  info->add_flag("-v,--verbose", *verbose, "Also list materials, textures, lights and cameras");
-  info->add_option("--gltf-variant", *variant,
+  info->add_flag("-v,--verbose", options->verbose,
+                 "Also list materials, textures, lights and cameras");
+  info->add_flag(
+      "--bvh", options->bvh,
+      "Also build the path tracer's scene (Embree's BVH) and report its time and memory");
+  info->add_option("--threads", options->threads,
+                   "Threads for the loaders and the BVH build (0 = all cores)");
+  info->add_option("--gltf-variant", options->variant,
                    "Select a glTF material variant (KHR_materials_variants) by name");
   add_scene_choice_options(*info, *choice);
   add_max_image_pixels_option(info);
-  info->callback(
-      [scene, verbose, choice, variant] { run_info(*scene, *verbose, *choice, *variant); });
+  info->callback([scene, choice, options] { run_info(*scene, *choice, *options); });
 }
 
 }  // namespace obscura::app

@@ -19,6 +19,19 @@ TEST(InfoCli, PrintsCountsOfAFile) {
     EXPECT_THAT(r.output, testing::HasSubstr(field));
 }
 
+TEST(InfoCli, BvhBuildsTheTracerSceneAndReportsIt) {
+  test::CommandResult r = test::run_cli(
+      "info --bvh --threads 1 " + test::source_path("scenes/assets/bunny/bun_zipper_res2.ply"));
+  EXPECT_EQ(r.exit_code, 0) << r.output;
+  EXPECT_THAT(r.output, testing::HasSubstr("16,301 rendered"));
+  EXPECT_THAT(r.output, testing::ContainsRegex("bvh build +[0-9.]+ s \\([0-9.]+ s CPU\\)"));
+  EXPECT_THAT(r.output, testing::ContainsRegex("Embree holds [0-9.]+ MB"));
+  EXPECT_THAT(r.output, testing::ContainsRegex("MB above the [0-9.]+ MB before loading"));
+  r = test::run_cli("info --threads -1 gltf-spheres");
+  EXPECT_EQ(r.exit_code, 2) << r.output;
+  EXPECT_THAT(r.output, testing::HasSubstr("--threads"));
+}
+
 TEST(InfoCli, BuiltInScenesByName) {
   test::CommandResult r = test::run_cli("info gltf-spheres");
   EXPECT_EQ(r.exit_code, 0) << r.output;

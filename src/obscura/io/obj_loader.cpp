@@ -5,11 +5,17 @@
 #include <cmath>
 #include <filesystem>
 #include <map>
+#include <memory>
 
-#include "obscura/io/file_lines.h"
+#include <tbb/parallel_pipeline.h>
+#include <tbb/task_arena.h>
+
+#include "obscura/io/first_index_table.h"
 #include "obscura/io/flat_index_map.h"
 #include "obscura/io/mesh_file.h"
 #include "obscura/io/mtl_reader.h"
+#include "obscura/io/obj_statements.h"
+#include "obscura/io/text_blocks.h"
 #include "obscura/io/texture_loader.h"
 #include "obscura/math/error.h"
 
@@ -23,92 +29,128 @@ struct MeshBuild {
   Mesh mesh;
   std::string object;    // the instance's name
   std::string material;  // "" = DefaultMaterial
-  // Each distinct (v, vt, vn) the faces use → its vertex. The indices are canonical: the first
-  // of the v (vt, vn) lines with the same values, so that a position written twice in the file
-  // is one vertex, as Assimp's vertex joining made it.
+  // Each distinct (v, vt, vn) the faces use → its vertex, but for those held by
+  // ObjReader::first_use_. The indices are canonical: the first of the v (vt, vn) lines with the
+  // same values, so that a position written twice in the file is one vertex, as Assimp's vertex
+  // joining made it.
   FlatIndexMap<3> corners;
   std::vector<uint8_t> has_normal;  // per vertex
-  uint32_t serial = 0;              // which mesh this is, for ObjReader::last_use_
+  uint32_t serial = 0;              // which mesh this is, for ObjReader::first_use_
 };
 
-// `Lines` is LineReader (bytes in memory) or FileLines (a file streamed in chunks).
-template <typename Lines>
+// Takes the statements of each block in file order and builds the scene: what depends on the
+// lines before (index resolution, vertex sharing, objects, materials).
 class ObjReader {
  public:
-  ObjReader(Lines& lines, const std::string& name, const std::string& base_dir)
-      : lines_(lines), name_(name), base_dir_(base_dir) {}
+  ObjReader(const std::string& name, const std::string& base_dir)
+      : name_(name), base_dir_(base_dir) {}
 
-  Scene read() {
-    std::string_view line;
-    while (lines_.next(line)) {
-      TextCursor c{line.data(), line.data() + line.size()};
-      std::string_view keyword = c.token();
-      if (keyword.empty() || keyword[0] == '#') continue;
-      if (keyword == "v") {
-        vertex_position(c);
-      } else if (keyword == "vt") {
-        float uv[2] = {0, 0};
-        if (!c.number(uv[0])) fail("expected 'vt U [V [W]]'");
-        c.number(uv[1]);
-        finite(uv[0]) && finite(uv[1]) ? void() : fail("texture coordinate is not finite");
-        uvs_.push_back({uv[0], 1 - uv[1]});  // glTF's convention: v = 0 at the image's top
-        canonical_vt_.push_back(int32_t(
-            uv_index_
-                .find_or_add(FlatIndexMap<2>::float_key(uv[0], uv[1]), uint32_t(uvs_.size() - 1))
-                .first));
-      } else if (keyword == "vn") {
-        float n[3];
-        for (float& x : n)
-          if (!c.number(x)) fail("expected 'vn X Y Z'");
-        if (!finite(n[0]) || !finite(n[1]) || !finite(n[2])) fail("normal is not finite");
-        normals_.push_back({n[0], n[1], n[2]});
-        canonical_vn_.push_back(
-            int32_t(normal_index_
-                        .find_or_add(FlatIndexMap<3>::float_key(n[0], n[1], n[2]),
-                                     uint32_t(normals_.size() - 1))
-                        .first));
-      } else if (keyword == "f") {
-        face(c);
-      } else if (keyword == "o" || keyword == "g") {
-        std::string object(c.rest());
-        // An unnamed "o"/"g", or a "g" naming the current object, keeps the current object.
-        if (!object.empty() && !(keyword == "g" && current() && current()->object == object))
-          start_object(object);
-      } else if (keyword == "usemtl") {
-        use_material(std::string(c.rest()));
-      } else if (keyword == "mtllib") {
-        material_library(std::string(c.rest()));
+  void take(const ObjStatements& block) {
+    const std::vector<ObjStatement>& statements = block.statements;
+    constexpr size_t kAhead = 8;
+    for (size_t i = 0; i < statements.size(); ++i) {
+      if (i + kAhead < statements.size()) prefetch(block, statements[i + kAhead]);
+      const ObjStatement& s = statements[i];
+      line_number_ = first_line_ + s.line;
+      switch (s.keyword) {
+        case ObjKeyword::kV:
+          vertex_position(&block.floats[s.begin], s.count);
+          break;
+        case ObjKeyword::kVt:
+          texture_coordinate(&block.floats[s.begin]);
+          break;
+        case ObjKeyword::kVn:
+          normal(&block.floats[s.begin]);
+          break;
+        case ObjKeyword::kF:
+          face(block, s);
+          break;
+        case ObjKeyword::kObject:
+        case ObjKeyword::kGroup: {
+          const std::string& object = block.texts[s.begin];
+          // An unnamed "o"/"g", or a "g" naming the current object, keeps the current object.
+          if (!object.empty() &&
+              !(s.keyword == ObjKeyword::kGroup && current() && current()->object == object))
+            start_object(object);
+          break;
+        }
+        case ObjKeyword::kUseMtl:
+          use_material(block.texts[s.begin]);
+          break;
+        case ObjKeyword::kMtlLib:
+          material_library(block.texts[s.begin]);
+          break;
+        case ObjKeyword::kError:
+          fail(block.errors[size_t(s.error)]);
       }
-      // s, l, p, vp, curves and anything else: not geometry this loader renders.
     }
-    return finish();
+    first_line_ += block.lines;
   }
 
  private:
-  [[noreturn]] void fail(const std::string& message) const {
-    throw Error(name_ + ":" + std::to_string(lines_.line_number), message);
-  }
-  static bool finite(float x) { return std::isfinite(x); }
+  struct Corner {
+    int32_t v, vt, vn;
+  };
 
-  void vertex_position(TextCursor& c) {
-    float p[3];
-    for (float& x : p)
-      if (!c.number(x)) fail("expected 'v X Y Z'");
-    if (!finite(p[0]) || !finite(p[1]) || !finite(p[2])) fail("vertex position is not finite");
-    positions_.push_back({p[0], p[1], p[2]});
-    last_use_.emplace_back();
-    float extra[4];
-    int count = 0;
-    while (count < 4 && c.number(extra[count])) ++count;
-    Rgb color(1.f);
-    if (count == 3) {  // "v x y z r g b"; a lone fourth value is the rational weight w
+  [[noreturn]] void fail(const std::string& message) const {
+    throw Error(name_ + ":" + std::to_string(line_number_), message);
+  }
+
+  // The values a v, vt or vn line is shared by: a position's colour is part of it (white if it
+  // has none), and texture coordinates are compared as written.
+  static std::array<uint32_t, 6> position_key(const float* v, uint32_t count) {
+    return count == 6 ? float_words(v[0], v[1], v[2], v[3], v[4], v[5])
+                      : float_words(v[0], v[1], v[2], 1.f, 1.f, 1.f);
+  }
+  static std::array<uint32_t, 2> uv_key(const float* uv) { return float_words(uv[0], uv[1]); }
+  static std::array<uint32_t, 3> normal_key(const float* n) {
+    return float_words(n[0], n[1], n[2]);
+  }
+
+  // Brings in the table slots that the statement `ahead` will look up: each lookup of a large
+  // file's tables is a cache miss, and taking several at once hides most of their latency.
+  void prefetch(const ObjStatements& block, const ObjStatement& ahead) const {
+    // `begin` indexes the floats only for these three (a face's indexes its corners).
+    if (ahead.keyword == ObjKeyword::kV)
+      position_index_.prefetch(hash_words(position_key(&block.floats[ahead.begin], ahead.count)));
+    else if (ahead.keyword == ObjKeyword::kVt)
+      uv_index_.prefetch(hash_words(uv_key(&block.floats[ahead.begin])));
+    else if (ahead.keyword == ObjKeyword::kVn)
+      normal_index_.prefetch(hash_words(normal_key(&block.floats[ahead.begin])));
+  }
+
+  void vertex_position(const float* v, uint32_t count) {
+    positions_.push_back({v[0], v[1], v[2]});
+    first_use_.emplace_back();
+    if (count == 6) {
       if (colors_.size() < positions_.size() - 1) colors_.resize(positions_.size() - 1, Rgb(1.f));
-      color = {extra[0], extra[1], extra[2]};
-      colors_.push_back(color);
+      colors_.push_back({v[3], v[4], v[5]});
     }
-    auto key = FlatIndexMap<6>::float_key(p[0], p[1], p[2], color.r, color.g, color.b);
-    canonical_v_.push_back(
-        int32_t(position_index_.find_or_add(key, uint32_t(positions_.size() - 1)).first));
+    const auto key = position_key(v, count);
+    canonical_v_.push_back(int32_t(position_index_.find_or_add(
+        hash_words(key), uint32_t(positions_.size() - 1), [&](uint32_t j) {
+          Point3f p = positions_[j];
+          Rgb c = j < colors_.size() ? colors_[j] : Rgb(1.f);
+          return float_words(p.x, p.y, p.z, c.r, c.g, c.b) == key;
+        })));
+  }
+
+  void texture_coordinate(const float* uv) {
+    uvs_.push_back({uv[0], uv[1]});
+    const auto key = uv_key(uv);
+    canonical_vt_.push_back(
+        int32_t(uv_index_.find_or_add(hash_words(key), uint32_t(uvs_.size() - 1), [&](uint32_t j) {
+          return float_words(uvs_[j].x, uvs_[j].y) == key;
+        })));
+  }
+
+  void normal(const float* n) {
+    normals_.push_back({n[0], n[1], n[2]});
+    const auto key = normal_key(n);
+    canonical_vn_.push_back(int32_t(
+        normal_index_.find_or_add(hash_words(key), uint32_t(normals_.size() - 1), [&](uint32_t j) {
+          return float_words(normals_[j].x, normals_[j].y, normals_[j].z) == key;
+        })));
   }
 
   MeshBuild* current() { return objects_.empty() ? nullptr : &objects_.back().back(); }
@@ -136,11 +178,7 @@ class ObjReader {
   }
 
   // Resolves a 1-based or negative (relative) OBJ index into `count` elements, naming `what`.
-  int32_t resolve(std::string_view text, size_t count, const char* what) {
-    int64_t i = 0;
-    auto [end, ec] = std::from_chars(text.data(), text.data() + text.size(), i);
-    if (ec != std::errc() || end != text.data() + text.size())
-      fail("malformed face corner index '" + std::string(text.substr(0, 40)) + "'");
+  int32_t resolve(int64_t i, size_t count, const char* what) {
     int64_t index = i > 0 ? i - 1 : int64_t(count) + i;
     if (i == 0 || index < 0 || index >= int64_t(count))
       fail(std::string("face refers to ") + what + " " + std::to_string(i) + ", but " +
@@ -149,21 +187,24 @@ class ObjReader {
     return int32_t(index);
   }
 
-  void face(TextCursor& c) {
+  Corner resolve(const ObjCorner& c) {
+    return {resolve(c.v, positions_.size(), "vertex"),
+            c.vt == kAbsentIndex ? kNone : resolve(c.vt, uvs_.size(), "texture coordinate"),
+            c.vn == kAbsentIndex ? kNone : resolve(c.vn, normals_.size(), "normal")};
+  }
+
+  void face(const ObjStatements& block, const ObjStatement& s) {
     corners_.clear();
-    for (std::string_view token = c.token(); !token.empty(); token = c.token()) {
-      size_t slash1 = token.find('/');
-      std::string_view v = token.substr(0, slash1), vt, vn;
-      if (slash1 != std::string_view::npos) {
-        std::string_view rest = token.substr(slash1 + 1);
-        size_t slash2 = rest.find('/');
-        vt = rest.substr(0, slash2);
-        if (slash2 != std::string_view::npos) vn = rest.substr(slash2 + 1);
-      }
-      Corner corner{resolve(v, positions_.size(), "vertex"),
-                    vt.empty() ? kNone : resolve(vt, uvs_.size(), "texture coordinate"),
-                    vn.empty() ? kNone : resolve(vn, normals_.size(), "normal")};
-      corners_.push_back(corner);
+    for (uint32_t k = 0; k < s.count; ++k) corners_.push_back(resolve(block.corners[s.begin + k]));
+    if (s.error >= 0) {
+      // The indices read before the malformed one are checked first.
+      const ObjCorner& c = block.corners[s.begin + s.count];
+      const int64_t fields[3] = {c.v, c.vt, c.vn};
+      const size_t counts[3] = {positions_.size(), uvs_.size(), normals_.size()};
+      const char* what[3] = {"vertex", "texture coordinate", "normal"};
+      for (int k = 0; k < s.partial; ++k)
+        if (fields[k] != kAbsentIndex) resolve(fields[k], counts[k], what[k]);
+      fail(block.errors[size_t(s.error)]);
     }
     if (corners_.size() < 3) return;  // a point or a line: not rendered
     if (!current()) start_object("defaultobject");
@@ -176,29 +217,30 @@ class ObjReader {
            " triangles, the most one mesh may have");
   }
 
-  struct Corner {
-    int32_t v, vt, vn;
-  };
-
   uint32_t vertex(MeshBuild& m, const Corner& corner) {
     auto v = uint32_t(canonical_v_[corner.v]);
     int32_t vt = corner.vt == kNone ? kNone : canonical_vt_[corner.vt];
     int32_t vn = corner.vn == kNone ? kNone : canonical_vn_[corner.vn];
-    // Neighbouring faces share corners: most lookups are answered here, in file order, without
-    // the random access of the hash table.
-    LastUse& last = last_use_[v];
-    if (last.mesh == m.serial && last.vt == vt && last.vn == vn) return last.vertex;
-    auto next = uint32_t(m.mesh.positions.size());
-    auto [index, added] = m.corners.find_or_add({v, uint32_t(vt), uint32_t(vn)}, next);
-    last = {m.serial, vt, vn, index};
-    if (!added) return index;
+    // A position's first (mesh, vt, vn) is looked up by its index, without the random access of
+    // a hash table: in most files it is the only one. Later ones (seams, meshes sharing
+    // positions) go to the mesh's table.
+    FirstUse& first = first_use_[v];
+    if (first.mesh == m.serial && first.vt == vt && first.vn == vn) return first.vertex;
+    auto index = uint32_t(m.mesh.positions.size());
+    if (first.mesh == FirstUse::kNone) {
+      first = {m.serial, vt, vn, index};
+    } else {
+      auto [found, added] = m.corners.find_or_add({v, uint32_t(vt), uint32_t(vn)}, index);
+      if (!added) return found;
+    }
     // Attributes are stored from the first vertex that has one (earlier vertices get the
     // default), so a mesh without uvs, normals or colours never allocates them.
     size_t at = m.mesh.positions.size();
     m.mesh.positions.push_back(positions_[corner.v]);  // equal to the canonical one's
     if (corner.vt != kNone) {
       pad(m.mesh.uvs, at, kNoUv);
-      m.mesh.uvs.push_back(uvs_[corner.vt]);
+      const Point2f uv = uvs_[corner.vt];
+      m.mesh.uvs.push_back({uv.x, 1 - uv.y});  // glTF's convention: v = 0 at the image's top
     }
     if (corner.vn != kNone) {
       pad(m.mesh.normals, at, Normal3f());
@@ -226,9 +268,9 @@ class ObjReader {
     std::error_code ec;
     std::filesystem::path path = std::filesystem::path(base_dir_) / file;
     if (!std::filesystem::exists(path, ec)) {
-      warnings_.push_back(name_ + ":" + std::to_string(lines_.line_number) +
-                          ": material library '" + file + "' not found (looked for " +
-                          path.string() + "); its materials get the default grey");
+      warnings_.push_back(name_ + ":" + std::to_string(line_number_) + ": material library '" +
+                          file + "' not found (looked for " + path.string() +
+                          "); its materials get the default grey");
       return;
     }
     std::vector<char> text = read_mesh_file(path.string());
@@ -293,6 +335,8 @@ class ObjReader {
         normals[i] = unit(to_vector(normals[i]), ok);
         m.has_normal[i] = ok;
       }
+    if (std::all_of(m.has_normal.begin(), m.has_normal.end(), [](uint8_t has) { return has; }))
+      return;  // nothing to fill: skip the per-vertex sums
     std::vector<Vector3f> sums(normals.size());
     const std::vector<Point3f>& p = m.mesh.positions;
     const std::vector<uint32_t>& idx = m.mesh.indices;
@@ -304,6 +348,7 @@ class ObjReader {
       if (!m.has_normal[i]) normals[i] = unit(sums[i], ok);
   }
 
+ public:
   Scene finish() {
     scene_.name = scene_name_of(name_);
     scene_.warnings = std::move(warnings_);
@@ -361,28 +406,29 @@ class ObjReader {
     return std::move(scene_);
   }
 
-  Lines& lines_;
+ private:
   const std::string& name_;
+  size_t first_line_ = 1;   // of the block being taken
+  size_t line_number_ = 0;  // of the statement being taken
   std::string base_dir_;
   std::vector<Point3f> positions_;
-  std::vector<Rgb> colors_;  // only as long as the last vertex that had a colour
-  std::vector<Point2f> uvs_;
+  std::vector<Rgb> colors_;   // only as long as the last vertex that had a colour
+  std::vector<Point2f> uvs_;  // as written (v = 0 at the image's bottom)
   std::vector<Normal3f> normals_;
   std::vector<Corner> corners_;
   std::vector<uint32_t> polygon_;  // the current face's vertices
-  // Per canonical v: the mesh vertex its last corner became, and with which vt and vn.
-  struct LastUse {
-    uint32_t mesh = ~0u;
+  // Per canonical v: the mesh, vt and vn of the first corner that used it, and its vertex.
+  struct FirstUse {
+    static constexpr uint32_t kNone = ~0u;
+    uint32_t mesh = kNone;
     int32_t vt = 0, vn = 0;
     uint32_t vertex = 0;
   };
-  std::vector<LastUse> last_use_;
+  std::vector<FirstUse> first_use_;
   uint32_t mesh_count_ = 0;
   // Per v/vt/vn line, the first line with the same values, and the maps that find it.
   std::vector<int32_t> canonical_v_, canonical_vt_, canonical_vn_;
-  FlatIndexMap<6> position_index_;
-  FlatIndexMap<2> uv_index_;
-  FlatIndexMap<3> normal_index_;
+  FirstIndexTable position_index_, uv_index_, normal_index_;
   // Objects in file order, each with its meshes in order of creation; faces go to the last.
   std::vector<std::vector<MeshBuild>> objects_;
   std::string material_;
@@ -395,16 +441,50 @@ class ObjReader {
 
 }  // namespace
 
+namespace {
+
+// Blocks are read in order, parsed on any thread, and taken by the reader in order: the scene is
+// the same for any thread count. A few blocks in flight per thread bound the memory.
+Scene read_obj(TextBlocks& blocks, const std::string& name, const std::string& base_dir) {
+  struct Work {
+    TextBlock block;
+    ObjStatements statements;
+  };
+  using WorkPtr = std::shared_ptr<Work>;
+  ObjReader reader(name, base_dir);
+  const auto in_flight = size_t(2 * tbb::this_task_arena::max_concurrency());
+  tbb::parallel_pipeline(
+      in_flight,
+      tbb::make_filter<void, WorkPtr>(tbb::filter_mode::serial_in_order,
+                                      [&blocks](tbb::flow_control& control) {
+                                        auto work = std::make_shared<Work>();
+                                        if (blocks.next(work->block)) return work;
+                                        control.stop();
+                                        return WorkPtr();
+                                      }) &
+          tbb::make_filter<WorkPtr, WorkPtr>(tbb::filter_mode::parallel,
+                                             [](WorkPtr work) {
+                                               parse_obj_block(work->block.text, work->statements);
+                                               work->block = {};  // the text is not needed now
+                                               return work;
+                                             }) &
+          tbb::make_filter<WorkPtr, void>(
+              tbb::filter_mode::serial_in_order,
+              [&reader](const WorkPtr& work) { reader.take(work->statements); }));
+  return reader.finish();
+}
+
+}  // namespace
+
 Scene load_obj_bytes(std::span<const char> bytes, const std::string& name,
                      const std::string& base_dir) {
-  LineReader lines{std::string_view(bytes.data(), bytes.size())};
-  return ObjReader<LineReader>(lines, name, base_dir).read();
+  TextBlocks blocks(bytes);
+  return read_obj(blocks, name, base_dir);
 }
 
 Scene load_obj(const std::string& path) {
-  FileLines lines(path);
-  return ObjReader<FileLines>(lines, path, std::filesystem::path(path).parent_path().string())
-      .read();
+  TextBlocks blocks(path);
+  return read_obj(blocks, path, std::filesystem::path(path).parent_path().string());
 }
 
 }  // namespace obscura

@@ -1,6 +1,7 @@
 #include "obscura/trace/embree_scene.h"
 
 #include <algorithm>
+#include <atomic>
 #include <cmath>
 #include <cstring>
 #include <limits>
@@ -48,12 +49,39 @@ RTCRay to_rtc_ray(const Ray& ray, float embree_time) {
 
 }  // namespace
 
-EmbreeDevice::EmbreeDevice() {
+struct EmbreeMemoryCount {
+  std::atomic<int64_t> now{0}, peak{0};
+};
+
+namespace {
+
+// Embree reports each allocation (bytes > 0) and release (bytes < 0) of its own memory.
+bool on_embree_memory(void* user, ssize_t bytes, bool /*post*/) {
+  auto* count = static_cast<EmbreeMemoryCount*>(user);
+  int64_t now = count->now.fetch_add(int64_t(bytes), std::memory_order_relaxed) + int64_t(bytes);
+  int64_t peak = count->peak.load(std::memory_order_relaxed);
+  while (now > peak && !count->peak.compare_exchange_weak(peak, now, std::memory_order_relaxed)) {
+  }
+  return true;  // never refuse an allocation
+}
+
+}  // namespace
+
+EmbreeDevice::EmbreeDevice() : memory_(std::make_unique<EmbreeMemoryCount>()) {
   device_ = rtcNewDevice(nullptr);
   if (!device_)
     throw Error("cannot create the Embree device (error " +
                 std::to_string(int(rtcGetDeviceError(nullptr))) + ")");
   rtcSetDeviceErrorFunction(device_, on_embree_error, &error_slot());
+  rtcSetDeviceMemoryMonitorFunction(device_, on_embree_memory, memory_.get());
+}
+
+int64_t EmbreeDevice::memory_bytes() const {
+  return memory_->now.load();
+}
+
+int64_t EmbreeDevice::peak_memory_bytes() const {
+  return memory_->peak.load();
 }
 
 EmbreeDevice::~EmbreeDevice() {
@@ -71,6 +99,18 @@ void EmbreeDevice::throw_if_error(const char* during) const {
 
 namespace {
 
+static_assert(sizeof(Point3f) == 3 * sizeof(float), "Embree reads Point3f arrays as FLOAT3");
+
+void check_triangle_indices(size_t vertex_count, std::span<const uint32_t> indices) {
+  if (indices.size() % 3 != 0)
+    throw Error("triangle mesh index count " + std::to_string(indices.size()) +
+                " is not a multiple of 3");
+  for (uint32_t i : indices)
+    if (i >= vertex_count)
+      throw Error("triangle mesh index " + std::to_string(i) + " is past the vertex count " +
+                  std::to_string(vertex_count));
+}
+
 // A committed triangle geometry holding copies of the mesh (not yet attached to a scene), with
 // one vertex buffer per Embree time step (one for a still mesh).
 RTCGeometry new_triangle_geometry(const EmbreeDevice& device,
@@ -83,13 +123,7 @@ RTCGeometry new_triangle_geometry(const EmbreeDevice& device,
   for (std::span<const Point3f> step : steps)
     if (step.size() != positions.size())
       throw Error("triangle mesh time steps differ in vertex count");
-  if (indices.size() % 3 != 0)
-    throw Error("triangle mesh index count " + std::to_string(indices.size()) +
-                " is not a multiple of 3");
-  for (uint32_t i : indices)
-    if (i >= positions.size())
-      throw Error("triangle mesh index " + std::to_string(i) + " is past the vertex count " +
-                  std::to_string(positions.size()));
+  check_triangle_indices(positions.size(), indices);
   RTCGeometry geometry = rtcNewGeometry(device.handle(), RTC_GEOMETRY_TYPE_TRIANGLE);
   rtcSetGeometryTimeStepCount(geometry, unsigned(steps.size()));
   // Embree may read 16 bytes at the last vertex, so its own buffers (padded) are used.
@@ -147,6 +181,22 @@ uint32_t EmbreeScene::add_triangle_mesh(std::span<const Point3f> positions,
   if (committed_) throw Error("EmbreeScene: geometry added after commit()");
   const std::span<const Point3f> steps[1] = {positions};
   RTCGeometry geometry = new_triangle_geometry(*device_, steps, indices);
+  uint32_t id = attach(geometry, "adding a triangle mesh");
+  rtcReleaseGeometry(geometry);
+  return id;
+}
+
+uint32_t EmbreeScene::add_shared_triangle_mesh(std::span<const Point3f> positions,
+                                               std::span<const uint32_t> indices) {
+  if (committed_) throw Error("EmbreeScene: geometry added after commit()");
+  check_triangle_indices(positions.size(), indices);
+  RTCGeometry geometry = rtcNewGeometry(device_->handle(), RTC_GEOMETRY_TYPE_TRIANGLE);
+  rtcSetSharedGeometryBuffer(geometry, RTC_BUFFER_TYPE_VERTEX, 0, RTC_FORMAT_FLOAT3,
+                             positions.data(), 0, sizeof(Point3f), positions.size());
+  rtcSetSharedGeometryBuffer(geometry, RTC_BUFFER_TYPE_INDEX, 0, RTC_FORMAT_UINT3, indices.data(),
+                             0, 3 * sizeof(uint32_t), indices.size() / 3);
+  device_->throw_if_error("sharing buffers with Embree");
+  rtcCommitGeometry(geometry);
   uint32_t id = attach(geometry, "adding a triangle mesh");
   rtcReleaseGeometry(geometry);
   return id;

@@ -23,6 +23,8 @@ struct RTCGeometryTy;
 
 namespace obscura {
 
+struct EmbreeMemoryCount;  // embree_scene.cpp
+
 // One Embree device per process is the recommended use; it owns Embree's thread-local state.
 class EmbreeDevice {
  public:
@@ -32,11 +34,16 @@ class EmbreeDevice {
   EmbreeDevice& operator=(const EmbreeDevice&) = delete;
 
   RTCDeviceTy* handle() const { return device_; }
+  // Bytes Embree holds now (acceleration structures and its own geometry buffers; not the
+  // buffers it shares with the caller), and the most it held at once since the device was made.
+  int64_t memory_bytes() const;
+  int64_t peak_memory_bytes() const;
   // Throws obscura::Error with Embree's message if an error was reported since the last check.
   void throw_if_error(const char* during) const;
 
  private:
   RTCDeviceTy* device_ = nullptr;
+  std::unique_ptr<EmbreeMemoryCount> memory_;
 };
 
 struct RayHit {
@@ -66,6 +73,11 @@ class EmbreeScene {
   // Copies a triangle mesh into Embree; returns its geometry id (0, 1, 2… in call order).
   // `indices` holds three vertex indices per triangle. Precondition: indices < positions.size().
   uint32_t add_triangle_mesh(std::span<const Point3f> positions, std::span<const uint32_t> indices);
+  // The same without the copy: Embree reads `positions` and `indices` where they are, so they
+  // must stay unchanged until this scene is destroyed, and `positions` must be followed by 4
+  // readable bytes (Embree loads the last vertex 16 bytes at a time).
+  uint32_t add_shared_triangle_mesh(std::span<const Point3f> positions,
+                                    std::span<const uint32_t> indices);
   // Builds a mesh into an acceleration structure of its own, to be placed by add_instance;
   // returns its prototype index (0, 1, 2… in call order). Same preconditions as above.
   uint32_t add_prototype(std::span<const Point3f> positions, std::span<const uint32_t> indices);

@@ -18,8 +18,10 @@ namespace obscura {
 namespace {
 
 // A world-space copy of `mesh` placed by `world_from_object` (positions, normals, UVs, colours,
-// tangents).
-Mesh flatten(const Mesh& mesh, const Transform& world_from_object) {
+// and `tangents`: the mesh's own, or generated for it). The positions have capacity for one more
+// vertex, the padding Embree needs past the last one (see add_static).
+Mesh flatten(const Mesh& mesh, std::span<const Vector4f> tangents,
+             const Transform& world_from_object) {
   Mesh world;
   world.name = mesh.name;
   world.material = mesh.material;
@@ -28,14 +30,15 @@ Mesh flatten(const Mesh& mesh, const Transform& world_from_object) {
   world.uvs1 = mesh.uvs1;
   world.colors = mesh.colors;
   world.color_alphas = mesh.color_alphas;
-  world.positions.reserve(mesh.positions.size());
+  world.positions.reserve(mesh.positions.size() + 1);
   for (Point3f p : mesh.positions) world.positions.push_back(world_from_object(p));
+  world.normals.reserve(mesh.normals.size());
   for (Normal3f n : mesh.normals) world.normals.push_back(normalize(world_from_object(n)));
   // Tangents lie in the surface: they move as vectors. A mirror turns the bitangent's side of
   // cross(N, T) over, so the handedness flips with it.
   const bool mirror = world_from_object.swaps_handedness();
-  world.tangents.reserve(mesh.tangents.size());
-  for (Vector4f t : mesh.tangents) {
+  world.tangents.reserve(tangents.size());
+  for (Vector4f t : tangents) {
     Vector3f v = world_from_object(Vector3f(t.x, t.y, t.z));
     world.tangents.emplace_back(v.x, v.y, v.z, mirror ? -t.w : t.w);
   }
@@ -187,9 +190,10 @@ TraceScene::TraceScene(const Scene& scene, std::shared_ptr<const EmbreeDevice> d
     if (normal_map.valid() && normal_map_uv_set_[instance.mesh] < 0)
       normal_map_uv_set_[instance.mesh] = int(normal_map.uv_set);
   }
-  meshes_.reserve(scene.meshes.size());
-  for (size_t m = 0; m < scene.meshes.size(); ++m)
-    meshes_.push_back(shading_attributes(scene.meshes[m], normal_map_uv_set_[m]));
+  // Filled by shading_mesh() for the meshes that instances use; a mesh flattened into world
+  // space keeps only its world-space copy. Sized once: placements point into it.
+  meshes_.resize(scene.meshes.size());
+  has_shading_mesh_.assign(scene.meshes.size(), false);
   prototype_of_mesh_.assign(scene.meshes.size(), -1);
   std::vector<int> uses(scene.meshes.size(), 0);
   for (const Instance& instance : scene.instances) ++uses[instance.mesh];
@@ -212,7 +216,7 @@ TraceScene::TraceScene(const Scene& scene, std::shared_ptr<const EmbreeDevice> d
                      (options.instancing == Instancing::kAuto && uses[instance.mesh] > 1));
     uint32_t material = scene.material_of(instance);
     if (!moving && !scene.materials[material].emission.is_black()) {
-      emitters[i] = flatten(scene.meshes[instance.mesh], pose);
+      emitters[i] = flatten(scene.meshes[instance.mesh], {}, pose);
       emitters[i].material = material;
     }
   }
@@ -233,6 +237,14 @@ TraceScene::TraceScene(const Scene& scene, std::shared_ptr<const EmbreeDevice> d
                      compile_environment(scene), std::move(punctual), radius_);
 }
 
+const Mesh& TraceScene::shading_mesh(const Scene& scene, uint32_t mesh) {
+  if (!has_shading_mesh_[mesh]) {
+    meshes_[mesh] = shading_attributes(scene.meshes[mesh], normal_map_uv_set_[mesh]);
+    has_shading_mesh_[mesh] = true;
+  }
+  return meshes_[mesh];
+}
+
 uint32_t TraceScene::prototype_of(const Scene& scene, uint32_t mesh) {
   if (prototype_of_mesh_[mesh] < 0) {
     const Mesh& m = scene.meshes[mesh];
@@ -251,7 +263,7 @@ void TraceScene::add_static(const Scene& scene, uint32_t instance,
     Transform steps[1] = {world_from_object};
     id = embree_.add_instance(prototype_of(scene, in.mesh), steps);
     ++embree_instances_;
-    p.attributes = &meshes_[in.mesh];
+    p.attributes = &shading_mesh(scene, in.mesh);
     p.object_space = true;
     double linear[3][3];
     for (int r = 0; r < 3; ++r)
@@ -262,14 +274,26 @@ void TraceScene::add_static(const Scene& scene, uint32_t instance,
     normal_matrix(linear, p.normal_from_object);
     p.handedness = world_from_object.swaps_handedness() ? -1.f : 1.f;
   } else {
-    // The object-space tangents (generated where needed) go along into world space.
-    Mesh object = scene.meshes[in.mesh];
-    object.tangents = meshes_[in.mesh].tangents;
-    Mesh world = flatten(object, world_from_object);
-    id = embree_.add_triangle_mesh(world.positions, world.indices);
-    flattened_.push_back(
-        std::make_unique<Mesh>(shading_attributes(std::move(world), normal_map_uv_set_[in.mesh])));
+    // The object-space tangents (generated where a normal map needs them) go along into world
+    // space.
+    const Mesh& object = scene.meshes[in.mesh];
+    const int uv_set = normal_map_uv_set_[in.mesh];
+    std::vector<Vector4f> generated;
+    std::span<const Vector4f> tangents;
+    if (uv_set >= 0 && !object.tangents.empty())
+      tangents = object.tangents;
+    else if (uv_set >= 0)
+      tangents = generated = generate_tangents(object, uint32_t(uv_set));
+    Mesh world = flatten(object, tangents, world_from_object);
+    // Embree reads the vertex buffer 16 bytes at a time: the last vertex needs 4 bytes of
+    // padding after it (flatten reserved room for it, so the buffer is not copied here).
+    std::vector<Point3f>& positions = world_positions_.emplace_back(std::move(world.positions));
+    positions.emplace_back();
+    flattened_.push_back(std::make_unique<Mesh>(shading_attributes(std::move(world), uv_set)));
     p.attributes = flattened_.back().get();
+    // Embree shares the world-space buffers rather than copying them.
+    id = embree_.add_shared_triangle_mesh(
+        std::span<const Point3f>(positions.data(), positions.size() - 1), p.attributes->indices);
   }
   if (placements_.size() <= id) placements_.resize(id + 1);
   placements_[id] = p;
@@ -293,7 +317,8 @@ void TraceScene::add_moving(const Scene& scene, uint32_t instance) {
     for (const std::vector<Point3f>& p : poses) views.emplace_back(p);
     prototype = embree_.add_prototype(views, mesh.indices);
     ++prototypes_;
-    if (!meshes_[in.mesh].deformation.normals.empty()) deformation = &meshes_[in.mesh].deformation;
+    const Mesh& shading = shading_mesh(scene, in.mesh);
+    if (!shading.deformation.normals.empty()) deformation = &shading.deformation;
   } else {
     prototype = prototype_of(scene, in.mesh);
   }
@@ -303,7 +328,7 @@ void TraceScene::add_moving(const Scene& scene, uint32_t instance) {
   if (placements_.size() <= id) placements_.resize(id + 1);
   placements_[id] = {.instance = instance,
                      .material = scene.material_of(in),
-                     .attributes = &meshes_[in.mesh],
+                     .attributes = &shading_mesh(scene, in.mesh),
                      .object_space = true,
                      .moving = true,
                      .deformation = deformation};

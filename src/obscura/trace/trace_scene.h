@@ -87,12 +87,16 @@ class TraceScene {
   void add_moving(const Scene& scene, uint32_t instance);
   SurfaceHit surface_hit(const Ray& ray, const RayHit& hit) const;
   uint32_t prototype_of(const Scene& scene, uint32_t mesh);
+  const Mesh& shading_mesh(const Scene& scene, uint32_t mesh);
 
+  // Declared before embree_, which shares them: destroyed after it.
+  std::vector<std::unique_ptr<Mesh>> flattened_;       // world-space copies of meshes placed once
+  std::vector<std::vector<Point3f>> world_positions_;  // their positions, one vertex of padding
   EmbreeScene embree_;
   std::vector<Mesh> meshes_;            // the scene's meshes, object space, as instances share them
+  std::vector<bool> has_shading_mesh_;  // per mesh: whether meshes_ holds it yet
   std::vector<int> normal_map_uv_set_;  // per mesh: the UV set its tangents follow, −1 none
-  std::vector<int32_t> prototype_of_mesh_;        // Embree prototype per mesh, −1 until built
-  std::vector<std::unique_ptr<Mesh>> flattened_;  // world-space copies of meshes placed once
+  std::vector<int32_t> prototype_of_mesh_;  // Embree prototype per mesh, −1 until built
   std::vector<Placement> placements_;
   Shutter shutter_;
   bool has_motion_ = false;
