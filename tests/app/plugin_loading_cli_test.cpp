@@ -56,6 +56,21 @@ TEST_F(PluginLoadingCli, StartUpLoadsNeitherOpenImageIONorOpenMpi) {
   EXPECT_THAT(result.output, Not(HasSubstr("libobscura_image_codecs")));
 }
 
+// Writing every format Obscura writes loads the native codecs, never OpenImageIO (issue 18: its
+// ~250 libraries cost ~0.25 s); a Targa, which only OpenImageIO reads, loads it.
+TEST_F(PluginLoadingCli, CommonFormatsLoadTheNativeCodecsNotOpenImageIO) {
+  for (const char* ext : {"png", "exr", "jpg", "tif", "hdr"}) {
+    auto result = test::run_shell(
+        "LD_DEBUG=libs " + test::cli_command_line(small_render + path(std::string("o.") + ext)));
+    ASSERT_EQ(result.exit_code, 0) << ext << ": " << result.output;
+    EXPECT_THAT(result.output, HasSubstr("libobscura_image_codecs")) << ext;
+    EXPECT_THAT(result.output, Not(HasSubstr("libOpenImageIO"))) << ext;
+    EXPECT_THAT(result.output, Not(HasSubstr("libobscura_oiio_codecs"))) << ext;
+  }
+  auto info = test::run_shell("LD_DEBUG=libs " + test::cli_command_line("info " + path("o.exr")));
+  EXPECT_THAT(info.output, Not(HasSubstr("libOpenImageIO")));
+}
+
 TEST_F(PluginLoadingCli, VersionRunsWithoutAnyPlugin) {
   auto result = run_with_plugin_dir(path("plugins"), "--version");
   EXPECT_EQ(result.exit_code, 0) << result.output;
