@@ -14,6 +14,7 @@
 #include <OpenEXR/ImfThreading.h>
 
 #include <algorithm>
+#include <cstdint>
 #include <cstring>
 #include <exception>
 #include <map>
@@ -92,6 +93,18 @@ std::string attribute_name(const std::string& exr_name) {
   return exr_name;
 }
 
+// Threads for (de)compressing an image of `pixels`: all cores from a megapixel on, as OpenImageIO
+// did; none below (starting OpenEXR's pool costs more than it saves on a small image).
+int exr_threads_for(size_t pixels) {
+  if (pixels < (size_t(1) << 20)) return 0;
+  static std::once_flag pool;
+  std::call_once(pool, [] {
+    if (Imf::globalThreadCount() == 0)
+      Imf::setGlobalThreadCount(int(std::max(1u, std::thread::hardware_concurrency())));
+  });
+  return Imf::globalThreadCount();
+}
+
 // Version field flags (OpenEXR file layout): deep data, several parts.
 constexpr uint32_t kNonImageFlag = 0x800;
 
@@ -107,11 +120,24 @@ class ExrDecoder final : public ImageDecoder {
       return;
     }
     guarded([&] {
-      file_ = std::make_unique<Imf::InputFile>(stream_, Imf::globalThreadCount());
+      file_ = std::make_unique<Imf::InputFile>(stream_, 0);
+      const Imath::Box2i window = file_->header().dataWindow();
+      // In 64 bits: a hostile window overflows int; one out of range is left 0 for the
+      // caller's size check to refuse.
+      auto extent = [](int lo, int hi) {
+        int64_t n = int64_t(hi) - int64_t(lo) + 1;
+        return n > 0 && n <= INT32_MAX ? int(n) : 0;
+      };
+      header_.width = extent(window.min.x, window.max.x);
+      header_.height = extent(window.min.y, window.max.y);
+      // A large image is opened again to decompress on all cores (the thread count is fixed
+      // when the file is opened; the size is known only from its header).
+      if (int threads = exr_threads_for(size_t(header_.width) * size_t(header_.height))) {
+        file_.reset();
+        stream_.seekg(0);
+        file_ = std::make_unique<Imf::InputFile>(stream_, threads);
+      }
       const Imf::Header& h = file_->header();
-      const Imath::Box2i window = h.dataWindow();
-      header_.width = window.max.x - window.min.x + 1;
-      header_.height = window.max.y - window.min.y + 1;
       std::vector<std::string> names;
       for (auto c = h.channels().begin(); c != h.channels().end(); ++c) {
         names.push_back(c.name());
@@ -260,17 +286,8 @@ std::vector<unsigned char> encode_exr(const EncodeRequest& request) {
                    Imf::Slice(stored, const_cast<char*>(static_cast<const char*>(data)) + value * c,
                               pixel, pixel * size_t(request.width)));
     MemoryOutput out(encoded);
-    // Zip compression of a large image on all cores, as OpenImageIO did; small ones on this
-    // thread (a pool costs more than it saves).
-    const bool large = size_t(request.width) * size_t(request.height) >= (size_t(1) << 20);
-    if (large) {
-      static std::once_flag pool;
-      std::call_once(pool, [] {
-        if (Imf::globalThreadCount() == 0)
-          Imf::setGlobalThreadCount(int(std::max(1u, std::thread::hardware_concurrency())));
-      });
-    }
-    Imf::OutputFile file(out, header, large ? Imf::globalThreadCount() : 0);
+    Imf::OutputFile file(out, header,
+                         exr_threads_for(size_t(request.width) * size_t(request.height)));
     file.setFrameBuffer(frame);
     file.writePixels(request.height);
   } catch (const Error&) {

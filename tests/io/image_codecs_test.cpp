@@ -184,6 +184,16 @@ TEST_F(NativeImageCodecs, ExrRoundTripsFloatAndHalfWithNamesAndAttributes) {
   EXPECT_EQ(h.values, data);
 }
 
+// A megapixel and more is (de)compressed on OpenEXR's thread pool: the same values.
+TEST_F(NativeImageCodecs, ALargeExrRoundTripsOnSeveralThreads) {
+  auto data = pattern(1024, 1030, 3, SampleType::kFloat);
+  auto file =
+      image_codecs().encode(request_for("big.exr", 1024, 1030, 3, SampleType::kFloat, data));
+  Decoded d = decode(file, "big.exr", SampleType::kFloat);
+  EXPECT_EQ(d.header.height, 1030);
+  EXPECT_TRUE(d.values == data);
+}
+
 TEST_F(NativeImageCodecs, ExrChannelsComeBackInTheOrderOpenImageIoGave) {
   // The file sorts them (B, G, R, W, albedo.B…); RGB first, then the rest, then each layer.
   std::vector<std::string> names = {"R", "G", "B", "W", "albedo.R", "albedo.G", "albedo.B", "id"};
