@@ -112,7 +112,7 @@ def main():
                 libraries[(b, name)] = loaded_libraries([sys.executable, "-c", code], envs[b])
             else:
                 libraries[(b, name)] = ld_debug_libraries(command, envs[b])
-    print(f"{"command":52} {'wall ms median (min–max)':>26} {'peak RSS MiB median (min–max)':>31}"
+    print(f"{'command':52} {'wall ms median (min–max)':>26} {'peak RSS MiB median (min–max)':>31}"
           f" {'shared libs':>11}")
     for name in cases[builds[0]]:
         for b in builds:
