@@ -24,6 +24,7 @@ struct Loaded {
 
 Loaded load(const char* file, const char* entry_point, const char* needed_for) {
 #ifdef OBSCURA_STATIC_IMAGE_CODECS
+  (void)file;
   (void)needed_for;
   return {std::string(entry_point) == kImageCodecsEntryPoint ? obscura_image_codecs_v2()
                                                              : obscura_oiio_codecs_v2(),
