@@ -1,7 +1,7 @@
 // The plugin's one entry point (kImageCodecsEntryPoint): PNG, JPEG, TIFF, OpenEXR and Radiance
-// HDR through their own libraries (a dozen shared libraries, a few milliseconds to load).
-// Readers it does not have, and files it leaves (open() returns nullptr), go to the OpenImageIO
-// plugin (image_codecs_loader.cpp), which only those load.
+// HDR through their own libraries (a dozen shared libraries, a few milliseconds to load), and
+// PFM. Readers it does not have, and files it leaves (open() returns nullptr), go to the
+// OpenImageIO plugin (image_codecs_loader.cpp), which only those load.
 #include <algorithm>
 #include <cctype>
 #include <filesystem>
@@ -10,6 +10,7 @@
 #include "jpeg_codec.h"
 #include "obscura/io/image_codecs.h"
 #include "obscura/math/error.h"
+#include "pfm_codec.h"
 #include "png_codec.h"
 #include "rgbe_codec.h"
 #include "tiff_codec.h"
@@ -36,6 +37,7 @@ class NativeImageCodecs final : public ImageCodecs {
                 : reader == "tiff"    ? open_tiff
                 : reader == "openexr" ? open_exr
                 : reader == "hdr"     ? open_rgbe
+                : reader == "pnm"     ? open_pfm  // PFM; nullptr for the rest of netpbm
                                       : nullptr;
     if (!open) return nullptr;
     return open(from_memory ? borrow_encoded_bytes(memory, source)

@@ -1,6 +1,6 @@
 // The second plugin's one entry point (kOiioCodecsEntryPoint): OpenImageIO's readers for the
-// formats the native plugin does not decode (BMP, Targa, PNM/PFM, and the rarer layouts of TIFF
-// and JPEG). OpenImageIO pulls in some 250 shared libraries (~0.25 s, ~100 MB), so only a
+// formats the native plugin does not decode (BMP, Targa, PNM other than PFM, and the rarer layouts
+// of TIFF and JPEG). OpenImageIO pulls in some 250 shared libraries (~0.25 s, ~100 MB), so only a
 // process that reads such a file loads it. It writes nothing: every format Obscura writes has a
 // native encoder.
 #include "obscura/io/image_codecs.h"

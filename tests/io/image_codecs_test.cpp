@@ -245,6 +245,40 @@ TEST_F(NativeImageCodecs, SixteenBitsReadAsFloatAreTheirFractionOf65535) {
   EXPECT_FLOAT_EQ(f[3], 1.f);
 }
 
+// PFM (netpbm's float map): rows bottom to top, the scale's sign the byte order.
+TEST_F(NativeImageCodecs, PfmIsReadBottomUpInEitherByteOrder) {
+  auto pfm = [](const std::string& header, std::vector<float> values, bool big_endian) {
+    std::vector<unsigned char> file(header.begin(), header.end());
+    for (float v : values) {
+      unsigned char b[4];
+      std::memcpy(b, &v, 4);
+      if (big_endian) std::swap(b[0], b[3]), std::swap(b[1], b[2]);
+      file.insert(file.end(), b, b + 4);
+    }
+    return file;
+  };
+  auto floats = [](const Decoded& d) {
+    std::vector<float> f(d.values.size() / 4);
+    std::memcpy(f.data(), d.values.data(), d.values.size());
+    return f;
+  };
+  // Grey, 2 × 2: the file's first row (1, 2) is the image's bottom row.
+  Decoded grey = decode(pfm("Pf\n2 2\n-1.0\n", {1, 2, 3, 4}, false), "g.pfm", SampleType::kFloat);
+  EXPECT_EQ(grey.header.channels, 1);
+  EXPECT_EQ(floats(grey), (std::vector<float>{3, 4, 1, 2}));
+  Decoded rgb = decode(pfm("PF 1 1 1.0 ", {0.5f, -2.f, 1e20f}, true), "c.pfm", SampleType::kFloat);
+  EXPECT_EQ(rgb.header.channel_names, (std::vector<std::string>{"R", "G", "B"}));
+  EXPECT_EQ(floats(rgb), (std::vector<float>{0.5f, -2.f, 1e20f}));
+  std::string short_file = error_of([&] {
+    decode(pfm("PF\n2 2\n-1.0\n", {1, 2, 3}, false), "cut.pfm", SampleType::kFloat);
+  });
+  EXPECT_NE(short_file.find("cut.pfm"), std::string::npos) << short_file;
+  EXPECT_NE(short_file.find("truncated"), std::string::npos) << short_file;
+  std::string no_scale =
+      error_of([&] { decode(pfm("PF\n2 2\nabc\n", {}, false), "s.pfm", SampleType::kFloat); });
+  EXPECT_NE(no_scale.find("scale"), std::string::npos) << no_scale;
+}
+
 // Every format, cut short or with its middle overwritten: an obscura::Error naming the image,
 // never a crash, a hang or an exit.
 TEST_F(NativeImageCodecs, CorruptAndTruncatedFilesOfEachFormatAreErrorsNamingThem) {

@@ -2,11 +2,11 @@
 // use (image_codecs_loader.h), so that a process that never touches an image file (`obscura
 // --version`, `import obscura`) loads none of their libraries:
 //  - libobscura_image_codecs.so: PNG, JPEG, TIFF, OpenEXR and Radiance HDR through libpng,
-//    libjpeg, libtiff and OpenEXR directly (plugins/image_codecs), loaded on the first image read
-//    or write: a few milliseconds;
+//    libjpeg, libtiff and OpenEXR directly, and PFM (plugins/image_codecs), loaded on the first
+//    image read or write: a few milliseconds;
 //  - libobscura_oiio_codecs.so: OpenImageIO (plugins/oiio_codecs), for the readers the first does
-//    not have (BMP, Targa, PNM/PFM, rare TIFF and JPEG layouts): some 250 shared libraries,
-//    ~0.25 s and ~100 MB, loaded only when such a file is read.
+//    not have (BMP, Targa, PNM other than PFM, rare TIFF and JPEG layouts): some 250 shared
+//    libraries, ~0.25 s and ~100 MB, loaded only when such a file is read.
 //
 // Only plain types cross the boundary, so no header outside the plugins names a codec's type.
 // Both sides are built together by the one CMake project (same compiler, same standard library);

@@ -80,7 +80,7 @@ Image read_exr_data(const std::string& path, ImageMetadata& metadata);
 
 // Reads an image as stored: 8/16-bit files give values in [0, 1] still encoded (no decoding is
 // applied), float files their float values. Formats: PNG, JPEG, EXR, HDR, TIFF (native codecs),
-// and PFM, BMP, Targa and what else the image reader lets OpenImageIO read.
+// PFM, and BMP, Targa and what else the image reader lets OpenImageIO read.
 Image read_image(const std::string& path);
 
 // The view develop() takes, of an Image.
