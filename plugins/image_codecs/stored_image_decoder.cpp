@@ -1,6 +1,7 @@
 #include "stored_image_decoder.h"
 
 #include <fcntl.h>
+#include <sys/mman.h>
 #include <sys/stat.h>
 #include <unistd.h>
 
@@ -22,22 +23,17 @@ EncodedBytes read_encoded_file(const std::string& path, const std::string& sourc
     ::close(fd);
     throw Error(source, "not a regular file; expected an image file");
   }
-  try {
-    encoded.owned.resize(size_t(st.st_size));
-  } catch (const std::bad_alloc&) {
-    ::close(fd);
-    throw Error(source, "file too large to read");
+  const size_t size = size_t(st.st_size);
+  void* address = size ? ::mmap(nullptr, size, PROT_READ, MAP_PRIVATE, fd, 0) : nullptr;
+  const int map_errno = errno;
+  ::close(fd);  // the mapping keeps the file
+  if (address == MAP_FAILED)
+    throw Error(source, std::string("cannot map the file: ") + std::strerror(map_errno));
+  if (address) {
+    encoded.mapping = std::shared_ptr<const void>(
+        address, [size](const void* p) { ::munmap(const_cast<void*>(p), size); });
+    encoded.bytes = {static_cast<const uint8_t*>(address), size};
   }
-  size_t done = 0;
-  while (done < encoded.owned.size()) {
-    ssize_t n = ::read(fd, encoded.owned.data() + done, encoded.owned.size() - done);
-    if (n < 0 && errno == EINTR) continue;
-    if (n <= 0) break;
-    done += size_t(n);
-  }
-  ::close(fd);
-  encoded.owned.resize(done);  // a file that shrank while read is read as it is now
-  encoded.bytes = encoded.owned;
   return encoded;
 }
 

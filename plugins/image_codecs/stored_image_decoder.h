@@ -3,6 +3,7 @@
 #pragma once
 
 #include <cstdint>
+#include <memory>
 #include <span>
 #include <string>
 #include <vector>
@@ -11,14 +12,17 @@
 
 namespace obscura::codecs {
 
-// An encoded image in memory: the file's bytes read here, or bytes the caller keeps alive.
+// An encoded image in memory: a file mapped here, or bytes the caller keeps alive.
 struct EncodedBytes {
-  std::vector<uint8_t> owned;
+  std::shared_ptr<const void> mapping;  // unmaps the file
   std::span<const uint8_t> bytes;
   std::string source;  // names the image in messages
 };
 
-// Reads a whole file (for `source`'s messages); throws obscura::Error when it cannot.
+// Maps a whole file read-only (named `source` in messages): pages are read as the decoder
+// touches them, so a file far larger than its image (trailing junk) costs no memory for the
+// rest. (A file that another process truncates while it is decoded ends the process with
+// SIGBUS, as with any mapped file.) Throws obscura::Error when it cannot.
 EncodedBytes read_encoded_file(const std::string& path, const std::string& source);
 EncodedBytes borrow_encoded_bytes(std::span<const uint8_t> bytes, const std::string& source);
 
