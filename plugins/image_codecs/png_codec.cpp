@@ -102,7 +102,7 @@ class PngDecoder final : public StoredImageDecoder {
           std::string(text[i].text,
                       text[i].text_length ? text[i].text_length : text[i].itxt_length));
     }
-    if (png_get_valid(png_, info_, PNG_INFO_sRGB))
+    if (png_get_valid(png_, info_, PNG_INFO_sRGB) && !header_.has_attribute("oiio:ColorSpace"))
       header_.text_attributes.emplace_back("oiio:ColorSpace", "sRGB");
     return true;
   }
