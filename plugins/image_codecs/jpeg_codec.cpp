@@ -45,6 +45,17 @@ void install(JpegErrors& errors) {
   errors.manager.emit_message = on_message;
 }
 
+// libjpeg's state, in a member of its own so that it is destroyed even when the decoder's
+// constructor throws (a corrupt header): found leaking by fuzz/image_fuzz.cpp.
+struct JpegReadState {
+  JpegErrors errors;
+  jpeg_decompress_struct info{};
+  bool created = false;
+  ~JpegReadState() {
+    if (created) jpeg_destroy_decompress(&info);
+  }
+};
+
 class JpegDecoder final : public StoredImageDecoder {
  public:
   explicit JpegDecoder(EncodedBytes encoded) : encoded_(std::move(encoded)) {
@@ -55,9 +66,6 @@ class JpegDecoder final : public StoredImageDecoder {
     header_.format = SampleType::kUint8;
     header_.channel_names = default_channel_names(header_.channels);
     if (!comment_.empty()) header_.text_attributes.emplace_back("ImageDescription", comment_);
-  }
-  ~JpegDecoder() override {
-    if (created_) jpeg_destroy_decompress(&info_);
   }
   // Whether libjpeg decodes this file's colours itself (not CMYK or YCCK).
   bool supported() const { return supported_; }
@@ -70,7 +78,7 @@ class JpegDecoder final : public StoredImageDecoder {
   bool read_header() {
     if (setjmp(errors_.jump)) return false;
     jpeg_create_decompress(&info_);
-    created_ = true;
+    state_.created = true;
     jpeg_mem_src(&info_, encoded_.bytes.data(), static_cast<unsigned long>(encoded_.bytes.size()));
     jpeg_save_markers(&info_, JPEG_COM, 0xffff);
     jpeg_read_header(&info_, TRUE);
@@ -109,9 +117,9 @@ class JpegDecoder final : public StoredImageDecoder {
   }
 
   EncodedBytes encoded_;
-  JpegErrors errors_;
-  jpeg_decompress_struct info_{};
-  bool created_ = false;
+  JpegReadState state_;
+  JpegErrors& errors_ = state_.errors;
+  jpeg_decompress_struct& info_ = state_.info;
   bool supported_ = true;
   std::string comment_;
 };
