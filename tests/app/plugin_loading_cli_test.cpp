@@ -56,6 +56,44 @@ TEST_F(PluginLoadingCli, StartUpLoadsNeitherOpenImageIONorOpenMpi) {
   EXPECT_THAT(result.output, Not(HasSubstr("libobscura_image_codecs")));
 }
 
+// Writing and reading every format Obscura writes loads the native codecs, never OpenImageIO
+// (issue 18: its ~250 libraries cost ~0.25 s); a Targa, which only OpenImageIO reads, loads it.
+TEST_F(PluginLoadingCli, CommonFormatsLoadTheNativeCodecsNotOpenImageIO) {
+  for (const char* ext : {"png", "exr", "jpg", "tif", "hdr"}) {
+    auto result = test::run_shell(
+        "LD_DEBUG=libs " + test::cli_command_line(small_render + path(std::string("o.") + ext)));
+    ASSERT_EQ(result.exit_code, 0) << ext << ": " << result.output;
+    EXPECT_THAT(result.output, HasSubstr("libobscura_image_codecs")) << ext;
+    EXPECT_THAT(result.output, Not(HasSubstr("libOpenImageIO"))) << ext;
+    EXPECT_THAT(result.output, Not(HasSubstr("libobscura_oiio_codecs"))) << ext;
+  }
+  // Reading them (and a PFM) back: `image diff` decodes both files.
+  for (const char* ext : {"png", "exr", "jpg", "tif", "hdr"}) {
+    std::string file = path(std::string("o.") + ext);
+    auto diff = test::run_shell("LD_DEBUG=libs " +
+                                test::cli_command_line("image diff " + file + " " + file));
+    ASSERT_EQ(diff.exit_code, 0) << ext << ": " << diff.output;
+    EXPECT_THAT(diff.output, Not(HasSubstr("libOpenImageIO"))) << ext;
+  }
+  ASSERT_EQ(test::run_shell(test::cli_command_line(small_render + path("o.pfm"))).exit_code, 0);
+  auto pfm =
+      test::run_shell("LD_DEBUG=libs " + test::cli_command_line("image convert " + path("o.pfm") +
+                                                                " " + path("from-pfm.exr")));
+  ASSERT_EQ(pfm.exit_code, 0) << pfm.output;
+  EXPECT_THAT(pfm.output, Not(HasSubstr("libOpenImageIO")));
+  // An uncompressed 2 × 1 true-colour Targa (TGA 2.0: an 18-byte header, then B, G, R).
+  const unsigned char tga[] = {0, 0, 2, 0, 0,  0,    0,  0,  0,  0,  0,  0,
+                               2, 0, 1, 0, 24, 0x20, 10, 20, 30, 40, 50, 60};
+  std::ofstream(path("a.tga"), std::ios::binary)
+      .write(reinterpret_cast<const char*>(tga), sizeof tga);
+  auto targa =
+      test::run_shell("LD_DEBUG=libs " +
+                      test::cli_command_line("image diff " + path("a.tga") + " " + path("a.tga")));
+  ASSERT_EQ(targa.exit_code, 0) << targa.output;
+  EXPECT_THAT(targa.output, HasSubstr("libobscura_oiio_codecs"));
+  EXPECT_THAT(targa.output, HasSubstr("libOpenImageIO"));
+}
+
 TEST_F(PluginLoadingCli, VersionRunsWithoutAnyPlugin) {
   auto result = run_with_plugin_dir(path("plugins"), "--version");
   EXPECT_EQ(result.exit_code, 0) << result.output;

@@ -134,13 +134,21 @@ TEST_F(ImageReader, StraightAlphaColourIsReadAsStored) {
 }
 
 // OpenImageIO 2.4's threaded zip-strip decompression outlives a failed TIFF read (see
-// image_reader.cpp); the race itself cannot be provoked on demand, so this guards the setting that
-// prevents it: once Obscura has opened an image, TIFF strips decompress on the calling thread.
+// plugins/oiio_codecs); the race itself cannot be provoked on demand, so this guards the setting
+// that prevents it: once Obscura has read an image through OpenImageIO (a Targa here: TIFF itself
+// is libtiff's now, on the calling thread), TIFF strips decompress on the calling thread.
 TEST_F(ImageReader, TiffStripsAreNotDecompressedOnOtherThreads) {
   Image grey(4, 4, 3);
   grey.data.assign(grey.data.size(), 0.5f);
   write_image(path("grey.tif"), grey);
   EXPECT_EQ(read_image(path("grey.tif")).width, 4);
+  std::vector<float> texels(4 * 4 * 3, 0.5f);
+  OIIO::ImageSpec spec(4, 4, 3, OIIO::TypeDesc::UINT8);
+  auto out = OIIO::ImageOutput::create(path("grey.tga"));
+  ASSERT_TRUE(out && out->open(path("grey.tga"), spec));
+  ASSERT_TRUE(out->write_image(OIIO::TypeDesc::FLOAT, texels.data()));
+  out->close();
+  EXPECT_EQ(read_image(path("grey.tga")).width, 4);
   EXPECT_EQ(OIIO::get_int_attribute("tiff:multithread", 1), 0);
 }
 

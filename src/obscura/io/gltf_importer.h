@@ -37,8 +37,8 @@ inline Rgb rgb(const std::vector<double>& v, Rgb fallback) {
   return {float(v[0]), float(v[1]), float(v[2])};
 }
 
-// Decoded images, filled by tinygltf's image callback (which we route to OpenImageIO). An image
-// that cannot be read is a warning, not an error: its material renders with the factor alone.
+// Decoded images, filled by tinygltf's image callback (which we route to the image codecs). An
+// image that cannot be read is a warning, not an error: its material renders with the factor alone.
 struct ImageStore {
   std::string file;
   const tinygltf::Model* model = nullptr;  // filled by tinygltf while it parses

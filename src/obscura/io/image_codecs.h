@@ -1,10 +1,14 @@
-// The boundary between Obscura and the image codecs (OpenImageIO and, through it, libpng, libjpeg,
-// libtiff, OpenEXR, …). The codecs live in a plugin, libobscura_image_codecs.so, that is loaded
-// on the first image read or write (image_codecs_loader.h): OpenImageIO pulls in some 250 shared
-// libraries, whose loading and relocation cost every process ~0.25 s and ~100 MB before any work,
-// including those that never touch an image file (`obscura --version`, `import obscura`).
+// The boundary between Obscura and the image codecs. They live in two plugins, loaded on first
+// use (image_codecs_loader.h), so that a process that never touches an image file (`obscura
+// --version`, `import obscura`) loads none of their libraries:
+//  - libobscura_image_codecs.so: PNG, JPEG, TIFF, OpenEXR and Radiance HDR through libpng,
+//    libjpeg, libtiff and OpenEXR directly, and PFM (plugins/image_codecs), loaded on the first
+//    image read or write: a few milliseconds;
+//  - libobscura_oiio_codecs.so: OpenImageIO (plugins/oiio_codecs), for the readers the first does
+//    not have (BMP, Targa, PNM other than PFM, rare TIFF and JPEG layouts): some 250 shared
+//    libraries, ~0.25 s and ~100 MB, loaded only when such a file is read.
 //
-// Only plain types cross the boundary, so no header outside the plugin names an OpenImageIO type.
+// Only plain types cross the boundary, so no header outside the plugins names a codec's type.
 // Both sides are built together by the one CMake project (same compiler, same standard library);
 // the entry point's name carries kImageCodecsAbi, so a stale plugin is refused rather than misread.
 #pragma once
@@ -79,7 +83,9 @@ class ImageCodecs {
   virtual ~ImageCodecs() = default;
   // Opens an image with the named reader ("png", "openexr", … — never a fallback to other
   // readers): from the file `name`, or, when `from_memory`, from `memory` (which must outlive the
-  // decoder; `name` is then only a name). `source` names the image in messages.
+  // decoder; `name` is then only a name). `source` names the image in messages. Returns nullptr
+  // when these codecs do not decode the reader's format, or this file's layout of it (the next
+  // plugin is then asked); throws obscura::Error when the file is not a valid one.
   virtual std::unique_ptr<ImageDecoder> open(const std::string& reader, const std::string& name,
                                              bool from_memory, std::span<const uint8_t> memory,
                                              const std::string& source) const = 0;
@@ -87,10 +93,12 @@ class ImageCodecs {
   virtual std::vector<unsigned char> encode(const EncodeRequest& request) const = 0;
 };
 
-// Bumped whenever a type above changes.
-inline constexpr int kImageCodecsAbi = 1;
-// The plugin's file name and its one exported function, `const ImageCodecs* NAME()`.
+// Bumped whenever a type above, or what a function returns, changes (2: open() may return nullptr).
+inline constexpr int kImageCodecsAbi = 2;
+// The plugins' file names and their one exported function each, `const ImageCodecs* NAME()`.
 inline constexpr const char* kImageCodecsPluginFile = "libobscura_image_codecs.so";
-inline constexpr const char* kImageCodecsEntryPoint = "obscura_image_codecs_v1";
+inline constexpr const char* kImageCodecsEntryPoint = "obscura_image_codecs_v2";
+inline constexpr const char* kOiioCodecsPluginFile = "libobscura_oiio_codecs.so";
+inline constexpr const char* kOiioCodecsEntryPoint = "obscura_oiio_codecs_v2";
 
 }  // namespace obscura

@@ -88,8 +88,9 @@ std::string colorspace_attribute(DisplaySpace d) {
   return "sRGB";
 }
 
-// Portable float map, encoded directly (this OpenImageIO has no PFM writer): "PF" (RGB) or "Pf"
-// (grey), width and height, a negative scale meaning little-endian, then rows bottom to top.
+// Portable float map, encoded directly (OpenImageIO 2.4, which reads PFM, has no writer for it):
+// "PF" (RGB) or "Pf" (grey), width and height, a negative scale meaning little-endian, then rows
+// bottom to top.
 std::vector<uint8_t> encode_pfm(int width, int height, int channels,
                                 const std::vector<float>& data) {
   static_assert(std::endian::native == std::endian::little, "PFM is written little-endian");

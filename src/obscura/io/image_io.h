@@ -1,5 +1,5 @@
-// Reading and writing image files, through the image codecs plugin (OpenImageIO; image_codecs.h),
-// which is loaded on the first read or write.
+// Reading and writing image files, through the image codecs plugins (image_codecs.h),
+// which are loaded on the first read or write.
 //
 // The format follows the file's extension:
 //   display-referred (developed: exposure, tone map, display encoding, N bits, dither):
@@ -79,8 +79,8 @@ void write_exr_data(const std::string& path, const Image& image, const ImageMeta
 Image read_exr_data(const std::string& path, ImageMetadata& metadata);
 
 // Reads an image as stored: 8/16-bit files give values in [0, 1] still encoded (no decoding is
-// applied), float files their float values. Formats: PNG, JPEG, EXR, HDR, TIFF, PFM, and anything
-// else OpenImageIO reads.
+// applied), float files their float values. Formats: PNG, JPEG, EXR, HDR, TIFF (native codecs),
+// PFM, and BMP, Targa and what else the image reader lets OpenImageIO read.
 Image read_image(const std::string& path);
 
 // The view develop() takes, of an Image.

@@ -34,7 +34,8 @@ std::string lowercase(std::string s) {
   return s;
 }
 
-// The OpenImageIO reader for an image whose leading bytes identify it, or "" when they do not.
+// The reader (by OpenImageIO's names for them) for an image whose leading bytes identify it, or ""
+// when they do not.
 std::string reader_for_magic(std::span<const uint8_t> head) {
   auto starts = [head](std::string_view magic, size_t at = 0) {
     return head.size() >= at + magic.size() &&
@@ -84,7 +85,7 @@ void check_header(const ImageHeader& header, const std::string& source) {
 // OpenEXR allocates what its header declares before reading it: check the header first.
 void check_exr_file(const std::string& path) {
   int fd = ::open(path.c_str(), O_RDONLY | O_CLOEXEC);
-  if (fd < 0) return;  // OpenImageIO reports why it cannot be read
+  if (fd < 0) return;  // the codecs report why it cannot be read
   auto read = [fd](uint64_t offset, size_t size, uint8_t* out) {
     return ::pread(fd, out, size, off_t(offset)) == ssize_t(size);
   };
