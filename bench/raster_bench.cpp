@@ -9,10 +9,16 @@
 // (fragments passing LESS), counted once per workload outside the timing, as lpbench does.
 //
 //   build/bench/raster_bench --benchmark_filter='mesh/gouraud' (arguments: threads)
+//
+// With OBSCURA_RASTER_BENCH_DUMP=DIR each benchmark also draws one frame with the aovs on and
+// writes DIR/<workload>_<shader>_<threads>.bin: per pixel, row by row, colour r g b, depth and view
+// depth as float32, then the primitive ids as uint32 — to compare two builds' images.
 #include <benchmark/benchmark.h>
 
 #include <cmath>
 #include <cstdint>
+#include <cstdio>
+#include <cstdlib>
 #include <map>
 #include <string>
 #include <vector>
@@ -224,8 +230,25 @@ const Workload& workload(const std::string& name) {
   return cache.emplace(name, std::move(w)).first->second;
 }
 
+// The frame's buffers as raw little-endian arrays (see the header comment), for comparisons.
+void dump_frame(const RenderTarget& t, const std::string& path) {
+  std::vector<float> floats;
+  std::vector<uint32_t> ids;
+  for (int y = 0; y < t.height(); ++y)
+    for (int x = 0; x < t.width(); ++x) {
+      const Rgb c = t.color_at(x, y);
+      floats.insert(floats.end(), {c.r, c.g, c.b, t.depth_at(x, y), t.view_depth_at(x, y)});
+      ids.push_back(t.primitive_id_at(x, y));
+    }
+  FILE* f = std::fopen(path.c_str(), "wb");
+  if (!f) return;
+  std::fwrite(floats.data(), sizeof(float), floats.size(), f);
+  std::fwrite(ids.data(), sizeof(uint32_t), ids.size(), f);
+  std::fclose(f);
+}
+
 template <class P>
-void run(benchmark::State& state, const std::string& name) {
+void run(benchmark::State& state, const std::string& name, const std::string& shader) {
   const Workload& w = workload(name);
   tbb::global_control threads(tbb::global_control::max_allowed_parallelism, size_t(state.range(0)));
   P program{&w, normalize(Vector3f(0.4f, 0.6f, 0.7f))};
@@ -238,6 +261,13 @@ void run(benchmark::State& state, const std::string& name) {
     draw(target, draw_state, program, w.vertices, w.indices);
     benchmark::DoNotOptimize(target.color_group(0));
     benchmark::ClobberMemory();
+  }
+  if (const char* dir = std::getenv("OBSCURA_RASTER_BENCH_DUMP")) {
+    RenderTarget frame(kWidth, kHeight, 1, /*aovs=*/true);
+    frame.clear(clear);
+    draw(frame, draw_state, program, w.vertices, w.indices);
+    dump_frame(frame, std::string(dir) + "/" + name + "_" + shader + "_" +
+                          std::to_string(state.range(0)) + ".bin");
   }
   // Fragment counts, outside the timing: additive blending of 1 per fragment.
   auto count = [&](DepthFunc func) {
@@ -275,19 +305,23 @@ void run(benchmark::State& state, const std::string& name) {
 
 void register_all() {
   for (const char* name : {"mesh", "mesh_cull", "fill", "fill_f2b", "tiny"}) {
-    benchmark::RegisterBenchmark((std::string(name) + "/gouraud").c_str(),
-                                 [name](benchmark::State& s) { run<GouraudBenchProgram>(s, name); })
+    benchmark::RegisterBenchmark(
+        (std::string(name) + "/gouraud").c_str(),
+        [name](benchmark::State& s) { run<GouraudBenchProgram>(s, name, "gouraud"); })
         ->Arg(1)
         ->Arg(2)
         ->Unit(benchmark::kMillisecond)
         ->UseRealTime()
+        ->MeasureProcessCPUTime()
         ->MinWarmUpTime(0.2);
-    benchmark::RegisterBenchmark((std::string(name) + "/phong").c_str(),
-                                 [name](benchmark::State& s) { run<PhongBenchProgram>(s, name); })
+    benchmark::RegisterBenchmark(
+        (std::string(name) + "/phong").c_str(),
+        [name](benchmark::State& s) { run<PhongBenchProgram>(s, name, "phong"); })
         ->Arg(1)
         ->Arg(2)
         ->Unit(benchmark::kMillisecond)
         ->UseRealTime()
+        ->MeasureProcessCPUTime()
         ->MinWarmUpTime(0.2);
   }
 }

@@ -30,6 +30,14 @@ struct BinnedTriangle {
   uint32_t primitive;
 };
 
+// The rectangle of tiles [x0, x1] × [y0, y1] that a chunk's triangles touch (empty: x0 > x1). The
+// tile stage visits every chunk for every tile; this lets it pass over a chunk without reading
+// its bins (a dense draw has thousands of chunks, each touching few of the screen's tiles).
+struct TileRect {
+  int x0 = 0, y0 = 0, x1 = -1, y1 = -1;
+  bool contains(int x, int y) const { return x >= x0 && x <= x1 && y >= y0 && y <= y1; }
+};
+
 struct TileGrid {
   int columns = 0, rows = 0;
   explicit TileGrid(Viewport v)
@@ -71,6 +79,7 @@ class Chunk {
   std::vector<ShadedVertex<V>> vertices;  // made by clipping
   std::vector<uint32_t> bin_start;        // per tile, into bin_items; tile_count + 1 entries
   std::vector<uint32_t> bin_items;        // triangle indices, grouped by tile, in order
+  TileRect tiles;                         // the tiles any of its triangles touches
 
   const ShadedVertex<V>& vertex(uint32_t ref, const ShadedVertex<V>* shared) const {
     return (ref & kChunkVertexBit) ? vertices[ref & ~kChunkVertexBit] : shared[ref];
@@ -84,6 +93,7 @@ class Chunk {
     triangles.clear();
     vertices.clear();
     pairs_.clear();
+    tiles = TileRect{grid.columns, grid.rows, -1, -1};
     for (uint32_t t = first; t < last; ++t) {
       uint32_t ref[3] = {corner(t, 0), corner(t, 1), corner(t, 2)};
       const ShadedVertex<V>* v[3] = {&shared[ref[0]], &shared[ref[1]], &shared[ref[2]]};
@@ -115,8 +125,12 @@ class Chunk {
     if (xs.first > xs.last || ys.first > ys.last) return;  // covers no sample position
     uint32_t index = uint32_t(triangles.size());
     triangles.push_back({{ref[0], ref[1], ref[2]}, primitive});
-    for (int ty = ys.first >> kTileSizeLog2; ty <= ys.last >> kTileSizeLog2; ++ty)
-      for (int tx = xs.first >> kTileSizeLog2; tx <= xs.last >> kTileSizeLog2; ++tx)
+    const int tx0 = xs.first >> kTileSizeLog2, tx1 = xs.last >> kTileSizeLog2;
+    const int ty0 = ys.first >> kTileSizeLog2, ty1 = ys.last >> kTileSizeLog2;
+    tiles = {std::min(tiles.x0, tx0), std::min(tiles.y0, ty0), std::max(tiles.x1, tx1),
+             std::max(tiles.y1, ty1)};
+    for (int ty = ty0; ty <= ty1; ++ty)
+      for (int tx = tx0; tx <= tx1; ++tx)
         pairs_.push_back({uint32_t(ty * grid.columns + tx), index});
   }
 

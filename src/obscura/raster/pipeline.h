@@ -10,6 +10,7 @@
 // argument, so shaders inline into the pixel loop: no virtual call per pixel or vertex.
 #pragma once
 
+#include <algorithm>
 #include <atomic>
 #include <cstdint>
 #include <memory>
@@ -53,6 +54,7 @@ struct TileJob {
   RenderTarget& target;
   FragmentSettings settings;
   const std::vector<Chunk<typename P::Varyings>>& chunks;
+  const TileRect* chunk_tiles;  // chunks[c].tiles, gathered into one array (cache-friendly)
   const ShadedVertex<typename P::Varyings>* shared;
   TileGrid grid;
 };
@@ -66,7 +68,10 @@ OBSCURA_RASTER_INLINE void rasterize_tile(const TileJob<P>& job, int tile) {
   rect.y1 = std::min(rect.y0 + kTileSize, job.target.height());
   TriangleRasterizer<P, F, Isa> rasterizer(job.program, job.target, job.settings);
   constexpr uint32_t kLookahead = 4;  // triangles: the vertices of dense meshes come from L3
-  for (const auto& chunk : job.chunks) {
+  const int tile_x = tile % job.grid.columns, tile_y = tile / job.grid.columns;
+  for (size_t c = 0; c < job.chunks.size(); ++c) {
+    if (!job.chunk_tiles[c].contains(tile_x, tile_y)) continue;
+    const auto& chunk = job.chunks[c];
     const uint32_t end = chunk.bin_start[tile + 1];
     for (uint32_t k = chunk.bin_start[tile]; k < end; ++k) {
       if (k + kLookahead < end) {
@@ -131,6 +136,7 @@ template <VaryingsType V>
 struct DrawScratch {
   std::vector<ShadedVertex<V>> shared;
   std::vector<Chunk<V>> chunks;
+  std::vector<TileRect> chunk_tiles;
 
   static DrawScratch take() { return std::exchange(cache(), DrawScratch()); }
   static void give_back(DrawScratch&& scratch) { cache() = std::move(scratch); }
@@ -146,6 +152,15 @@ struct DrawScratch {
 
 namespace detail {
 
+// The largest index, as a branch-free reduction the compiler vectorizes: this check runs serially
+// over every index of every draw (12 M for a 4 M-triangle mesh), and a compare-and-throw loop
+// cannot be vectorized. Only a draw that fails it searches for the offending index.
+inline uint32_t largest_index(std::span<const uint32_t> indices) {
+  uint32_t largest = 0;
+  for (uint32_t i : indices) largest = std::max(largest, i);
+  return largest;
+}
+
 // Stages 1 and 2 of a draw, then `rasterize(job)` for stage 3.
 template <Program P, class Rasterize>
 void draw_with(RenderTarget& target, const DrawState& state, const P& program,
@@ -157,7 +172,7 @@ void draw_with(RenderTarget& target, const DrawState& state, const P& program,
   if (corner_count % 3 != 0)
     throw Error("draw", "the number of " + std::string(indexed ? "indices" : "vertices") + " (" +
                             std::to_string(corner_count) + ") is not a multiple of 3");
-  if (indexed)
+  if (indexed && largest_index(indices) >= vertices.size())
     for (size_t i = 0; i < indices.size(); ++i)
       if (indices[i] >= vertices.size())
         throw Error("draw", "index " + std::to_string(i) + " is " + std::to_string(indices[i]) +
@@ -200,6 +215,8 @@ void draw_with(RenderTarget& target, const DrawState& state, const P& program,
     uint32_t last = std::min(triangle_count, first + kChunkTriangles);
     chunks[c].build(first, last, corner, shared, bin, grid);
   });
+  scratch.chunk_tiles.resize(chunks.size());
+  for (size_t c = 0; c < chunks.size(); ++c) scratch.chunk_tiles[c] = chunks[c].tiles;
 
   // 3. Tiles: the depth function is a template argument so the pixel loop has no switch.
   FragmentSettings settings;
@@ -210,7 +227,8 @@ void draw_with(RenderTarget& target, const DrawState& state, const P& program,
   settings.front_face = state.front_face;
   settings.object_id = state.object_id;
   settings.wireframe = state.wireframe;
-  rasterize(detail::TileJob<P>{program, target, settings, chunks, shared, grid});
+  rasterize(detail::TileJob<P>{program, target, settings, chunks, scratch.chunk_tiles.data(),
+                               shared, grid});
   detail::DrawScratch<V>::give_back(std::move(scratch));
 }
 

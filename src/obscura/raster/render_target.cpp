@@ -41,19 +41,27 @@ void RenderTarget::set_share(int part, int parts) {
   share_parts_ = parts;
 }
 
+// In parallel over bands of elements: a 1080p frame's colour and depth are 33 MB, which one
+// thread takes milliseconds to write while the others wait for the draw to start.
 void RenderTarget::clear(Rgb color, float depth) {
-  for (size_t g = 0; g < color_.size(); g += 3 * kRowAlignment) {
-    std::fill_n(color_.begin() + g, kRowAlignment, color.r);
-    std::fill_n(color_.begin() + g + kRowAlignment, kRowAlignment, color.g);
-    std::fill_n(color_.begin() + g + 2 * kRowAlignment, kRowAlignment, color.b);
-  }
-  std::fill(depth_.begin(), depth_.end(), depth);
-  if (aovs_) {
-    std::fill(object_id_.begin(), object_id_.end(), kNoObject);
-    std::fill(primitive_id_.begin(), primitive_id_.end(), 0u);
-    std::fill(view_depth_.begin(), view_depth_.end(), std::numeric_limits<float>::infinity());
-    std::fill(normal_.begin(), normal_.end(), Vector3f());
-  }
+  const size_t elements = depth_.size();  // samples, one group of kRowAlignment at a time
+  constexpr size_t kBand = 64 * 1024;     // elements; a multiple of kRowAlignment
+  tbb::parallel_for(size_t(0), (elements + kBand - 1) / kBand, [&](size_t band) {
+    const size_t first = band * kBand, last = std::min(elements, first + kBand);
+    for (size_t g = first * 3; g < last * 3; g += 3 * kRowAlignment) {
+      std::fill_n(color_.begin() + g, kRowAlignment, color.r);
+      std::fill_n(color_.begin() + g + kRowAlignment, kRowAlignment, color.g);
+      std::fill_n(color_.begin() + g + 2 * kRowAlignment, kRowAlignment, color.b);
+    }
+    std::fill(depth_.begin() + first, depth_.begin() + last, depth);
+    if (aovs_) {
+      std::fill(object_id_.begin() + first, object_id_.begin() + last, kNoObject);
+      std::fill(primitive_id_.begin() + first, primitive_id_.begin() + last, 0u);
+      std::fill(view_depth_.begin() + first, view_depth_.begin() + last,
+                std::numeric_limits<float>::infinity());
+      std::fill(normal_.begin() + first, normal_.begin() + last, Vector3f());
+    }
+  });
 }
 
 Image RenderTarget::resolve_color() const {
