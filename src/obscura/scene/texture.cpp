@@ -92,6 +92,23 @@ Vector4f sample_texture(const Texture& t, Point2f uv) {
   const int ys[2] = {wrap_texel_index(y0, t.height, t.wrap_v),
                      wrap_texel_index(y0 + 1, t.height, t.wrap_v)};
   Vector4f result;
+  if (t.encoding == TextureEncoding::kSrgb && t.channels >= 3 && !t.texels_8bit.empty()) {
+    // The common colour texture (8-bit sRGB, RGB or RGBA) without texel_rgba's per-texel
+    // branches: the same values, summed in the same order.
+    const std::array<float, 256>& decode = srgb_decode_8bit();
+    const uint8_t* texels = t.texels_8bit.data();
+    const bool has_alpha = t.channels >= 4;
+    for (int dy = 0; dy < 2; ++dy)
+      for (int dx = 0; dx < 2; ++dx) {
+        float w = (dx ? ax : 1 - ax) * (dy ? ay : 1 - ay);
+        if (w == 0) continue;
+        const uint8_t* p = texels + (size_t(ys[dy]) * t.width + xs[dx]) * t.channels;
+        Vector4f v(decode[p[0]], decode[p[1]], decode[p[2]],
+                   has_alpha ? p[3] * (1.f / 255.f) : 1.f);
+        result = result + v * w;
+      }
+    return result;
+  }
   for (int dy = 0; dy < 2; ++dy)
     for (int dx = 0; dx < 2; ++dx) {
       float w = (dx ? ax : 1 - ax) * (dy ? ay : 1 - ay);
