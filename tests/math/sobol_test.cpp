@@ -96,6 +96,20 @@ TEST(OwenScramble, IsABijectionOfTheLowBitsUnderFixedHighBits) {
 TEST(Sobol, ReverseBits) {
   EXPECT_EQ(reverse_bits(1u), 0x80000000u);
   EXPECT_EQ(reverse_bits(0x0000f00fu), 0xf00f0000u);
+  // Against bit i moved to bit 31 − i, one bit at a time.
+  for (uint32_t v : {0u, 0xffffffffu, 0x12345678u, 0x80000001u, 0x00ff00f0u, 0xdeadbeefu}) {
+    uint32_t expected = 0;
+    for (int i = 0; i < 32; ++i)
+      if (v & (1u << i)) expected |= 1u << (31 - i);
+    EXPECT_EQ(reverse_bits(v), expected) << std::hex << v;
+  }
+}
+
+// The shortcut for a scrambled dimension-0 point is the scramble of the built point.
+TEST(OwenScramble, VanDerCorputShortcutEqualsScramblingThePoint) {
+  for (uint32_t seed : {0u, 1u, 0x9e3779b9u, 0xffffffffu})
+    for (uint32_t i : {0u, 1u, 2u, 3u, 255u, 256u, 65535u, 0x12345678u})
+      EXPECT_EQ(owen_scrambled_van_der_corput(i, seed), owen_scramble(sobol_bits(i, 0), seed));
 }
 
 }  // namespace

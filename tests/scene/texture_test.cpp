@@ -85,5 +85,34 @@ TEST(Texture, SrgbEightBitTableIsExactForEveryValue) {
   }
 }
 
+// Bilinear lookups of 8-bit sRGB colour textures (their own path): the weighted mean of the four
+// nearest texels' decoded values, alpha linear, across the repeat seam too.
+TEST(Texture, SrgbEightBitBilinearBlendsDecodedTexels) {
+  for (int channels : {3, 4}) {
+    Texture t;
+    t.width = 2, t.height = 2, t.channels = channels;
+    t.filter = TextureFilter::kBilinear;
+    const uint8_t values[4][4] = {
+        {0, 64, 128, 255}, {255, 0, 32, 0}, {10, 20, 30, 40}, {200, 100, 50, 25}};
+    for (const auto& texel : values)
+      for (int c = 0; c < channels; ++c) t.texels_8bit.push_back(texel[c]);
+    auto decoded = [&](int texel, int c) {
+      float e = values[texel][c] * (1.f / 255.f);
+      return c < 3 ? srgb_decode(e) : channels == 4 ? e : 1.f;
+    };
+    // u = v = 0.375: a quarter of the way from column 0's centre to column 1's, and likewise
+    // from row 0 to row 1. Weights (1 − a)(1 − b), a(1 − b), (1 − a)b, ab with a = b = 0.25.
+    Vector4f v = sample_texture(t, {0.375f, 0.375f});
+    // u = 1.0: half way between column 1 and (repeated) column 0, on row 0's centre line.
+    Vector4f seam = sample_texture(t, {1.0f, 0.25f});
+    for (int c = 0; c < 4; ++c) {
+      float expected = 0.5625f * decoded(0, c) + 0.1875f * decoded(1, c) + 0.1875f * decoded(2, c) +
+                       0.0625f * decoded(3, c);
+      EXPECT_NEAR(v[c], expected, 1e-6f) << channels << " channels, c " << c;
+      EXPECT_NEAR(seam[c], 0.5f * (decoded(0, c) + decoded(1, c)), 1e-6f) << c;
+    }
+  }
+}
+
 }  // namespace
 }  // namespace obscura

@@ -94,6 +94,7 @@ void validate(const PixelFilter& f) {
 
 FilterSampler::FilterSampler(const PixelFilter& filter) : filter_(filter) {
   validate(filter);
+  if (auto* box = std::get_if<BoxFilter>(&filter)) box_radius_px_ = box->radius_px;
   if (std::holds_alternative<BoxFilter>(filter) || std::holds_alternative<TentFilter>(filter))
     return;  // sampled exactly
   table_.radius = filter_radius_px(filter);
@@ -122,9 +123,7 @@ double FilterSampler::sample_axis(double u, double* pdf, double* value) const {
   return x;
 }
 
-FilterSample FilterSampler::sample(Point2d u) const {
-  if (auto* box = std::get_if<BoxFilter>(&filter_))
-    return {{(2 * u.x - 1) * box->radius_px, (2 * u.y - 1) * box->radius_px}, 1.0};
+FilterSample FilterSampler::sample_other(Point2d u) const {
   if (auto* tent = std::get_if<TentFilter>(&filter_)) {
     // Inverse CDF of the unit tent on [−1, 1], per axis.
     auto sample_tent = [](double v) {

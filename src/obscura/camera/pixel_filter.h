@@ -56,9 +56,16 @@ struct FilterSample {
 class FilterSampler {
  public:
   explicit FilterSampler(const PixelFilter& filter);
-  FilterSample sample(Point2d u) const;
+  FilterSample sample(Point2d u) const {
+    // The box, the tracer's usual filter, inline: the render loop draws one offset per sample.
+    if (box_radius_px_ > 0)
+      return {{(2 * u.x - 1) * box_radius_px_, (2 * u.y - 1) * box_radius_px_}, 1.0};
+    return sample_other(u);
+  }
 
  private:
+  FilterSample sample_other(Point2d u) const;
+
   struct Axis1D {
     double radius = 0;
     std::vector<double> values;  // f at bin centres (signed)
@@ -68,6 +75,7 @@ class FilterSampler {
   double sample_axis(double u, double* pdf, double* value) const;
 
   PixelFilter filter_;
+  double box_radius_px_ = 0;  // the box's radius when filter_ is one, else 0
   Axis1D table_;
 };
 

@@ -113,10 +113,11 @@ class Sampler {
       // down maps the first 2^k indices onto an aligned block of 2^k, whose points form a net.
       pair_index_ = owen_scramble(sample_index_, uint32_t(pair_keys_.key));
     }
-    uint32_t bits = sobol_bits(pair_index_, component);
-    uint32_t scramble_seed =
-        component == 0 ? uint32_t(pair_keys_.key >> 32) : uint32_t(pair_keys_.mixed);
-    return fraction_to_float(owen_scramble(bits, scramble_seed));
+    // Component 0 is Sobol dimension 0 (van der Corput), scrambled without building the point.
+    if (component == 0)
+      return fraction_to_float(
+          owen_scrambled_van_der_corput(pair_index_, uint32_t(pair_keys_.key >> 32)));
+    return fraction_to_float(owen_scramble(sobol_bits(pair_index_, 1), uint32_t(pair_keys_.mixed)));
   }
 
   SamplerType type_;

@@ -8,6 +8,8 @@
 namespace obscura {
 
 int wrap_texel_index(int i, int size, TextureWrap wrap) {
+  // Every mode leaves an index inside the texture as it is: most lookups, and no division.
+  if (unsigned(i) < unsigned(size)) return i;
   switch (wrap) {
     case TextureWrap::kClampToEdge:
       return i < 0 ? 0 : (i >= size ? size - 1 : i);
@@ -84,14 +86,34 @@ Vector4f sample_texture(const Texture& t, Point2f uv) {
   float fx = x - 0.5f, fy = y - 0.5f;
   int x0 = int(std::floor(fx)), y0 = int(std::floor(fy));
   float ax = fx - x0, ay = fy - y0;
+  // The two columns and rows, each wrapped once rather than once per texel.
+  const int xs[2] = {wrap_texel_index(x0, t.width, t.wrap_u),
+                     wrap_texel_index(x0 + 1, t.width, t.wrap_u)};
+  const int ys[2] = {wrap_texel_index(y0, t.height, t.wrap_v),
+                     wrap_texel_index(y0 + 1, t.height, t.wrap_v)};
   Vector4f result;
+  if (t.encoding == TextureEncoding::kSrgb && t.channels >= 3 && !t.texels_8bit.empty()) {
+    // The common colour texture (8-bit sRGB, RGB or RGBA) without texel_rgba's per-texel
+    // branches: the same values, summed in the same order.
+    const std::array<float, 256>& decode = srgb_decode_8bit();
+    const uint8_t* texels = t.texels_8bit.data();
+    const bool has_alpha = t.channels >= 4;
+    for (int dy = 0; dy < 2; ++dy)
+      for (int dx = 0; dx < 2; ++dx) {
+        float w = (dx ? ax : 1 - ax) * (dy ? ay : 1 - ay);
+        if (w == 0) continue;
+        const uint8_t* p = texels + (size_t(ys[dy]) * t.width + xs[dx]) * t.channels;
+        Vector4f v(decode[p[0]], decode[p[1]], decode[p[2]],
+                   has_alpha ? p[3] * (1.f / 255.f) : 1.f);
+        result = result + v * w;
+      }
+    return result;
+  }
   for (int dy = 0; dy < 2; ++dy)
     for (int dx = 0; dx < 2; ++dx) {
       float w = (dx ? ax : 1 - ax) * (dy ? ay : 1 - ay);
       if (w == 0) continue;
-      Vector4f v = texel_rgba(t, wrap_texel_index(x0 + dx, t.width, t.wrap_u),
-                              wrap_texel_index(y0 + dy, t.height, t.wrap_v));
-      result = result + v * w;
+      result = result + texel_rgba(t, xs[dx], ys[dy]) * w;
     }
   return result;
 }
