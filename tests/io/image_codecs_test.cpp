@@ -16,9 +16,14 @@
 #include "obscura/io/image_reader.h"
 #include "obscura/math/error.h"
 #include "run_command.h"
+#include "test_files.h"
 
 namespace obscura {
 namespace {
+
+using test::error_of;
+using test::file_bytes;
+using test::put_file;
 
 size_t value_size(SampleType type) {
   return type == SampleType::kUint8 ? 1 : type == SampleType::kFloat ? 4 : 2;
@@ -67,20 +72,6 @@ Decoded decode(const std::vector<unsigned char>& file, const std::string& name, 
                   value_size(type));
   in.read(d.header.channels, type, d.values.data());
   return d;
-}
-
-void put_file(const std::string& path, const std::vector<unsigned char>& bytes) {
-  std::ofstream(path, std::ios::binary)
-      .write(reinterpret_cast<const char*>(bytes.data()), std::streamsize(bytes.size()));
-}
-
-std::string error_of(auto&& call) {
-  try {
-    call();
-  } catch (const Error& e) {
-    return e.what();
-  }
-  return "(no error)";
 }
 
 class NativeImageCodecs : public test::TempDirTest {};

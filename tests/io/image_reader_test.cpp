@@ -17,28 +17,14 @@
 #include "obscura/math/error.h"
 #include "png_bytes.h"
 #include "run_command.h"
+#include "test_files.h"
 
 namespace obscura {
 namespace {
 
-std::vector<uint8_t> file_bytes(const std::string& path) {
-  std::ifstream in(path, std::ios::binary);
-  return {std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
-}
-
-void put_file(const std::string& path, const std::vector<uint8_t>& bytes) {
-  std::ofstream(path, std::ios::binary)
-      .write(reinterpret_cast<const char*>(bytes.data()), std::streamsize(bytes.size()));
-}
-
-std::string error_of(auto&& call) {
-  try {
-    call();
-  } catch (const Error& e) {
-    return e.what();
-  }
-  return "(no error)";
-}
+using test::error_of;
+using test::file_bytes;
+using test::put_file;
 
 class ImageReader : public test::TempDirTest {};
 

@@ -13,9 +13,14 @@
 #include "obscura/io/image_codecs_loader.h"
 #include "obscura/io/image_reader.h"
 #include "obscura/math/error.h"
+#include "test_files.h"
 
 namespace obscura {
 namespace {
+
+using test::error_of;
+using test::file_bytes;
+using test::put_file;
 
 std::vector<unsigned char> encode_floats(int width, int height, const std::vector<float>& rgb) {
   EncodeRequest r;
@@ -41,15 +46,6 @@ std::vector<unsigned char> file_with(const std::string& header, std::vector<unsi
   std::vector<unsigned char> file(header.begin(), header.end());
   file.insert(file.end(), body.begin(), body.end());
   return file;
-}
-
-std::string error_of(auto&& call) {
-  try {
-    call();
-  } catch (const Error& e) {
-    return e.what();
-  }
-  return "(no error)";
 }
 
 // The bytes after the header (which ends with the resolution line).
