@@ -46,7 +46,10 @@ inline ::testing::AssertionResult same_pixels(const std::string& actual,
   return ::testing::AssertionSuccess();
 }
 
-inline std::string file_bytes(const std::string& path) {
+// The whole file as text (a different name from test_files.h's file_bytes, which returns bytes:
+// two inline functions with one name and different return types would break the one-definition
+// rule, and the linker keeps one body for both).
+inline std::string file_text(const std::string& path) {
   std::ifstream in(path, std::ios::binary);
   return {std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
 }

@@ -24,7 +24,7 @@ namespace obscura {
 namespace {
 
 namespace fs = std::filesystem;
-using test::file_bytes;
+using test::file_text;
 using test::files_in;
 using test::same_pixels;
 
@@ -60,7 +60,7 @@ std::string frame_name(const std::string& stem, int n) {
 // The frames of a YUV4MPEG2 stream of 4:2:0 frames, each as its bytes; fails the test on a
 // stream that is not whole frames.
 std::vector<std::string> y4m_frames(const std::string& path) {
-  const std::string bytes = file_bytes(path);
+  const std::string bytes = file_text(path);
   const size_t header_end = bytes.find('\n');
   int width = 0, height = 0;
   std::sscanf(bytes.c_str(), "YUV4MPEG2 W%d H%d", &width, &height);
@@ -125,7 +125,7 @@ TEST_F(SequenceCli, AVideoHoldsTheFramesDevelopedAsEachAloneWouldBe) {
   render_sequence_and_frames_alone(sequence_arguments() + " -q -o " + path("video.y4m"), ".y4m");
   const std::vector<std::string> frames = y4m_frames(path("video.y4m"));
   ASSERT_EQ(frames.size(), 6u);
-  EXPECT_NE(file_bytes(path("video.y4m")).find(" F100:1 "), std::string::npos);
+  EXPECT_NE(file_text(path("video.y4m")).find(" F100:1 "), std::string::npos);
   for (int n : kFrames) {
     const std::vector<std::string> alone = y4m_frames(alone_file(n, ".y4m"));
     ASSERT_EQ(alone.size(), 1u);
@@ -212,7 +212,7 @@ TEST_F(SequenceOnRanks, TwoRanksWriteTheSameFramesAndTheSameVideo) {
   for (int n : kFrames)
     EXPECT_TRUE(same_pixels(path(frame_name("two", n)), path(frame_name("one", n))));
   EXPECT_EQ(y4m_frames(path("two.y4m")).size(), 6u);
-  EXPECT_TRUE(file_bytes(path("two.y4m")) == file_bytes(path("one.y4m")))
+  EXPECT_TRUE(file_text(path("two.y4m")) == file_text(path("one.y4m")))
       << "the 2-rank video differs from the 1-rank one";
 }
 

@@ -21,7 +21,7 @@ namespace obscura {
 namespace {
 
 namespace fs = std::filesystem;
-using test::file_bytes;
+using test::file_text;
 using test::files_in;
 using test::same_pixels;
 
@@ -102,7 +102,7 @@ TEST_P(ShardMergeCli, MergedPartsAreTheLoneRenderBitForBit) {
     }
   }
   const std::string merged_png = merged_file(orders.back().size(), ".png");
-  EXPECT_TRUE(file_bytes(merged_png) == file_bytes(path("lone.png")))
+  EXPECT_TRUE(file_text(merged_png) == file_text(path("lone.png")))
       << merged_png << " differs from the lone render's PNG";
 }
 
