@@ -35,6 +35,10 @@ struct CameraRay {
   // orthographic: planes of constant depth; spherical cameras: distances).
   double t_min = 0, t_max = 0;
   double time_s = 0;
+  // What the ray carries of the scene's radiance to the film: 1 for an ideal camera; less where
+  // the optics lose light on the way to this film point (vignetting, a lens system's relative
+  // illumination), so a renderer multiplies the ray's radiance by it.
+  double weight = 1;
 
   Ray to_ray() const;
 };

@@ -111,17 +111,19 @@ RenderStats render(const TraceScene& scene, const Camera& camera, const Integrat
             sampler.skip_1d();
           // 3. The radiance along the ray, exposed, into this pixel with the filter's weight.
           std::optional<Ray> ray;
+          float ray_weight = 1;
           if (pinhole) {
             ray = pinhole->generate(film_point, time);
           } else if (std::optional<CameraRay> r =
                          prepared_camera.generate_ray(film_point, {u_lens.x, u_lens.y}, time)) {
             ray = r->to_ray();
+            ray_weight = float(r->weight);
           }
           FirstHit first;
           Rgb radiance =
               ray ? integrator.radiance(scene, *ray, sampler, counts, aovs ? &first : nullptr)
                   : Rgb();
-          film.add_sample({x, y}, radiance * exposure, float(fs.weight));
+          film.add_sample({x, y}, radiance * (exposure * ray_weight), float(fs.weight));
           if (aovs)
             aovs->add_sample({x, y}, first.hit, first.albedo, first.normal, first.depth, first.id);
         }
