@@ -25,6 +25,8 @@ void apply_scene_settings(const SceneRenderSettings& s, RenderOptions& o) {
   if (s.height && !o.height_given) o.height = *s.height;
   if (s.samples_per_pixel && !o.spp_given) o.spp = *s.samples_per_pixel;
   if (s.seed && !o.seed_given) o.seed = *s.seed;
+  // A scene's wish for spectral transport applies where it can: to the path tracer.
+  if (s.spectral.value_or(false) && o.tracer.renderer == Renderer::kPath) o.tracer.spectral = true;
 }
 
 void validate(const RenderOptions& o) {
@@ -96,6 +98,7 @@ FrameSettings frame_settings(const RenderOptions& options, const WorkShare& shar
                          .seed = options.seed,
                          .sampler = sampler_type(options.tracer),
                          .max_depth = max_depth(options.tracer),
+                         .spectral = options.tracer.spectral,
                          .time_limit_s = options.tracer.time_limit_s,
                          .cancel = &InterruptGuard::requested(),
                          .share = share};

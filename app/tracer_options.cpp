@@ -39,6 +39,9 @@ void add_tracer_options(CLI::App& render, TracerOptions& o) {
       .add_option("--time-limit", o.time_limit_s,
                   "Stop after about this many seconds (without --spp: as many samples as fit)")
       ->check(number_in(0, kMaxTimeLimitS));
+  render.add_flag("--spectral", o.spectral,
+                  "Spectral light transport (path tracer only): wavelengths per path, colours "
+                  "lifted to spectra, dispersive glass; whitted, direct and raster refuse it");
   render.add_flag("--aovs", o.aovs,
                   "Also write albedo, normal, depth and id images beside the output (.exr)");
 }
@@ -51,6 +54,11 @@ void validate(TracerOptions& o) {
   o.renderer = *renderer;
   if (!parse_sampler_type(o.sampler))
     throw UsageError("--sampler must be sobol or independent; got '" + o.sampler + "'");
+  if (o.spectral && o.renderer != Renderer::kPath)
+    throw UsageError(
+        "--spectral needs --renderer path (whitted, direct and raster render RGB "
+        "only); got '" +
+        o.renderer_text + "'");
   bool depth_given = o.max_depth_option && o.max_depth_option->count() > 0;
   if (depth_given && o.max_depth < 1)
     throw UsageError("--max-depth must be at least 1; got " + std::to_string(o.max_depth));

@@ -21,6 +21,7 @@ struct TracerOptions {
   int max_depth = 65;                 // path: scattering events per path; whitted: recursion depth
   double time_limit_s = 0;            // 0 = none
   bool aovs = false;                  // also write <output>.albedo/.normal/.depth/.id.exr
+  bool spectral = false;              // spectral light transport (path tracer only)
   CLI::Option* spp_option = nullptr;  // to know whether --spp was given
   CLI::Option* max_depth_option = nullptr;  // and --max-depth
 };

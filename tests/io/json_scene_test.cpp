@@ -188,6 +188,33 @@ TEST_F(JsonScene, WrongTypesAndRanges) {
                {"no camera named 'missing'"});
 }
 
+TEST_F(JsonScene, SpectralFieldsArriveAndAreChecked) {
+  // A dispersive glass, a blackbody lamp (its RGB: the colour of 6504 K, luminance 2) and the
+  // render block's spectral switch.
+  std::string path = write("spectral.json", R"({
+    "render": {"spectral": true},
+    "materials": {
+      "flint": {"type": "dielectric", "ior": 1.78, "abbe_number": 25.8},
+      "lamp": {"type": "emissive", "emission_kelvin": 6504, "emission_strength": 2}
+    }})");
+  Scene scene = load_scene_file(path);
+  EXPECT_EQ(scene.render.spectral, true);
+  const auto& flint = std::get<DielectricMaterial>(scene.materials[0].model);
+  EXPECT_FLOAT_EQ(flint.abbe_number, 25.8f);
+  EXPECT_FLOAT_EQ(scene.materials[1].emission_kelvin, 6504.f);
+  Rgb lamp = scene.materials[1].emission;
+  EXPECT_NEAR(0.2126729f * lamp.r + 0.7151522f * lamp.g + 0.0721750f * lamp.b, 2.f, 1e-3f);
+  EXPECT_NEAR(lamp.r / lamp.b, 1.f, 0.1f);  // 6504 K is near D65, a neutral white
+  expect_error(R"({"materials": {"m": {"type": "dielectric", "abbe_number": 0.5}}})",
+               {"$.materials.m.abbe_number", "Abbe number"});
+  expect_error(R"({"materials": {"m": {"type": "emissive", "emission": [1, 1, 1],
+                   "emission_kelvin": 3000}}})",
+               {"$.materials.m.emission_kelvin", "either"});
+  expect_error(R"({"materials": {"m": {"type": "emissive", "emission_kelvin": 100}}})",
+               {"$.materials.m.emission_kelvin"});
+  expect_error(R"({"render": {"spectral": "yes"}})", {"$.render.spectral"});
+}
+
 TEST_F(JsonScene, MissingTextureAndMissingModel) {
   expect_error(R"({"materials": {"m": {"type": "diffuse", "reflectance_texture": "nowhere.png"}}})",
                {"$.materials.m.reflectance_texture", "nowhere.png", "does not exist"});

@@ -8,6 +8,7 @@
 #include <numbers>
 
 #include "obscura/camera/frames.h"
+#include "obscura/color/blackbody_spectrum.h"
 #include "obscura/io/camera_mapping.h"
 #include "obscura/io/gltf_animation.h"
 #include "obscura/io/json_reader.h"
@@ -60,6 +61,7 @@ class JsonSceneReader {
     if (json.has("spp"))
       scene_.render.samples_per_pixel = json.integer("spp", 0, 1, kMaxSamplesPerPixel);
     if (json.has("seed")) scene_.render.seed = uint64_t(json.integer("seed", 0, 0, 1 << 30));
+    if (json.has("spectral")) scene_.render.spectral = json.boolean("spectral", false);
     json.finish();
   }
 
@@ -118,6 +120,12 @@ class JsonSceneReader {
       d.ior = float(json.number_in("ior", 1.5, 1e-3, 10));
       d.roughness = float(json.number_in("roughness", 0, 0, 1));
       d.transmittance = json.rgb("transmittance", d.transmittance, 1);
+      d.abbe_number = float(json.number_in("abbe_number", 0, 0, 1000));
+      if (d.abbe_number > 0 && d.abbe_number < 1)
+        json.fail("abbe_number",
+                  "an Abbe number is 0 (no dispersion) or at least 1 (glasses: "
+                  "about 17–95); got " +
+                      json.at("abbe_number").dump());
       m.model = d;
     } else if (type == "metallic-roughness") {
       MetallicRoughnessMaterial mr;
@@ -138,8 +146,16 @@ class JsonSceneReader {
                             "'; expected diffuse, phong, conductor, dielectric, "
                             "metallic-roughness or emissive");
     }
-    m.emission =
-        json.rgb("emission", Rgb()) * float(json.number_in("emission_strength", 1, 0, 1e9));
+    const float strength = float(json.number_in("emission_strength", 1, 0, 1e9));
+    if (json.has("emission_kelvin")) {
+      // A blackbody: its colour for RGB mode, its spectrum for spectral mode.
+      if (json.has("emission"))
+        json.fail("emission_kelvin", "give either an emission colour or a blackbody temperature");
+      m.emission_kelvin = float(json.number_in("emission_kelvin", 6504, 500, 1e6));
+      m.emission = BlackbodySpectrum(m.emission_kelvin).working_rgb() * strength;
+    } else {
+      m.emission = json.rgb("emission", Rgb()) * strength;
+    }
     m.emission_texture = texture(json, "emission_texture", TextureEncoding::kSrgb);
     m.normal_texture = texture(json, "normal_texture", TextureEncoding::kLinear);
     m.double_sided = json.boolean("double_sided", true);

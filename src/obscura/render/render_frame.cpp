@@ -46,6 +46,7 @@ FrameStats trace_frame(const Scene& scene, const Camera& camera, const FrameSett
                                  .seed = settings.seed,
                                  .sampler = settings.sampler,
                                  .tile_size = tile_size(settings.renderer),
+                                 .spectral = settings.spectral,
                                  .time_limit_s = settings.time_limit_s,
                                  .cancel = settings.cancel,
                                  .share = settings.share};
@@ -85,6 +86,8 @@ FrameStats raster_frame(const Scene& scene, const Camera& camera, const FrameSet
 
 FrameStats render_frame(const Scene& scene, const Camera& camera, const FrameSettings& settings,
                         Film& film, AovBuffers* aovs, const ProgressCallback& progress) {
+  if (settings.spectral && settings.renderer != Renderer::kPath)
+    throw Error("spectral rendering", "only the path tracer (renderer 'path') renders spectrally");
   return is_tracer(settings.renderer) ? trace_frame(scene, camera, settings, film, aovs, progress)
                                       : raster_frame(scene, camera, settings, film, aovs, progress);
 }

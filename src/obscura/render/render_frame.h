@@ -27,8 +27,11 @@ struct FrameSettings {
   int samples_per_pixel = 16;  // tracer: samples per pixel (> 0); the most a time limit takes
   uint64_t seed = 0;
   SamplerType sampler = SamplerType::kSobol;
-  int max_depth = 0;        // 0: the integrator's default (path 65, whitted 8); direct ignores it
-  double time_limit_s = 0;  // 0: none
+  int max_depth = 0;  // 0: the integrator's default (path 65, whitted 8); direct ignores it
+  // Spectral light transport (trace/render.h). Only the path tracer has it: with any other
+  // renderer render_frame throws obscura::Error rather than render in RGB.
+  bool spectral = false;
+  double time_limit_s = 0;                    // 0: none
   const std::atomic<bool>* cancel = nullptr;  // set from another thread to stop early
   WorkShare share = {};                       // MPI/--shard parts; default alone
   // The rasterizer's own settings; its seed, time limit, cancel and share are the ones above.

@@ -36,4 +36,12 @@ Material diffuse_material(std::string name, Rgb reflectance, Rgb emission) {
   return m;
 }
 
+float DielectricMaterial::ior_at(float wavelength_nm) const {
+  if (!disperses()) return ior;
+  constexpr double kD = 587.56, kF = 486.13, kC = 656.27;  // Fraunhofer d, F, C lines (nm)
+  double b = (double(ior) - 1) / (abbe_number * (1 / (kF * kF) - 1 / (kC * kC)));
+  double a = ior - b / (kD * kD);
+  return float(a + b / (double(wavelength_nm) * wavelength_nm));
+}
+
 }  // namespace obscura

@@ -39,9 +39,18 @@ struct ConductorMaterial {
 
 // Glass, water: a smooth or rough dielectric interface.
 struct DielectricMaterial {
-  float ior = 1.5f;        // index of refraction inside, relative to outside
+  float ior = 1.5f;        // index of refraction inside, relative to outside (n_d, at 587.56 nm)
   float roughness = 0;     // as ConductorMaterial
   Rgb transmittance{1.f};  // tint of transmitted light
+  // Dispersion: the Abbe number V_d = (n_d − 1) / (n_F − n_C) of the glass (BK7 64.2, dense
+  // flint SF11 25.8), > 0; 0 = none, the index is `ior` at every wavelength. Only spectral mode
+  // disperses; RGB mode uses `ior`.
+  float abbe_number = 0;
+
+  bool disperses() const { return abbe_number > 0; }
+  // The index at a wavelength (nm): Cauchy's two-term n(λ) = A + B/λ² through n_d at the
+  // Fraunhofer d line (587.56 nm) with n_F − n_C = (n_d − 1)/V_d (F 486.13, C 656.27 nm).
+  float ior_at(float wavelength_nm) const;
 };
 
 // The glTF 2.0 metallic-roughness model, with KHR_materials_specular.
@@ -116,6 +125,10 @@ struct Material {
   // Emitted radiance (W·sr⁻¹·m⁻²) from the front face, strength included; the emission texture,
   // where given, multiplies it. Non-black emission makes the surface an area light.
   Rgb emission;
+  // > 0: the emission is a blackbody's at this temperature (K): `emission` then holds its colour
+  // (BlackbodySpectrum::working_rgb) times the strength, what RGB mode renders, and spectral mode
+  // emits Planck's spectrum with that luminance. 0: the emission is its RGB colour.
+  float emission_kelvin = 0;
   TextureRef emission_texture;
   TextureRef normal_texture;  // tangent-space normal map
   float normal_scale = 1;

@@ -29,6 +29,7 @@ struct SceneRenderSettings {
   std::optional<int> width, height;  // pixels
   std::optional<int> samples_per_pixel;
   std::optional<uint64_t> seed;
+  std::optional<bool> spectral;  // spectral light transport (path tracer)
 };
 
 // Counts for `obscura info` and benchmarks.

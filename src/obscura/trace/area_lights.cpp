@@ -51,6 +51,11 @@ AreaLights::AreaLights(const std::vector<Mesh>& meshes, const std::vector<Materi
         size_t(material.emission_texture.texture) < textures->size())
       texture = &(*textures)[material.emission_texture.texture];
     light_of_triangle_[m].assign(mesh.triangle_count(), -1);
+    int32_t spectrum = -1;
+    if (material.emission_kelvin > 0) {
+      spectrum = int32_t(spectra_.size());
+      spectra_.emplace_back(material.emission_kelvin);
+    }
     for (size_t t = 0; t < mesh.triangle_count(); ++t) {
       Point3f p0 = mesh.positions[mesh.indices[3 * t]];
       Point3f p1 = mesh.positions[mesh.indices[3 * t + 1]];
@@ -65,6 +70,7 @@ AreaLights::AreaLights(const std::vector<Mesh>& meshes, const std::vector<Materi
       tri.normal = Normal3f(normalize(n));
       tri.radiance = radiance;
       tri.area = area;
+      tri.spectrum = spectrum;
       double weight = 1;
       if (texture) {
         tri.texture = texture;
@@ -156,7 +162,8 @@ AreaLightPoint AreaLights::sample_point(float u_select, Point2f u_point) const {
   const Triangle& tri = triangles_[i];
   Point2f b = sample_uniform_triangle(u_point);
   Point3f p = tri.p0 + (tri.p1 - tri.p0) * b.x + (tri.p2 - tri.p0) * b.y;
-  return {p, tri.normal, radiance_at(tri, b), selection_probability(i) / tri.area};
+  return {p, tri.normal, radiance_at(tri, b), selection_probability(i) / tri.area,
+          spectrum_of(tri)};
 }
 
 std::optional<AreaLightSample> AreaLights::sample(Point3f p, float u_select,
@@ -181,7 +188,8 @@ std::optional<AreaLightSample> AreaLights::sample(Point3f p, float u_select,
         .position = q,
         .normal = tri.normal,
         .radiance = tri.texture ? radiance_at(tri, barycentric(tri, q)) : tri.radiance,
-        .pdf = float(selection_probability(i) / s->solid_angle())};
+        .pdf = float(selection_probability(i) / s->solid_angle()),
+        .spectrum = spectrum_of(tri)};
   }
   // By area: the density converts to solid angle by d²/cos at the light.
   Point2f b = sample_uniform_triangle(u_point);
@@ -198,7 +206,8 @@ std::optional<AreaLightSample> AreaLights::sample(Point3f p, float u_select,
                          .position = q,
                          .normal = tri.normal,
                          .radiance = radiance_at(tri, b),
-                         .pdf = selection_probability(i) / tri.area * d2 / cos_light};
+                         .pdf = selection_probability(i) / tri.area * d2 / cos_light,
+                         .spectrum = spectrum_of(tri)};
 }
 
 }  // namespace obscura

@@ -10,6 +10,7 @@
 #include <optional>
 #include <vector>
 
+#include "obscura/color/blackbody_spectrum.h"
 #include "obscura/color/rgb.h"
 #include "obscura/math/spherical_triangle.h"
 #include "obscura/math/vector.h"
@@ -28,6 +29,7 @@ struct AreaLightPoint {
   Normal3f normal;  // the emitting side
   Rgb radiance;     // emitted towards the front side
   float pdf_area;   // density with respect to surface area over all lights (m⁻²)
+  const BlackbodySpectrum* spectrum = nullptr;  // a blackbody emitter's shape, else null
 };
 
 struct AreaLightSample {
@@ -37,6 +39,9 @@ struct AreaLightSample {
   Normal3f normal;  // the emitting side
   Rgb radiance;     // arriving along −wi
   float pdf;        // solid-angle density over all area lights (sr⁻¹)
+  // For spectral mode: a blackbody emitter's spectral shape (radiance is then its RGB
+  // equivalent); null for an emitter whose spectrum is its RGB colour lifted.
+  const BlackbodySpectrum* spectrum = nullptr;
 };
 
 class AreaLights {
@@ -84,6 +89,7 @@ class AreaLights {
     Normal3f normal;
     Rgb radiance;  // the emission factor; times the texture where there is one
     float area = 0;
+    int32_t spectrum = -1;  // index into spectra_ for a blackbody emitter
     const Texture* texture = nullptr;
     UvTransform transform;  // the emission texture's
     Point2f uv0, uv1, uv2;
@@ -98,6 +104,10 @@ class AreaLights {
   std::optional<SphericalTriangle> spherical(const Triangle& tri, Point3f p) const;
 
   std::vector<Triangle> triangles_;
+  std::vector<BlackbodySpectrum> spectra_;  // one per blackbody-emitting mesh
+  const BlackbodySpectrum* spectrum_of(const Triangle& tri) const {
+    return tri.spectrum < 0 ? nullptr : &spectra_[tri.spectrum];
+  }
   std::vector<float> cdf_;  // cumulative selection probability, cdf_.back() == 1
   // Per mesh, per triangle: its index in triangles_, or −1; empty for meshes that do not emit.
   std::vector<std::vector<int32_t>> light_of_triangle_;

@@ -1,6 +1,13 @@
 #include "obscura/trace/integrator.h"
 
+#include "obscura/math/error.h"
+
 namespace obscura {
+
+Rgb Integrator::spectral_radiance(const TraceScene&, const Ray&, SampledWavelengths&, Sampler&,
+                                  RayCounts&, FirstHit*) const {
+  throw Error("spectral rendering", "only the path tracer renders spectrally");
+}
 
 void record_first_hit(const TraceScene& scene, const SurfaceHit& hit, Vector3f direction,
                       FirstHit* first_hit) {

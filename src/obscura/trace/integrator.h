@@ -5,6 +5,7 @@
 #include <cstdint>
 
 #include "obscura/color/rgb.h"
+#include "obscura/color/sampled_wavelengths.h"
 #include "obscura/math/ray.h"
 #include "obscura/math/sampler.h"
 #include "obscura/trace/trace_scene.h"
@@ -37,6 +38,14 @@ class Integrator {
   // `first_hit` is given, it receives the first surface the ray met.
   virtual Rgb radiance(const TraceScene& scene, const Ray& ray, Sampler& sampler, RayCounts& counts,
                        FirstHit* first_hit = nullptr) const = 0;
+
+  // Spectral mode: the radiance along `ray` at the path's wavelengths (channel i at
+  // wavelengths.nm(i)), drawing from `sampler` as radiance() does; may terminate the secondary
+  // wavelengths. Integrators that do not support_spectral() throw obscura::Error.
+  virtual bool supports_spectral() const { return false; }
+  virtual Rgb spectral_radiance(const TraceScene& scene, const Ray& ray,
+                                SampledWavelengths& wavelengths, Sampler& sampler,
+                                RayCounts& counts, FirstHit* first_hit = nullptr) const;
 };
 
 // Fills `first_hit` (if not null) from a hit of a ray with unit direction `direction`.

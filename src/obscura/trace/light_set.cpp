@@ -61,7 +61,8 @@ std::optional<LightSample> LightSet::sample(Point3f p, float u_select, Point2f u
                      .radiance = s->radiance,
                      .pdf = s->pdf * p_kind,
                      .position = s->position,
-                     .normal = s->normal};
+                     .normal = s->normal,
+                     .spectrum = s->spectrum};
 }
 
 float LightSet::pdf_area_light(Point3f p, uint32_t mesh, uint32_t primitive, Point3f light_point,

@@ -23,6 +23,9 @@ struct LightSample {
   // point lights), so that shadow rays can stop just in front of the light's surface.
   Point3f position;
   Normal3f normal;
+  // For spectral mode: a blackbody area light's spectral shape (radiance is then its RGB
+  // equivalent); null where the spectrum is the RGB radiance lifted.
+  const BlackbodySpectrum* spectrum = nullptr;
 };
 
 // Which lights a light sample is drawn from. `kAll` for integrators that find light only by

@@ -3,6 +3,8 @@
 #include <algorithm>
 #include <cmath>
 
+#include "obscura/color/rgb_to_spectrum.h"
+
 namespace obscura {
 
 namespace {
@@ -27,8 +29,20 @@ bool consistent_sides(const SurfaceHit& hit, Vector3f wo, Vector3f wi, bool tran
 
 }  // namespace
 
-Rgb PathTracer::radiance(const TraceScene& scene, const Ray& camera_ray, Sampler& sampler,
+Rgb PathTracer::radiance(const TraceScene& scene, const Ray& ray, Sampler& sampler,
                          RayCounts& counts, FirstHit* first_hit) const {
+  return trace(scene, ray, nullptr, sampler, counts, first_hit);
+}
+
+Rgb PathTracer::spectral_radiance(const TraceScene& scene, const Ray& ray,
+                                  SampledWavelengths& wavelengths, Sampler& sampler,
+                                  RayCounts& counts, FirstHit* first_hit) const {
+  return trace(scene, ray, &wavelengths, sampler, counts, first_hit);
+}
+
+Rgb PathTracer::trace(const TraceScene& scene, const Ray& camera_ray,
+                      SampledWavelengths* wavelengths, Sampler& sampler, RayCounts& counts,
+                      FirstHit* first_hit) const {
   const LightSet& lights = scene.light_set();
   const bool use_light_sampling = settings_.strategy != Strategy::kBsdfOnly;
   const bool use_bsdf_hits = settings_.strategy != Strategy::kLightOnly;
@@ -49,6 +63,7 @@ Rgb PathTracer::radiance(const TraceScene& scene, const Ray& camera_ray, Sampler
     if (!hit) {
       if (const EnvironmentLight* env = lights.environment()) {
         Rgb le = env->radiance(ray.direction);
+        if (wavelengths) le = lift_illuminant(le, *wavelengths);
         if (specular_bounce)
           L += beta * le;
         else if (use_bsdf_hits)
@@ -64,11 +79,14 @@ Rgb PathTracer::radiance(const TraceScene& scene, const Ray& camera_ray, Sampler
     Vector3f wo = -ray.direction;
     // Reaching a closed volume's boundary from inside: what its medium absorbed on the way.
     if (material.absorbs_inside() && dot(hit->geometric_normal, wo) < 0)
-      beta *= material.transmittance_inside(hit->t);
+      beta *= wavelengths ? material.transmittance_inside(hit->t, *wavelengths)
+                          : material.transmittance_inside(hit->t);
 
     // 2. Hit an emitter's front face: its light, MIS-weighted against light sampling.
     if (material.emits()) {
       Rgb le = material.emitted_towards(*hit, wo);
+      if (wavelengths && !le.is_black())
+        le = lift_emission(le, material.emission_spectrum(), *wavelengths);
       if (le.is_black()) {
       } else if (specular_bounce) {
         L += beta * le;
@@ -82,7 +100,12 @@ Rgb PathTracer::radiance(const TraceScene& scene, const Ray& camera_ray, Sampler
     }
     if (depth + 1 >= settings_.max_depth) break;
 
-    AnyBsdf bsdf = material.bsdf_at(*hit);
+    // A dispersive refraction sends each wavelength its own way: follow the hero alone.
+    if (wavelengths && material.disperses() && !wavelengths->secondary_terminated()) {
+      wavelengths->terminate_secondary();
+      beta = Rgb(beta[0], 0, 0);
+    }
+    AnyBsdf bsdf = material.bsdf_at(*hit, wavelengths);
     ShadingFrame frame = frame_for(*hit, bsdf, wo);
     bsdf.orient(frame);
     Vector3f wo_local = frame.to_local(wo);
@@ -116,6 +139,8 @@ Rgb PathTracer::radiance(const TraceScene& scene, const Ray& camera_ray, Sampler
       std::optional<LightSample> ls =
           lights.sample(hit->position, u_light_select, u_light, light_sampling);
       if (ls && ls->pdf > 0 && !ls->radiance.is_black()) {
+        Rgb le =
+            wavelengths ? lift_emission(ls->radiance, ls->spectrum, *wavelengths) : ls->radiance;
         Vector3f wi_local = frame.to_local(ls->wi);
         Rgb f = bsdf.f(wo_local, wi_local) * std::abs(wi_local.z);
         bool transmission = wi_local.z * wo_local.z < 0;
@@ -126,7 +151,7 @@ Rgb PathTracer::radiance(const TraceScene& scene, const Ray& camera_ray, Sampler
             float weight = ls->is_delta || !use_bsdf_hits
                                ? 1.f
                                : power_heuristic(ls->pdf, bsdf.pdf(wo_local, wi_local));
-            L += beta * f * ls->radiance * (weight / ls->pdf);
+            L += beta * f * le * (weight / ls->pdf);
           }
         }
       }

@@ -2,6 +2,10 @@
 // non-specular vertex also sample a light (next-event estimation) and combine the two
 // strategies with multiple importance sampling (Veach's power heuristic, β = 2). Russian
 // roulette ends paths whose throughput has become small, without bias.
+//
+// Spectral mode (spectral_radiance) follows the same path with radiance and throughput at the
+// path's wavelengths instead of RGB: materials and lights are lifted to spectra where they are
+// met (trace_material.h), and a dispersive dielectric keeps only the hero wavelength.
 #pragma once
 
 #include "obscura/trace/integrator.h"
@@ -25,8 +29,15 @@ class PathTracer final : public Integrator {
   explicit PathTracer(PathTracerSettings settings = {}) : settings_(settings) {}
   Rgb radiance(const TraceScene& scene, const Ray& ray, Sampler& sampler, RayCounts& counts,
                FirstHit* first_hit = nullptr) const override;
+  bool supports_spectral() const override { return true; }
+  Rgb spectral_radiance(const TraceScene& scene, const Ray& ray, SampledWavelengths& wavelengths,
+                        Sampler& sampler, RayCounts& counts,
+                        FirstHit* first_hit = nullptr) const override;
 
  private:
+  // Both modes: RGB where `wavelengths` is null, else at its wavelengths.
+  Rgb trace(const TraceScene& scene, const Ray& ray, SampledWavelengths* wavelengths,
+            Sampler& sampler, RayCounts& counts, FirstHit* first_hit) const;
   PathTracerSettings settings_;
 };
 

@@ -36,6 +36,8 @@ RenderStats render(const TraceScene& scene, const Camera& camera, const Integrat
                 "must be positive; got " + std::to_string(settings.samples_per_pixel));
   if (settings.time_limit_s < 0)
     throw Error("time limit", "must be ≥ 0 seconds; got " + std::to_string(settings.time_limit_s));
+  if (settings.spectral && !integrator.supports_spectral())
+    throw Error("spectral rendering", "only the path tracer renders spectrally");
   camera.validate();
   Bounds2i crop = camera.film.crop_pixels();
   if (film.width() != crop.width() || film.height() != crop.height())
@@ -109,7 +111,11 @@ RenderStats render(const TraceScene& scene, const Camera& camera, const Integrat
             time = camera.shutter.time_at(sampler.next_1d()) + delay;
           else
             sampler.skip_1d();
-          // 3. The radiance along the ray, exposed, into this pixel with the filter's weight.
+          // 3. Spectral mode: the sample's wavelengths, drawn before its ray so that a camera
+          //    whose optics disperse can be given the hero wavelength.
+          std::optional<SampledWavelengths> wavelengths;
+          if (settings.spectral) wavelengths = SampledWavelengths::sample(sampler.next_1d());
+          // 4. The radiance along the ray, exposed, into this pixel with the filter's weight.
           std::optional<Ray> ray;
           float ray_weight = 1;
           if (pinhole) {
@@ -120,9 +126,13 @@ RenderStats render(const TraceScene& scene, const Camera& camera, const Integrat
             ray_weight = float(r->weight);
           }
           FirstHit first;
-          Rgb radiance =
-              ray ? integrator.radiance(scene, *ray, sampler, counts, aovs ? &first : nullptr)
-                  : Rgb();
+          FirstHit* first_hit = aovs ? &first : nullptr;
+          Rgb radiance;
+          if (ray && wavelengths)
+            radiance = wavelengths->to_working_rgb(integrator.spectral_radiance(
+                scene, *ray, *wavelengths, sampler, counts, first_hit));
+          else if (ray)
+            radiance = integrator.radiance(scene, *ray, sampler, counts, first_hit);
           film.add_sample({x, y}, radiance * (exposure * ray_weight), float(fs.weight));
           if (aovs)
             aovs->add_sample({x, y}, first.hit, first.albedo, first.normal, first.depth, first.id);

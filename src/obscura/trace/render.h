@@ -19,6 +19,11 @@ struct RenderSettings {
   uint64_t seed = 0;
   SamplerType sampler = SamplerType::kSobol;
   int tile_size = 16;
+  // Spectral light transport (the integrator must support_spectral(): the path tracer): each
+  // sample carries wavelengths (hero-wavelength sampling, color/sampled_wavelengths.h) and its
+  // spectral radiance reaches the film through the CIE 1931 observer as working RGB. Off: RGB
+  // transport, the default, unchanged by this switch.
+  bool spectral = false;
   // Stop starting new passes once the next one would end after this many seconds (0 = no
   // limit). At least one pass is always rendered.
   double time_limit_s = 0;
@@ -39,8 +44,9 @@ struct RenderStats {
 
 // Renders the camera's crop window (the full image by default) into `film` (and `aovs`, if
 // given), which must have the crop's size. Each sample draws, in order, a filter offset (2D), a
-// lens point (2D) and a time in the shutter interval (1D) before the integrator's numbers; its
-// radiance is scaled by the camera's exposure.
+// lens point (2D), a time in the shutter interval (1D) and, in spectral mode only, its
+// wavelengths (1D) before the integrator's numbers; its radiance is scaled by the camera's
+// exposure.
 //
 // Samples are rendered in passes (1, 1, 2, 4, … samples per pixel) so that a time limit or a
 // cancellation leaves an evenly sampled image. Deterministic: every random number is a function

@@ -4,6 +4,8 @@
 #include <cmath>
 #include <variant>
 
+#include "obscura/color/rgb_to_spectrum.h"
+#include "obscura/math/error.h"
 #include "obscura/shading/normal_map.h"
 
 namespace obscura {
@@ -15,6 +17,7 @@ TraceMaterial::TraceMaterial(const Material& material, const std::vector<Texture
       normal_scale_(material.normal_scale),
       model_(material.model),
       textures_(textures) {
+  if (material.emission_kelvin > 0) emission_spectrum_.emplace(material.emission_kelvin);
   // Coverage comes from the metallic-roughness base colour, as in glTF; other models are opaque.
   if (const auto* mr = std::get_if<MetallicRoughnessMaterial>(&material.model)) {
     alpha_mode_ = material.alpha_mode;
@@ -24,6 +27,10 @@ TraceMaterial::TraceMaterial(const Material& material, const std::vector<Texture
     unlit_ = mr->unlit;
     coat_normal_ = textures && mr->has_clearcoat() &&
                    (material.normal_texture.valid() || mr->clearcoat_normal_texture.valid());
+    if (mr->has_volume() && std::isfinite(mr->attenuation_distance)) {
+      attenuation_color_ = mr->attenuation_color;
+      attenuation_distance_ = mr->attenuation_distance;
+    }
     if (mr->has_volume() && std::isfinite(mr->attenuation_distance))
       for (int c = 0; c < 3; ++c)  // a black attenuation colour absorbs everything
         absorption_[c] =
@@ -34,6 +41,30 @@ TraceMaterial::TraceMaterial(const Material& material, const std::vector<Texture
 Rgb TraceMaterial::transmittance_inside(float distance) const {
   return {std::exp(-absorption_.r * distance), std::exp(-absorption_.g * distance),
           std::exp(-absorption_.b * distance)};
+}
+
+Rgb TraceMaterial::transmittance_inside(float distance,
+                                        const SampledWavelengths& wavelengths) const {
+  Rgb color = lift_reflectance(attenuation_color_, wavelengths);
+  Rgb t;
+  for (int i = 0; i < 3; ++i)  // c^(d/D) = exp(ln(c)·d/D), a black colour absorbing everything
+    t[i] = std::exp(std::log(std::max(color[i], 1e-30f)) * distance / attenuation_distance_);
+  return t;
+}
+
+Rgb lift_emission(Rgb rgb, const BlackbodySpectrum* blackbody,
+                  const SampledWavelengths& wavelengths) {
+  if (!blackbody) return lift_illuminant(rgb, wavelengths);
+  float y = luminance(rgb);
+  Rgb values;
+  for (int i = 0; i < SampledWavelengths::kCount; ++i)
+    values[i] = y * (*blackbody)(wavelengths.nm(i));
+  return values;
+}
+
+bool TraceMaterial::disperses() const {
+  const auto* d = std::get_if<DielectricMaterial>(&model_);
+  return !fixed_ && d && d->disperses();
 }
 
 Rgb TraceMaterial::emitted_towards(const SurfaceHit& hit, Vector3f wo) const {
@@ -83,32 +114,51 @@ Vector3f TraceMaterial::coat_normal_mapped(const SurfaceHit& hit, Vector3f norma
                                    mr->clearcoat_normal_scale);
 }
 
-AnyBsdf TraceMaterial::bsdf_at(const SurfaceHit& hit) const {
-  if (fixed_) return *fixed_;
+AnyBsdf TraceMaterial::bsdf_at(const SurfaceHit& hit, const SampledWavelengths* wavelengths) const {
+  if (fixed_) {
+    if (wavelengths)
+      throw Error("spectral rendering",
+                  "a material given as a fixed BSDF has RGB colours that "
+                  "cannot be lifted to spectra; build it from a Material");
+    return *fixed_;
+  }
   struct Visitor {
     const TraceMaterial& self;
     const SurfaceHit& hit;
+    const SampledWavelengths* wavelengths;
+    // A colour input at the path's wavelengths (RGB mode: as it is). Reflectances stay bounded;
+    // factors above 1 (a KHR_materials_specular colour) take the unbounded lift.
+    Rgb lift(Rgb rgb) const {
+      if (!wavelengths) return rgb;
+      return rgb.max_component() <= 1 ? lift_reflectance(rgb, *wavelengths)
+                                      : lift_unbounded(rgb, *wavelengths);
+    }
+    // A conductor's η and k: positive numbers, not reflectances.
+    Rgb lift_index(Rgb rgb) const { return wavelengths ? lift_unbounded(rgb, *wavelengths) : rgb; }
     AnyBsdf operator()(const DiffuseMaterial& m) const {
-      return LambertianBsdf{m.reflectance * self.texture_rgb(m.reflectance_texture, hit) *
-                            hit.vertex_color};
+      return LambertianBsdf{
+          lift(m.reflectance * self.texture_rgb(m.reflectance_texture, hit) * hit.vertex_color)};
     }
     AnyBsdf operator()(const PhongMaterial& m) const {
-      return PhongBsdf(m.diffuse * self.texture_rgb(m.diffuse_texture, hit) * hit.vertex_color,
-                       m.specular, m.shininess, m.blinn);
+      return PhongBsdf(
+          lift(m.diffuse * self.texture_rgb(m.diffuse_texture, hit) * hit.vertex_color),
+          lift(m.specular), m.shininess, m.blinn);
     }
     AnyBsdf operator()(const ConductorMaterial& m) const {
-      return ConductorBsdf(m.eta, m.k, Ggx::alpha_from_roughness(m.roughness));
+      return ConductorBsdf(lift_index(m.eta), lift_index(m.k),
+                           Ggx::alpha_from_roughness(m.roughness));
     }
     AnyBsdf operator()(const DielectricMaterial& m) const {
-      return DielectricBsdf(m.ior, Ggx::alpha_from_roughness(m.roughness), m.transmittance);
+      float ior = wavelengths ? m.ior_at(wavelengths->hero_nm()) : m.ior;
+      return DielectricBsdf(ior, Ggx::alpha_from_roughness(m.roughness), lift(m.transmittance));
     }
     AnyBsdf operator()(const MetallicRoughnessMaterial& m) const {
       if (m.unlit) return LambertianBsdf{Rgb(0.f)};  // its colour is emitted_towards()
       // KHR_materials_specular with a zero specular: no specular layer at all, so nothing of
       // the incoming light is held back for one (Blender exports its Diffuse BSDF this way).
       if (m.purely_diffuse())
-        return LambertianBsdf{m.base_color * self.texture_rgb(m.base_color_texture, hit) *
-                              hit.vertex_color};
+        return LambertianBsdf{
+            lift(m.base_color * self.texture_rgb(m.base_color_texture, hit) * hit.vertex_color)};
       MetallicRoughnessParameters p{.base_color = m.base_color,
                                     .metallic = m.metallic,
                                     .roughness = m.roughness,
@@ -125,6 +175,8 @@ AnyBsdf TraceMaterial::bsdf_at(const SurfaceHit& hit) const {
         p.roughness *= mr.g;
         p.metallic *= mr.b;
       }
+      p.base_color = lift(p.base_color);
+      p.specular_color = lift(p.specular_color);
       if (m.transmission > 0) {
         float t = m.transmission * self.texture_rgb(m.transmission_texture, hit).r;
         if (t > 0) return TransmissiveMetallicRoughnessBsdf(p, t, m.has_volume());
@@ -137,7 +189,7 @@ AnyBsdf TraceMaterial::bsdf_at(const SurfaceHit& hit) const {
             m.clearcoat_roughness * self.texture_rgb(m.clearcoat_roughness_texture, hit).g;
       }
       if (m.has_sheen()) {
-        layers.sheen_color = m.sheen_color * self.texture_rgb(m.sheen_color_texture, hit);
+        layers.sheen_color = lift(m.sheen_color * self.texture_rgb(m.sheen_color_texture, hit));
         layers.sheen_roughness =
             m.sheen_roughness * self.texture_alpha(m.sheen_roughness_texture, hit);
       }
@@ -149,7 +201,7 @@ AnyBsdf TraceMaterial::bsdf_at(const SurfaceHit& hit) const {
     }
     AnyBsdf operator()(const EmissiveMaterial&) const { return LambertianBsdf{Rgb(0.f)}; }
   };
-  return std::visit(Visitor{*this, hit}, model_);
+  return std::visit(Visitor{*this, hit, wavelengths}, model_);
 }
 
 }  // namespace obscura

@@ -1,0 +1,81 @@
+// Hero-wavelength sampling against numerical integration of its density and the CIE tables.
+#include "obscura/color/sampled_wavelengths.h"
+
+#include <algorithm>
+#include <cmath>
+
+#include <gtest/gtest.h>
+
+#include "obscura/color/primaries.h"
+#include "obscura/color/spectral.h"
+
+namespace obscura {
+namespace {
+
+// ∫ p from 360 nm to `nm` by the midpoint rule in steps of at most 0.01 nm.
+double integrated_pdf(double nm) {
+  int steps = std::max(1, int(std::ceil((nm - 360) / 0.01)));
+  double h = (nm - 360) / steps, sum = 0;
+  for (int i = 0; i < steps; ++i) sum += visible_wavelength_pdf(360 + (i + 0.5) * h) * h;
+  return sum;
+}
+
+TEST(SampledWavelengths, TheDensityIsNormalisedAndPeaksAt538) {
+  EXPECT_NEAR(integrated_pdf(830), 1.0, 1e-6);
+  EXPECT_EQ(visible_wavelength_pdf(359.9), 0);
+  EXPECT_EQ(visible_wavelength_pdf(830.1), 0);
+  EXPECT_GT(visible_wavelength_pdf(538), visible_wavelength_pdf(537));
+  EXPECT_GT(visible_wavelength_pdf(538), visible_wavelength_pdf(539));
+  // Radziszewski et al.'s constant: p(538 nm) = 0.0072 / (tanh(0.0072·292) + tanh(0.0072·178)).
+  EXPECT_NEAR(visible_wavelength_pdf(538), 0.0072 / (std::tanh(2.1024) + std::tanh(1.2816)), 1e-9);
+}
+
+TEST(SampledWavelengths, SamplingInvertsTheCdf) {
+  for (double u : {0.0, 0.05, 0.25, 0.5, 0.75, 0.95, 1.0}) {
+    double nm = sample_visible_wavelength(u);
+    EXPECT_NEAR(integrated_pdf(nm), u, 1e-5) << u;
+  }
+  EXPECT_NEAR(sample_visible_wavelength(0), 360, 1e-9);
+  EXPECT_NEAR(sample_visible_wavelength(1), 830, 1e-6);
+}
+
+TEST(SampledWavelengths, CompanionsAreAThirdOfTheCdfApart) {
+  SampledWavelengths w = SampledWavelengths::sample(0.8f);
+  EXPECT_NEAR(integrated_pdf(w.nm(0)), 0.8, 1e-5);
+  EXPECT_NEAR(integrated_pdf(w.nm(1)), 0.8 + 1.0 / 3 - 1, 1e-5);
+  EXPECT_NEAR(integrated_pdf(w.nm(2)), 0.8 + 2.0 / 3 - 1, 1e-5);
+  for (int i = 0; i < 3; ++i) EXPECT_FLOAT_EQ(w.pdf(i), float(visible_wavelength_pdf(w.nm(i))));
+}
+
+// The mean of to_working_rgb over stratified hero numbers for radiance `spd`.
+template <class Spd>
+Rgb estimate(const Spd& spd, bool terminate) {
+  const int n = 4000;
+  double sum[3] = {};
+  for (int k = 0; k < n; ++k) {
+    SampledWavelengths w = SampledWavelengths::sample((k + 0.5f) / n);
+    if (terminate) w.terminate_secondary();
+    Rgb L;
+    for (int i = 0; i < 3; ++i) L[i] = float(spd(w.nm(i)));
+    Rgb rgb = w.to_working_rgb(L);
+    for (int c = 0; c < 3; ++c) sum[c] += rgb[c];
+  }
+  return Rgb(float(sum[0] / n), float(sum[1] / n), float(sum[2] / n));
+}
+
+TEST(SampledWavelengths, TheFilmEstimateIsTheObserversIntegral) {
+  // D65 at unit luminance is the working white, (1, 1, 1), whether or not companions survive.
+  double d65_y = spectrum_to_xyz(d65_spd)[1];
+  for (bool terminate : {false, true}) {
+    Rgb white = estimate([&](double nm) { return d65_spd(nm) / d65_y; }, terminate);
+    for (int c = 0; c < 3; ++c) EXPECT_NEAR(white[c], 1.0, 2e-3) << terminate;
+  }
+  // Equal energy: its XYZ summed from the table, through the standard Rec.709 matrix.
+  Vec3d xyz = spectrum_to_xyz([](double) { return 0.01; });
+  Vec3d expected = xyz_from_rgb(primaries::kRec709).inverse() * xyz;
+  Rgb e = estimate([](double) { return 0.01; }, false);
+  for (int c = 0; c < 3; ++c) EXPECT_NEAR(e[c], expected[c], 2e-3 * expected[1]);
+}
+
+}  // namespace
+}  // namespace obscura
