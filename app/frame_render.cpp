@@ -26,7 +26,9 @@ void apply_scene_settings(const SceneRenderSettings& s, RenderOptions& o) {
   if (s.samples_per_pixel && !o.spp_given) o.spp = *s.samples_per_pixel;
   if (s.seed && !o.seed_given) o.seed = *s.seed;
   // A scene's wish for spectral transport applies where it can: to the path tracer.
-  if (s.spectral.value_or(false) && o.tracer.renderer == Renderer::kPath) o.tracer.spectral = true;
+  const bool spectral_given = o.tracer.spectral_option && o.tracer.spectral_option->count() > 0;
+  if (s.spectral && !spectral_given && o.tracer.renderer == Renderer::kPath)
+    o.tracer.spectral = *s.spectral;
 }
 
 void validate(const RenderOptions& o) {

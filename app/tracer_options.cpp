@@ -39,9 +39,11 @@ void add_tracer_options(CLI::App& render, TracerOptions& o) {
       .add_option("--time-limit", o.time_limit_s,
                   "Stop after about this many seconds (without --spp: as many samples as fit)")
       ->check(number_in(0, kMaxTimeLimitS));
-  render.add_flag("--spectral", o.spectral,
-                  "Spectral light transport (path tracer only): wavelengths per path, colours "
-                  "lifted to spectra, dispersive glass; whitted, direct and raster refuse it");
+  o.spectral_option = render.add_flag(
+      "--spectral,!--no-spectral", o.spectral,
+      "Spectral light transport (path tracer only): wavelengths per path, colours lifted to "
+      "spectra, dispersive glass; whitted, direct and raster refuse it. --no-spectral: RGB "
+      "transport even where the scene file asks for spectral");
   render.add_flag("--aovs", o.aovs,
                   "Also write albedo, normal, depth and id images beside the output (.exr)");
 }
