@@ -27,7 +27,9 @@ render() {  # mode spp seed output
   "$OBSCURA" render "$SCENE" --width 128 --height 128 --spp "$2" --seed "$3" \
     --threads "$THREADS" --max-depth 65 --filter box --filter-radius 0.5 $(flag "$1") -o "$4" \
     2> "$4.log" > /dev/null
-  grep -o ' in [0-9.]*s' "$4.log" | grep -o '[0-9.]*'
+  # The summary's time: "6.24s" or "1m11s".
+  grep -o ' in [0-9m.]*s' "$4.log" | sed 's/ in //' |
+    awk -F'm' '{ if (NF == 2) print $1 * 60 + $2; else print $1 + 0 }'
 }
 rmse() { "$OBSCURA" image diff --json "$1" "$2" |
   python3 -c 'import json,sys; print(json.load(sys.stdin)["rmse"])'; }
