@@ -20,14 +20,29 @@ double integrated_pdf(double nm) {
   return sum;
 }
 
-TEST(SampledWavelengths, TheDensityIsNormalisedAndPeaksAt538) {
+TEST(SampledWavelengths, TheDensityIsNormalised) {
   EXPECT_NEAR(integrated_pdf(830), 1.0, 1e-6);
   EXPECT_EQ(visible_wavelength_pdf(359.9), 0);
   EXPECT_EQ(visible_wavelength_pdf(830.1), 0);
-  EXPECT_GT(visible_wavelength_pdf(538), visible_wavelength_pdf(537));
-  EXPECT_GT(visible_wavelength_pdf(538), visible_wavelength_pdf(539));
-  // Radziszewski et al.'s constant: p(538 nm) = 0.0072 / (tanh(0.0072·292) + tanh(0.0072·178)).
-  EXPECT_NEAR(visible_wavelength_pdf(538), 0.0072 / (std::tanh(2.1024) + std::tanh(1.2816)), 1e-9);
+  for (double nm = 360; nm < 830; nm += 0.5) EXPECT_GT(visible_wavelength_pdf(nm), 0) << nm;
+}
+
+TEST(SampledWavelengths, TheDensityFollowsD65TimesTheRec709MatchingFunctions) {
+  // p(λ) ∝ D65(λ)·Σ|r̄ḡb̄(λ)| with r̄ḡb̄ from the standard Rec.709 matrix (the code's working
+  // matrix differs from it by ≤ 1e-4 per channel): the ratio is one constant, at the middle of
+  // each nanometre where the table holds its value.
+  Matrix3d rgb_from_xyz = xyz_from_rgb(primaries::kRec709).inverse();
+  auto shape = [&](double nm) {
+    Vec3d rgb = rgb_from_xyz * cmf_xyz(nm);
+    return d65_spd(nm) * (std::abs(rgb[0]) + std::abs(rgb[1]) + std::abs(rgb[2]));
+  };
+  double ratio_at_555 = visible_wavelength_pdf(555.5) / shape(555.5);
+  for (double nm = 360.5; nm < 830; nm += 7)
+    EXPECT_NEAR(visible_wavelength_pdf(nm) / shape(nm), ratio_at_555, 3e-4 * ratio_at_555) << nm;
+  // Where the film is most sensitive per unit of white light: b̄'s peak near 450 nm, above ȳ's
+  // 555 nm; the far ends, which the eye barely sees, seldom.
+  EXPECT_GT(visible_wavelength_pdf(450.5), 1.2 * visible_wavelength_pdf(555.5));
+  EXPECT_LT(visible_wavelength_pdf(700.5), 0.05 * visible_wavelength_pdf(600.5));
 }
 
 TEST(SampledWavelengths, SamplingInvertsTheCdf) {

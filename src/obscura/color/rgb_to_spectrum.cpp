@@ -16,11 +16,6 @@ namespace {
 constexpr int kRes = RgbToSpectrumTable::kResolution;
 constexpr double kFirstNm = 360, kSpanNm = 470;
 
-double sigmoid(double x) {
-  if (std::isinf(x)) return x > 0 ? 1 : 0;
-  return 0.5 + x / (2 * std::sqrt(1 + x * x));
-}
-
 double smoothstep(double x) {
   return x * x * (3 - 2 * x);
 }
@@ -148,8 +143,11 @@ double fit(const FitData& d, const Vec3d& rgb, Vec3d& c) {
 }  // namespace
 
 float SigmoidPolynomial::operator()(float nm) const {
-  float t = (nm - float(kFirstNm)) / float(kSpanNm);
-  return float(sigmoid((double(c0) * t + c1) * t + c2));
+  // In float (it runs for every colour at every hit): x² overflows only where S is 0 or 1 anyway.
+  float t = (nm - float(kFirstNm)) * (1 / float(kSpanNm));
+  float x = (c0 * t + c1) * t + c2;
+  if (!(std::abs(x) < 1e18f)) return x > 0 ? 1.f : 0.f;
+  return 0.5f + 0.5f * x / std::sqrt(1 + x * x);
 }
 
 const RgbToSpectrumTable& RgbToSpectrumTable::working_space() {

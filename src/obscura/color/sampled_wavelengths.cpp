@@ -1,6 +1,7 @@
 #include "obscura/color/sampled_wavelengths.h"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 
 #include "obscura/color/spectral.h"
@@ -10,45 +11,90 @@ namespace obscura {
 
 namespace {
 
-// p(λ) = a / (norm · cosh²(a·(λ − centre))); its CDF is (tanh(a·(λ − centre)) − t₀) / norm.
-constexpr double kSharpness = 0.0072, kCentreNm = 538;
+constexpr int kBins = int(kMaxSampledWavelengthNm - kMinSampledWavelengthNm);  // 1 nm each
+// Guide cells for the inverse CDF: each holds the bin where its stretch of u begins, so sampling
+// walks a bin or two instead of binary-searching all 470.
+constexpr int kGuideCells = 512;
 
-double tanh_at(double nm) {
-  return std::tanh(kSharpness * (nm - kCentreNm));
+struct WavelengthTable {
+  // The density, constant over each 1 nm bin [360 + k, 361 + k), and its CDF at the bins' edges.
+  std::array<double, kBins> pdf{};
+  std::array<double, kBins + 1> cdf{};
+  std::array<int, kGuideCells> guide{};
+  // At each whole nanometre 360 … 830: the working illuminant and M·x̄ȳz̄, which the film's
+  // weights interpolate linearly between, as the CIE tables themselves are.
+  std::array<double, kBins + 1> illuminant{};
+  std::array<Vec3d, kBins + 1> rgb_cmf{};
+};
+
+const WavelengthTable& wavelength_table() {
+  static const WavelengthTable table = [] {
+    WavelengthTable t;
+    const Matrix3d& rgb_from_xyz = working_rgb_from_xyz();
+    for (int k = 0; k <= kBins; ++k) {
+      double nm = kMinSampledWavelengthNm + k;
+      t.illuminant[k] = working_illuminant(nm);
+      t.rgb_cmf[k] = rgb_from_xyz * cmf_xyz(nm);
+    }
+    for (int k = 0; k < kBins; ++k) {
+      double nm = kMinSampledWavelengthNm + k + 0.5;
+      Vec3d rgb = rgb_from_xyz * cmf_xyz(nm);
+      t.pdf[k] = working_illuminant(nm) * (std::abs(rgb[0]) + std::abs(rgb[1]) + std::abs(rgb[2]));
+      t.cdf[k + 1] = t.cdf[k] + t.pdf[k];
+    }
+    const double total = t.cdf[kBins];
+    for (double& p : t.pdf) p /= total;
+    for (double& c : t.cdf) c /= total;
+    t.cdf[kBins] = 1;
+    for (int j = 0, bin = 0; j < kGuideCells; ++j) {
+      while (bin < kBins - 1 && t.cdf[bin + 1] <= double(j) / kGuideCells) ++bin;
+      t.guide[j] = bin;
+    }
+    return t;
+  }();
+  return table;
 }
 
-double cdf_span() {
-  static const double span = tanh_at(kMaxSampledWavelengthNm) - tanh_at(kMinSampledWavelengthNm);
-  return span;
+double sample_from(const WavelengthTable& t, double u) {
+  u = std::clamp(u, 0.0, 1.0);
+  // The last bin whose CDF starts at or below u, then linearly within it (the density is flat).
+  int bin = t.guide[std::min(int(u * kGuideCells), kGuideCells - 1)];
+  while (bin < kBins - 1 && t.cdf[bin + 1] <= u) ++bin;
+  const double within = std::clamp((u - t.cdf[bin]) / t.pdf[bin], 0.0, 1.0);
+  return kMinSampledWavelengthNm + bin + within;
+}
+
+double pdf_from(const WavelengthTable& t, double nm) {
+  if (!(nm >= kMinSampledWavelengthNm && nm <= kMaxSampledWavelengthNm)) return 0;
+  return t.pdf[std::min(int(nm - kMinSampledWavelengthNm), kBins - 1)];
 }
 
 }  // namespace
 
 double visible_wavelength_pdf(double nm) {
-  if (!(nm >= kMinSampledWavelengthNm && nm <= kMaxSampledWavelengthNm)) return 0;
-  double c = std::cosh(kSharpness * (nm - kCentreNm));
-  return kSharpness / (cdf_span() * c * c);
+  return pdf_from(wavelength_table(), nm);
 }
 
 double sample_visible_wavelength(double u) {
-  double t = tanh_at(kMinSampledWavelengthNm) + std::clamp(u, 0.0, 1.0) * cdf_span();
-  double nm = kCentreNm + std::atanh(t) / kSharpness;
-  return std::clamp(nm, kMinSampledWavelengthNm, kMaxSampledWavelengthNm);
+  return sample_from(wavelength_table(), u);
 }
 
 SampledWavelengths SampledWavelengths::sample(float u) {
+  const WavelengthTable& t = wavelength_table();
   SampledWavelengths w;
-  const Matrix3d& rgb_from_xyz = working_rgb_from_xyz();
   for (int i = 0; i < kCount; ++i) {
     double ui = u + double(i) / kCount;
     if (ui >= 1) ui -= 1;
-    double nm = sample_visible_wavelength(ui);
-    double pdf = visible_wavelength_pdf(nm);
-    w.nm_[i] = float(nm);
+    w.nm_[i] = float(sample_from(t, ui));
+    // The density and the tables at the wavelength as the path will see it (in float).
+    const double nm = w.nm_[i], pdf = pdf_from(t, nm);
+    const int node = std::min(int(nm - kMinSampledWavelengthNm), kBins - 1);
+    const double f = nm - kMinSampledWavelengthNm - node;
     w.pdf_[i] = float(pdf);
-    w.illuminant_[i] = float(working_illuminant(nm));
-    Vec3d rgb = rgb_from_xyz * cmf_xyz(nm);
-    for (int c = 0; c < 3; ++c) w.rgb_weights_[c][i] = float(rgb[c] / (pdf * kCount));
+    w.illuminant_[i] = float(t.illuminant[node] * (1 - f) + t.illuminant[node + 1] * f);
+    for (int c = 0; c < 3; ++c)
+      w.rgb_weights_[c][i] =
+          float((t.rgb_cmf[node][c] * (1 - f) + t.rgb_cmf[node + 1][c] * f) / (pdf * kCount));
   }
   return w;
 }
