@@ -20,22 +20,21 @@ struct WavelengthTable {
   // The density, constant over each 1 nm bin [360 + k, 361 + k), and its CDF at the bins' edges.
   std::array<double, kBins> pdf{};
   std::array<double, kBins + 1> cdf{};
+  std::array<double, kBins> inverse_pdf{};
   std::array<int, kGuideCells> guide{};
-  // At each whole nanometre 360 … 830: the working illuminant and M·x̄ȳz̄, which the film's
-  // weights interpolate linearly between, as the CIE tables themselves are.
+  // At each whole nanometre 360 … 830, the working illuminant; and at the two ends of each bin,
+  // the film's weights M·x̄ȳz̄ / (p · 3) of its wavelengths. Between whole nanometres both are
+  // interpolated linearly, as the CIE tables themselves are.
   std::array<double, kBins + 1> illuminant{};
-  std::array<Vec3d, kBins + 1> rgb_cmf{};
+  std::array<Vec3d, kBins> weight_at_start{}, weight_at_end{};
 };
 
 const WavelengthTable& wavelength_table() {
   static const WavelengthTable table = [] {
     WavelengthTable t;
     const Matrix3d& rgb_from_xyz = working_rgb_from_xyz();
-    for (int k = 0; k <= kBins; ++k) {
-      double nm = kMinSampledWavelengthNm + k;
-      t.illuminant[k] = working_illuminant(nm);
-      t.rgb_cmf[k] = rgb_from_xyz * cmf_xyz(nm);
-    }
+    for (int k = 0; k <= kBins; ++k)
+      t.illuminant[k] = working_illuminant(kMinSampledWavelengthNm + k);
     for (int k = 0; k < kBins; ++k) {
       double nm = kMinSampledWavelengthNm + k + 0.5;
       Vec3d rgb = rgb_from_xyz * cmf_xyz(nm);
@@ -46,6 +45,15 @@ const WavelengthTable& wavelength_table() {
     for (double& p : t.pdf) p /= total;
     for (double& c : t.cdf) c /= total;
     t.cdf[kBins] = 1;
+    for (int k = 0; k < kBins; ++k) {
+      t.inverse_pdf[k] = 1 / t.pdf[k];
+      Vec3d start = rgb_from_xyz * cmf_xyz(kMinSampledWavelengthNm + k);
+      Vec3d end = rgb_from_xyz * cmf_xyz(kMinSampledWavelengthNm + k + 1);
+      for (int c = 0; c < 3; ++c) {
+        t.weight_at_start[k][c] = start[c] / (t.pdf[k] * SampledWavelengths::kCount);
+        t.weight_at_end[k][c] = end[c] / (t.pdf[k] * SampledWavelengths::kCount);
+      }
+    }
     for (int j = 0, bin = 0; j < kGuideCells; ++j) {
       while (bin < kBins - 1 && t.cdf[bin + 1] <= double(j) / kGuideCells) ++bin;
       t.guide[j] = bin;
@@ -60,7 +68,7 @@ double sample_from(const WavelengthTable& t, double u) {
   // The last bin whose CDF starts at or below u, then linearly within it (the density is flat).
   int bin = t.guide[std::min(int(u * kGuideCells), kGuideCells - 1)];
   while (bin < kBins - 1 && t.cdf[bin + 1] <= u) ++bin;
-  const double within = std::clamp((u - t.cdf[bin]) / t.pdf[bin], 0.0, 1.0);
+  const double within = std::clamp((u - t.cdf[bin]) * t.inverse_pdf[bin], 0.0, 1.0);
   return kMinSampledWavelengthNm + bin + within;
 }
 
@@ -87,14 +95,14 @@ SampledWavelengths SampledWavelengths::sample(float u) {
     if (ui >= 1) ui -= 1;
     w.nm_[i] = float(sample_from(t, ui));
     // The density and the tables at the wavelength as the path will see it (in float).
-    const double nm = w.nm_[i], pdf = pdf_from(t, nm);
-    const int node = std::min(int(nm - kMinSampledWavelengthNm), kBins - 1);
-    const double f = nm - kMinSampledWavelengthNm - node;
-    w.pdf_[i] = float(pdf);
-    w.illuminant_[i] = float(t.illuminant[node] * (1 - f) + t.illuminant[node + 1] * f);
+    const double nm = w.nm_[i];
+    const int bin = std::min(int(nm - kMinSampledWavelengthNm), kBins - 1);
+    const double f = nm - kMinSampledWavelengthNm - bin;
+    w.pdf_[i] = float(t.pdf[bin]);
+    w.illuminant_[i] = float(t.illuminant[bin] * (1 - f) + t.illuminant[bin + 1] * f);
     for (int c = 0; c < 3; ++c)
       w.rgb_weights_[c][i] =
-          float((t.rgb_cmf[node][c] * (1 - f) + t.rgb_cmf[node + 1][c] * f) / (pdf * kCount));
+          float(t.weight_at_start[bin][c] * (1 - f) + t.weight_at_end[bin][c] * f);
   }
   return w;
 }
