@@ -64,7 +64,8 @@ Vector3d flip_yz(Vector3d v) {
 // distance from the camera.
 bool planar_depth(const Projection& p) {
   if (auto* c = std::get_if<CalibratedProjection>(&p)) return is_planar(c->lens);
-  return std::holds_alternative<Perspective>(p) || std::holds_alternative<Orthographic>(p);
+  return std::holds_alternative<Perspective>(p) || std::holds_alternative<Orthographic>(p) ||
+         std::holds_alternative<LensSystemProjection>(p);
 }
 
 // Inside the film rectangle, edges included, with a hair of slack so that points exactly on the
@@ -94,6 +95,7 @@ void Camera::validate() const {
                  [](const Equirectangular&) {},
                  [](const Fisheye& f) { obscura::validate(f); },
                  [](const CalibratedProjection& c) { obscura::validate(c); },
+                 [](const LensSystemProjection& l) { obscura::validate(l); },
              },
              projection);
   bool orthographic = std::holds_alternative<Orthographic>(projection);
@@ -110,6 +112,23 @@ void Camera::validate() const {
   obscura::validate(shutter);
   obscura::validate(exposure, shutter.duration_s());
   obscura::validate(film);
+  // A lens system must be able to focus where asked (and the iris open as far).
+  if (auto* l = std::get_if<LensSystemProjection>(&projection))
+    focused_lens_system(l->lens, lens_system_settings());
+}
+
+bool Camera::uses_lens_samples() const {
+  return lens.depth_of_field || std::holds_alternative<LensSystemProjection>(projection);
+}
+
+LensSettings Camera::lens_system_settings() const {
+  auto* l = std::get_if<LensSystemProjection>(&projection);
+  if (!l) return {};
+  return {.focus_distance_m = lens.focus_distance_m,
+          .f_number = l->f_number.value_or(0),
+          .aperture = lens.aperture,
+          .sensor_width_mm = l->sensor_width_mm,
+          .sensor_height_mm = l->sensor_width_mm / film.image_aspect()};
 }
 
 double Camera::focal_length_mm() const {
@@ -189,6 +208,19 @@ Vector2d Camera::fov_degrees() const {
                 (angle_at({0, centre.y}) + angle_at({w, centre.y})) * kDegreesPerRadian,
                 (angle_at({centre.x, 0}) + angle_at({centre.x, h})) * kDegreesPerRadian);
           },
+          [&](const LensSystemProjection& l) {
+            // The angles between the chief rays of opposite edges' midpoints.
+            auto focused = focused_lens_system(l.lens, lens_system_settings());
+            LensSettings s = focused->settings();
+            auto angle = [&](Point2d a, Point2d b) {
+              auto ra = focused->chief_ray(a), rb = focused->chief_ray(b);
+              if (!ra || !rb) return 0.0;
+              return std::acos(std::clamp(dot(ra->direction, rb->direction), -1.0, 1.0)) *
+                     kDegreesPerRadian;
+            };
+            double x = 0.5 * s.sensor_width_mm, y = 0.5 * s.sensor_height_mm;
+            return Vector2d(angle({-x, 0}, {x, 0}), angle({0, -y}, {0, y}));
+          },
       },
       projection);
 }
@@ -199,6 +231,8 @@ double Camera::lens_radius_m() const {
 }
 
 double Camera::f_number() const {
+  if (auto* l = std::get_if<LensSystemProjection>(&projection))
+    return l->f_number.value_or(l->lens->f_number());
   double f = focal_length_mm();
   return f > 0 ? effective_f_number(lens, f) : lens.f_number;
 }
@@ -264,8 +298,25 @@ PreparedCamera::PreparedCamera(const Camera& camera, bool for_many_rays) : camer
         }
     }
   }
+  if (auto* l = std::get_if<LensSystemProjection>(&camera.projection)) {
+    focused_lens_ = focused_lens_system(l->lens, camera.lens_system_settings());
+    sensor_width_mm_ = focused_lens_->settings().sensor_width_mm;
+    sensor_height_mm_ = focused_lens_->settings().sensor_height_mm;
+  }
   if (!camera.world_from_camera.is_animated())
     fixed_world_from_camera_ = &camera.world_from_camera.keys().front().transform;
+}
+
+// A lens-system camera's image coordinates (focused_lens_system.h): millimetres on the sensor
+// from its centre, x right, y up.
+Point2d PreparedCamera::image_mm_from_raster(Point2d raster) const {
+  return {(raster.x / width_px_ - 0.5) * sensor_width_mm_,
+          (0.5 - raster.y / height_px_) * sensor_height_mm_};
+}
+
+Point2d PreparedCamera::raster_from_image_mm(Point2d image) const {
+  return {(image.x / sensor_width_mm_ + 0.5) * width_px_,
+          (0.5 - image.y / sensor_height_mm_) * height_px_};
 }
 
 std::optional<Point2d> PreparedCamera::start_at(Point2d film_point) const {
@@ -293,6 +344,8 @@ std::optional<CameraRay> PreparedCamera::generate_ray(Point2d film_point, Point2
     Point3d origin;
     Vector3d direction;  // unit
     double depth_per_t;
+    double weight = 1;
+    double depth_at_origin = 0;  // a lens system's rays start in front of the camera's origin
   };
   auto pinhole_or_lens = [&](Point2d w) {
     Vector3d pinhole(w.x, w.y, -1);
@@ -331,6 +384,11 @@ std::optional<CameraRay> PreparedCamera::generate_ray(Point2d film_point, Point2
             Vector3d direction = flip_yz(*d);
             return LocalRay{{0, 0, 0}, direction, is_planar(c.lens) ? -direction.z : 1};
           },
+          [&](const LensSystemProjection&) -> std::optional<LocalRay> {
+            auto r = focused_lens_->ray(image_mm_from_raster(film_point), lens_sample);
+            if (!r || !(r->direction.z < 0)) return std::nullopt;  // stopped, or turned back
+            return LocalRay{r->origin, r->direction, -r->direction.z, r->weight, -r->origin.z};
+          },
       },
       camera.projection);
   if (!local) return std::nullopt;
@@ -342,9 +400,10 @@ std::optional<CameraRay> PreparedCamera::generate_ray(Point2d film_point, Point2
     CameraRay ray;
     ray.origin = world(local->origin);
     ray.direction = world_direction / stretch;
-    ray.t_min = camera.near_m / local->depth_per_t * stretch;
-    ray.t_max = camera.far_m / local->depth_per_t * stretch;
+    ray.t_min = std::max(0.0, camera.near_m - local->depth_at_origin) / local->depth_per_t * stretch;
+    ray.t_max = (camera.far_m - local->depth_at_origin) / local->depth_per_t * stretch;
     ray.time_s = time_s;
+    ray.weight = local->weight;
     return ray;
   };
   if (fixed_world_from_camera_) return into_world(*fixed_world_from_camera_);
@@ -416,6 +475,11 @@ std::optional<FilmProjection> PreparedCamera::project(Point3d world, double time
                        if (!image) return std::nullopt;
                        return raster_from_lens_image(c, film, *image);
                      },
+                     [&](const LensSystemProjection&) -> std::optional<Point2d> {
+                       auto image = focused_lens_->image_point_of(q);
+                       if (!image) return std::nullopt;
+                       return raster_from_image_mm(*image);
+                     },
                  },
                  projection);
   if (!film_point || !on_film(film, *film_point)) return std::nullopt;
@@ -450,6 +514,13 @@ std::optional<Point3d> PreparedCamera::unproject(Point2d film_point, double dept
             Vector3d direction = flip_yz(*d);
             double scale = is_planar(c.lens) ? depth_m / -direction.z : depth_m;
             return Point3d(0, 0, 0) + direction * scale;
+          },
+          [&](const LensSystemProjection&) -> std::optional<Point3d> {
+            // Along the chief ray to the plane at depth_m in front of the sensor.
+            auto chief = focused_lens_->chief_ray(image_mm_from_raster(film_point));
+            if (!chief || !(chief->direction.z < 0)) return std::nullopt;
+            return chief->origin + chief->direction * ((chief->origin.z + depth_m) /
+                                                       -chief->direction.z);
           },
       },
       camera_->projection);

@@ -10,6 +10,7 @@
 // orthographic one (in metres).
 #pragma once
 
+#include <memory>
 #include <optional>
 #include <string>
 #include <vector>
@@ -17,6 +18,7 @@
 #include "obscura/camera/animated_transform.h"
 #include "obscura/camera/exposure.h"
 #include "obscura/camera/film_geometry.h"
+#include "obscura/camera/focused_lens_system.h"
 #include "obscura/camera/projection.h"
 #include "obscura/camera/shutter.h"
 #include "obscura/camera/thin_lens.h"
@@ -116,6 +118,10 @@ struct Camera {
   // (fisheye), 0 (orthographic).
   Vector2d fov_degrees() const;
   double lens_radius_m() const;  // 0 without depth of field
+  // Whether rays depend on the lens sample (depth of field, or a lens system's pupil).
+  bool uses_lens_samples() const;
+  // A lens-system camera's settings for its FocusedLensSystem: focus, iris, sensor size.
+  LensSettings lens_system_settings() const;
   double f_number() const;
   double exposure_scale() const;  // see exposure.h
 
@@ -162,6 +168,10 @@ class PreparedCamera {
   double focal_length_mm_ = 0, film_width_mm_ = 0;      // what the circle of confusion needs
   const Transform* fixed_world_from_camera_ = nullptr;  // a camera that does not move
   std::optional<LensMap> lens_map_;                     // a calibrated camera's
+  std::shared_ptr<const FocusedLensSystem> focused_lens_;  // a lens-system camera's
+  double sensor_width_mm_ = 0, sensor_height_mm_ = 0;      // a lens-system camera's
+  Point2d image_mm_from_raster(Point2d raster) const;
+  Point2d raster_from_image_mm(Point2d image) const;
   // Its undistorted points (X/Z, Y/Z) at raster points every kStartSpacing pixels (NaN where
   // none): the inverse's starting guesses, bilinearly interpolated.
   static constexpr double kStartSpacing = 8;

@@ -9,6 +9,7 @@ std::string_view projection_name(const Projection& p) {
                         [](const Equirectangular&) { return "spherical"; },
                         [](const Fisheye&) { return "fisheye"; },
                         [](const CalibratedProjection&) { return "calibrated"; },
+                        [](const LensSystemProjection&) { return "lens-system"; },
                     },
                     p);
 }

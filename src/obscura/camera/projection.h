@@ -6,17 +6,18 @@
 #include <variant>
 
 #include "obscura/camera/calibrated_projection.h"
+#include "obscura/camera/lens_system_projection.h"
 #include "obscura/camera/orthographic.h"
 #include "obscura/camera/perspective.h"
 #include "obscura/camera/spherical.h"
 
 namespace obscura {
 
-using Projection =
-    std::variant<Perspective, Orthographic, Equirectangular, Fisheye, CalibratedProjection>;
+using Projection = std::variant<Perspective, Orthographic, Equirectangular, Fisheye,
+                                CalibratedProjection, LensSystemProjection>;
 
-// "perspective", "orthographic", "spherical" (equirectangular), "fisheye" or "calibrated": the
-// CLI's names.
+// "perspective", "orthographic", "spherical" (equirectangular), "fisheye", "calibrated" or
+// "lens-system": the CLI's names.
 std::string_view projection_name(const Projection& p);
 
 // Helper for std::visit with one lambda per alternative.

@@ -103,6 +103,8 @@ BlenderCamera to_blender(const Camera& camera) {
                  },
                  // Blender's cameras have no lens distortion and no K with skew.
                  [&](const CalibratedProjection&) { b.type = "NONE"; },
+                 // Nor real lens prescriptions.
+                 [&](const LensSystemProjection&) { b.type = "NONE"; },
              },
              camera.projection);
   return b;

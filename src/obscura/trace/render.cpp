@@ -59,11 +59,11 @@ RenderStats render(const TraceScene& scene, const Camera& camera, const Integrat
   const std::optional<PinholeRays> pinhole = PinholeRays::of(camera);
   const FilterSampler filter(camera.film.filter);
   const auto exposure = float(camera.exposure_scale());
-  // Which of the camera's numbers change the image: the lens point only with depth of field, the
-  // time only where something moves during the shutter. The others are skipped, not drawn (most
-  // of a sample's sampler cost where camera rays escape to the environment); a still scene's
-  // rays all carry the shutter's middle.
-  const bool lens_matters = camera.lens.depth_of_field;
+  // Which of the camera's numbers change the image: the lens point only with depth of field or a
+  // lens system, the time only where something moves during the shutter. The others are skipped,
+  // not drawn (most of a sample's sampler cost where camera rays escape to the environment); a
+  // still scene's rays all carry the shutter's middle.
+  const bool lens_matters = camera.uses_lens_samples();
   const bool time_matters = scene.has_motion() || camera.world_from_camera.is_animated();
   const double still_time = camera.shutter.time_at(0.5);
   // Spectral mode's tables are built once per process, before the clock starts, so that the

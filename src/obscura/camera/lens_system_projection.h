@@ -1,0 +1,27 @@
+// The projection of a camera whose rays come from a lens system (lens_system.h): a real lens
+// prescription traced surface by surface, focused by moving the lens, with the iris of the
+// camera's Aperture. The camera's ThinLens settings it shares: focus_distance_m (measured from
+// the sensor, as camera space's origin is the sensor for this projection) and the aperture's
+// blades and rotation; its f-number is its own (below). See focused_lens_system.h for the rays.
+#pragma once
+
+#include <memory>
+#include <optional>
+
+#include "obscura/camera/lens_system.h"
+
+namespace obscura {
+
+struct LensSystemProjection {
+  std::shared_ptr<const LensSystem> lens;  // required
+  // The sensor's width, spanning the image's width; its height follows the image's aspect.
+  double sensor_width_mm = 36;
+  // Stops the iris down from the lens's widest opening (≥ lens->f_number()); nothing: wide open.
+  std::optional<double> f_number;
+};
+
+// Throws obscura::Error naming the field: no lens, a sensor width that is not positive, an
+// f-number below the lens's widest.
+void validate(const LensSystemProjection& p);
+
+}  // namespace obscura
