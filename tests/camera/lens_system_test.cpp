@@ -58,8 +58,7 @@ TEST_P(BuiltinLens, FocalLengthBackFocusAndFNumberMatchParaxialRayTransfer) {
   ASSERT_TRUE(parallel_ray(*lens, h, no_apertures));
   const LensSurface& stop = lens->prescription().surfaces[size_t(stop_index(lens->prescription()))];
   double entrance_pupil = stop.aperture_diameter_mm * h / std::abs(at_stop.y);
-  EXPECT_NEAR(efl / entrance_pupil, expected.f_number(), 0.005 * expected.f_number())
-      << GetParam();
+  EXPECT_NEAR(efl / entrance_pupil, expected.f_number(), 0.005 * expected.f_number()) << GetParam();
   // The lens system's own first-order numbers.
   EXPECT_NEAR(lens->effective_focal_length_mm(), expected.efl_mm, 0.005 * expected.efl_mm);
   EXPECT_NEAR(lens->back_focal_distance_mm(), expected.bfd_mm, 0.005 * expected.bfd_mm);
@@ -81,8 +80,7 @@ TEST(LensSystem, PublishedFocalLengthsAndFNumbers) {
 // The chief ray (through the stop's centre) at field angle θ from the scene, found by aiming:
 // the height at the front vertex plane whose ray crosses the stop on the axis (a scan across the
 // front element for the sign change, then bisection).
-std::optional<LensRay> chief_ray_from_scene(const LensSystem& lens, double theta,
-                                            bool apertures) {
+std::optional<LensRay> chief_ray_from_scene(const LensSystem& lens, double theta, bool apertures) {
   Point3d at_stop;
   TraceOptions options;
   options.at_stop = &at_stop;
@@ -130,20 +128,22 @@ TEST(LensSystem, FisheyeSeesItsPublishedFieldAcrossTheFormatItWasDesignedFor) {
   // from 153.8° on, so a real image circle is a little smaller than the design's field.
   auto lens = builtin_lens("fisheye-10mm");
   const double corner_mm = 0.5 * std::hypot(36.0, 24.0) * lens->effective_focal_length_mm() / 16;
+  LensSettings settings;
+  settings.focus_distance_m = std::numeric_limits<double>::infinity();
+  settings.sensor_width_mm = 2 * corner_mm * 36 / std::hypot(36.0, 24.0);
+  settings.sensor_height_mm = 2 * corner_mm * 24 / std::hypot(36.0, 24.0);
+  FocusedLensSystem focused(lens, settings);
   // The field angle whose chief ray lands at the corner (the image height grows with the angle).
   double low = 0, high = 85 * kDegrees;
   for (int i = 0; i < 50; ++i) {
     double mid = 0.5 * (low + high);
     auto chief = chief_ray_from_scene(*lens, mid, false);
     ASSERT_TRUE(chief) << mid / kDegrees;
-    (std::abs(height_at(*chief, -lens->back_focal_distance_mm())) < corner_mm ? low : high) = mid;
+    (std::abs(height_at(*chief, -focused.film_distance_mm())) < corner_mm ? low : high) = mid;
   }
   const double field_degrees = 2 * low / kDegrees;
   EXPECT_NEAR(field_degrees, 155.9, 1.5);
   // The camera's chief rays (from the film, through FocusedLensSystem) see the same field.
-  FocusedLensSystem focused(lens, {.focus_distance_m = std::numeric_limits<double>::infinity(),
-                                   .sensor_width_mm = 2 * corner_mm * 36 / std::hypot(36.0, 24.0),
-                                   .sensor_height_mm = 2 * corner_mm * 24 / std::hypot(36.0, 24.0)});
   Point2d corner(corner_mm * 36 / std::hypot(36.0, 24.0), corner_mm * 24 / std::hypot(36.0, 24.0));
   auto a = focused.chief_ray(corner), b = focused.chief_ray({-corner.x, -corner.y});
   ASSERT_TRUE(a && b);
@@ -217,8 +217,9 @@ LensPrescription singlet() {
 }
 
 double catalogue_index(double wavelength_nm) {
-  return wavelength_nm == kWavelengthF_nm ? kBk7_F : wavelength_nm == kWavelengthC_nm ? kBk7_C
-                                                                                       : kBk7_d;
+  return wavelength_nm == kWavelengthF_nm   ? kBk7_F
+         : wavelength_nm == kWavelengthC_nm ? kBk7_C
+                                            : kBk7_d;
 }
 
 // The paraxial image height of a chief ray at angle θ (tangent as the paraxial angle) on a
@@ -252,9 +253,8 @@ TEST(LensSystem, LateralColourOfASingletMatchesParaxialPrediction) {
     return out ? height_at(*out, -sensor_mm) : 0.0;
   };
   double traced = height(kWavelengthF_nm) - height(kWavelengthC_nm);
-  double predicted =
-      paraxial_chief_height(singlet(), theta, kWavelengthF_nm, sensor_mm) -
-      paraxial_chief_height(singlet(), theta, kWavelengthC_nm, sensor_mm);
+  double predicted = paraxial_chief_height(singlet(), theta, kWavelengthF_nm, sensor_mm) -
+                     paraxial_chief_height(singlet(), theta, kWavelengthC_nm, sensor_mm);
   EXPECT_GT(std::abs(predicted), 0.005);  // a measurable fringe: several micrometres
   EXPECT_NEAR(traced, predicted, 0.05 * std::abs(predicted))
       << "lateral colour F − C: traced " << traced << " mm, paraxial " << predicted << " mm";

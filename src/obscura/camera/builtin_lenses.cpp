@@ -18,8 +18,7 @@ extern const int table_count;
 
 std::vector<std::string> builtin_lens_names() {
   std::vector<std::string> names;
-  for (int i = 0; i < lens_data::table_count; ++i)
-    names.emplace_back(lens_data::tables[i].first);
+  for (int i = 0; i < lens_data::table_count; ++i) names.emplace_back(lens_data::tables[i].first);
   return names;
 }
 

@@ -400,7 +400,8 @@ std::optional<CameraRay> PreparedCamera::generate_ray(Point2d film_point, Point2
     CameraRay ray;
     ray.origin = world(local->origin);
     ray.direction = world_direction / stretch;
-    ray.t_min = std::max(0.0, camera.near_m - local->depth_at_origin) / local->depth_per_t * stretch;
+    ray.t_min =
+        std::max(0.0, camera.near_m - local->depth_at_origin) / local->depth_per_t * stretch;
     ray.t_max = (camera.far_m - local->depth_at_origin) / local->depth_per_t * stretch;
     ray.time_s = time_s;
     ray.weight = local->weight;
@@ -519,8 +520,8 @@ std::optional<Point3d> PreparedCamera::unproject(Point2d film_point, double dept
             // Along the chief ray to the plane at depth_m in front of the sensor.
             auto chief = focused_lens_->chief_ray(image_mm_from_raster(film_point));
             if (!chief || !(chief->direction.z < 0)) return std::nullopt;
-            return chief->origin + chief->direction * ((chief->origin.z + depth_m) /
-                                                       -chief->direction.z);
+            return chief->origin +
+                   chief->direction * ((chief->origin.z + depth_m) / -chief->direction.z);
           },
       },
       camera_->projection);

@@ -165,9 +165,9 @@ class PreparedCamera {
   double window_width_ = 0, window_height_ = 0;
   double width_px_ = 0, height_px_ = 0;
   double lens_radius_m_ = 0;
-  double focal_length_mm_ = 0, film_width_mm_ = 0;      // what the circle of confusion needs
-  const Transform* fixed_world_from_camera_ = nullptr;  // a camera that does not move
-  std::optional<LensMap> lens_map_;                     // a calibrated camera's
+  double focal_length_mm_ = 0, film_width_mm_ = 0;         // what the circle of confusion needs
+  const Transform* fixed_world_from_camera_ = nullptr;     // a camera that does not move
+  std::optional<LensMap> lens_map_;                        // a calibrated camera's
   std::shared_ptr<const FocusedLensSystem> focused_lens_;  // a lens-system camera's
   double sensor_width_mm_ = 0, sensor_height_mm_ = 0;      // a lens-system camera's
   Point2d image_mm_from_raster(Point2d raster) const;

@@ -72,11 +72,11 @@ FocusedLensSystem::FocusedLensSystem(std::shared_ptr<const LensSystem> lens,
 // object's distance from the front focal point and x' = d − BFD the image's from the rear one:
 // (d − BFD)·(S − d − z_F) = f², a quadratic in d. Then the exact paraxial focus, by tracing a
 // near-axial ray from the object point and moving the lens until it crosses the axis on the
-// sensor (secant steps).
+// sensor (secant steps). Last, the sharpest focus near it (best_focus).
 double FocusedLensSystem::solve_film_distance(double focus_distance_mm) const {
   const LensSystem& lens = *lens_;
   const double bfd = lens.back_focal_distance_mm();
-  if (std::isinf(focus_distance_mm)) return bfd;
+  if (std::isinf(focus_distance_mm)) return best_focus(focus_distance_mm, bfd);
   const double f = lens.effective_focal_length_mm();
   const double front_focus_z = lens.front_z_mm() + lens.front_focal_distance_mm();
   const double a = focus_distance_mm - front_focus_z;
@@ -95,8 +95,8 @@ double FocusedLensSystem::solve_film_distance(double focus_distance_mm) const {
   auto miss = [&](double film_distance) {
     double object_z = focus_distance_mm - film_distance;
     Vector3d towards(0, h, lens.front_z_mm() - object_z);
-    auto out = lens.trace({{0, 0, object_z}, towards / length(towards)}, TraceFrom::scene,
-                          construction);
+    auto out =
+        lens.trace({{0, 0, object_z}, towards / length(towards)}, TraceFrom::scene, construction);
     if (!out) return std::numeric_limits<double>::quiet_NaN();
     return axis_crossing_z(*out, out->origin.y, out->direction.y) + film_distance;
   };
@@ -108,8 +108,57 @@ double FocusedLensSystem::solve_film_distance(double focus_distance_mm) const {
     d1 = d2, g1 = miss(d1);
     if (std::abs(d1 - d0) < 1e-10 * f) break;
   }
-  if (std::isfinite(g1) && std::abs(g1) < 1e-6 * f && d1 > 0) return d1;
-  return d;  // the thick-lens estimate, where tracing cannot refine it
+  if (std::isfinite(g1) && std::abs(g1) < 1e-6 * f && d1 > 0) d = d1;
+  return best_focus(focus_distance_mm, d);
+}
+
+// Wide open, a real lens's zones focus at different distances (spherical aberration): the
+// sharpest image is not at the paraxial focus. The film distance near `paraxial_mm` with the
+// smallest RMS spot of the axial point, by golden-section search on a meridional fan of rays over
+// the stop's opening, each weighted by its zone's circumference (the fan stands for the disk).
+double FocusedLensSystem::best_focus(double focus_distance_mm, double paraxial_mm) const {
+  const LensSystem& lens = *lens_;
+  const double reach = 0.5 * lens.prescription().surfaces.front().aperture_diameter_mm;
+  TraceOptions options;
+  options.stop = StopOpening{stop_.radius_mm, Aperture{}};
+  constexpr int kFan = 96;
+  auto rms_spot = [&](double film_distance) {
+    const double object_z = std::isinf(focus_distance_mm) ? 0 : focus_distance_mm - film_distance;
+    double sum = 0, weights = 0;
+    for (int i = 0; i < kFan; ++i) {
+      double h = reach * (i + 0.5) / kFan;
+      LensRay ray;
+      if (std::isinf(focus_distance_mm)) {
+        ray = {{0, h, lens.front_z_mm() + 1}, {0, 0, -1}};
+      } else {
+        Vector3d d = Point3d(0, h, lens.front_z_mm()) - Point3d(0, 0, object_z);
+        ray = {{0, 0, object_z}, d / length(d)};
+      }
+      auto out = lens.trace(ray, TraceFrom::scene, options);
+      if (!out) continue;
+      double t = (-film_distance - out->origin.z) / out->direction.z;
+      double y = out->origin.y + t * out->direction.y;
+      sum += h * y * y, weights += h;
+    }
+    return weights > 0 ? std::sqrt(sum / weights) : std::numeric_limits<double>::infinity();
+  };
+  // The spot is centred on the axis by symmetry; search ±2 % of the focal length.
+  const double span = 0.02 * lens.effective_focal_length_mm();
+  const double golden = (std::sqrt(5.0) - 1) / 2;
+  double a = paraxial_mm - span, b = paraxial_mm + span;
+  double c = b - golden * (b - a), d = a + golden * (b - a);
+  double fc = rms_spot(c), fd = rms_spot(d);
+  for (int i = 0; i < 60; ++i) {
+    if (fc < fd) {
+      b = d, d = c, fd = fc;
+      c = b - golden * (b - a), fc = rms_spot(c);
+    } else {
+      a = c, c = d, fc = fd;
+      d = a + golden * (b - a), fd = rms_spot(d);
+    }
+  }
+  double best = 0.5 * (a + b);
+  return std::isfinite(rms_spot(best)) && best > 0 ? best : paraxial_mm;
 }
 
 bool FocusedLensSystem::passes(double film_radius_mm, Point2d pupil_point_mm) const {
@@ -188,8 +237,7 @@ std::optional<LensCameraRay> FocusedLensSystem::ray(Point2d image_mm, Point2d u,
   TraceOptions options;
   options.wavelength_nm = wavelength_nm;
   options.stop = stop_;
-  std::optional<LensRay> out =
-      lens_->trace({origin, towards / distance}, TraceFrom::film, options);
+  std::optional<LensRay> out = lens_->trace({origin, towards / distance}, TraceFrom::film, options);
   if (!out) return std::nullopt;
   // 4. Its share of the irradiance (see the header), relative to the thin lens at f/N.
   const double cos_theta = film_distance_mm_ / distance;

@@ -93,6 +93,7 @@ class FocusedLensSystem {
   std::vector<PupilBounds> bounds_;  // per film-radius interval
 
   double solve_film_distance(double focus_distance_mm) const;
+  double best_focus(double focus_distance_mm, double paraxial_mm) const;
   void compute_pupil_bounds();
   std::optional<LensRay> chief_ray_lens(double film_radius_mm, double wavelength_nm) const;
   LensCameraRay to_camera(const LensRay& ray) const;

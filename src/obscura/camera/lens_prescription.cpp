@@ -18,8 +18,8 @@ bool LensSurface::is_aspheric() const {
 double refractive_index(double n_d, double abbe_number, double wavelength_nm) {
   if (abbe_number <= 0 || n_d <= 1) return n_d;
   auto inverse_square = [](double lambda) { return 1 / (lambda * lambda); };
-  double b = (n_d - 1) / abbe_number /
-             (inverse_square(kWavelengthF_nm) - inverse_square(kWavelengthC_nm));
+  double b =
+      (n_d - 1) / abbe_number / (inverse_square(kWavelengthF_nm) - inverse_square(kWavelengthC_nm));
   return n_d + b * (inverse_square(wavelength_nm) - inverse_square(kWavelengthD_nm));
 }
 

@@ -31,13 +31,13 @@ inline constexpr double kWavelengthD_nm = 587.5618;  // helium d (yellow): n_d's
 inline constexpr double kWavelengthC_nm = 656.2725;  // hydrogen C (red)
 
 struct LensSurface {
-  double radius_mm = 0;     // signed; 0: flat
-  double thickness_mm = 0;  // ≥ 0, to the next surface along the axis (the last: 0)
-  double n_d = 1;           // index of the medium after the surface at the d line (1: air)
-  double abbe_number = 0;   // V_d of that medium; 0: no dispersion
-  double aperture_diameter_mm = 0;  // > 0: the clear aperture (the stop: its full opening)
-  bool is_stop = false;             // the aperture stop (flat, air after it)
-  double conic = 0;                 // k of the even asphere
+  double radius_mm = 0;              // signed; 0: flat
+  double thickness_mm = 0;           // ≥ 0, to the next surface along the axis (the last: 0)
+  double n_d = 1;                    // index of the medium after the surface at the d line (1: air)
+  double abbe_number = 0;            // V_d of that medium; 0: no dispersion
+  double aperture_diameter_mm = 0;   // > 0: the clear aperture (the stop: its full opening)
+  bool is_stop = false;              // the aperture stop (flat, air after it)
+  double conic = 0;                  // k of the even asphere
   std::array<double, 7> aspheric{};  // A4, A6, …, A16 (mm^(1 − 2i))
 
   bool is_aspheric() const;

@@ -67,12 +67,12 @@ LensSurface parse_row(const std::vector<std::string_view>& fields, const std::st
   while (positional < fields.size() && fields[positional].find('=') == std::string_view::npos)
     ++positional;
   if (positional < kRequiredColumns || positional > std::size(kColumns))
-    throw Error(where, "expected 4 numbers (radius_mm thickness_mm n_d aperture_diameter_mm), "
-                       "an optional V_d, then key=value fields; got " +
-                           std::to_string(positional) + " number" + (positional == 1 ? "" : "s"));
+    throw Error(where,
+                "expected 4 numbers (radius_mm thickness_mm n_d aperture_diameter_mm), "
+                "an optional V_d, then key=value fields; got " +
+                    std::to_string(positional) + " number" + (positional == 1 ? "" : "s"));
   double values[std::size(kColumns)] = {};
-  for (size_t i = 0; i < positional; ++i)
-    values[i] = parse_number(fields[i], where, kColumns[i]);
+  for (size_t i = 0; i < positional; ++i) values[i] = parse_number(fields[i], where, kColumns[i]);
   LensSurface s;
   s.radius_mm = values[0];
   s.thickness_mm = values[1];
@@ -81,16 +81,17 @@ LensSurface parse_row(const std::vector<std::string_view>& fields, const std::st
   s.abbe_number = values[4];
   for (size_t i = positional; i < fields.size(); ++i) {
     if (fields[i].find('=') == std::string_view::npos)
-      throw Error(where, "'" + std::string(fields[i]) +
-                             "': bare numbers come before the key=value fields");
+      throw Error(
+          where, "'" + std::string(fields[i]) + "': bare numbers come before the key=value fields");
     apply_keyed(s, fields[i], where);
   }
   // The shared tables' convention: n_d 0 on a flat row is the stop, with air after it.
   if (s.n_d == 0) {
     if (s.radius_mm != 0)
-      throw Error(where, "n_d: 0 marks the aperture stop, which must be flat (radius_mm 0); got "
-                         "radius " +
-                             std::string(fields[0]));
+      throw Error(where,
+                  "n_d: 0 marks the aperture stop, which must be flat (radius_mm 0); got "
+                  "radius " +
+                      std::string(fields[0]));
     s.is_stop = true;
     s.n_d = 1;
   }
@@ -123,8 +124,9 @@ LensPrescription parse_lens_prescription(std::string_view text, const std::strin
     lines.push_back(line_number);
   }
   if (p.surfaces.empty())
-    throw Error(source, "no surfaces: expected rows of radius_mm thickness_mm n_d "
-                        "aperture_diameter_mm");
+    throw Error(source,
+                "no surfaces: expected rows of radius_mm thickness_mm n_d "
+                "aperture_diameter_mm");
   int stops = 0;
   for (size_t i = 0; i < p.surfaces.size(); ++i) {
     if (!p.surfaces[i].is_stop) continue;
@@ -132,8 +134,7 @@ LensPrescription parse_lens_prescription(std::string_view text, const std::strin
       throw Error(source + ":" + std::to_string(lines[i]),
                   "a second aperture stop (radius 0, n_d 0); a lens has one");
   }
-  if (stops == 0)
-    throw Error(source, "no aperture stop: one row must have radius_mm 0 and n_d 0");
+  if (stops == 0) throw Error(source, "no aperture stop: one row must have radius_mm 0 and n_d 0");
   if (p.surfaces.back().n_d != 1)
     throw Error(source + ":" + std::to_string(lines.back()),
                 "n_d: the last surface must have air (1) after it, towards the sensor");

@@ -141,10 +141,10 @@ std::optional<LensRay> LensSystem::trace(LensRay ray, TraceFrom from,
     // 3. Refraction into the next medium.
     std::optional<Vector3d> n = facing_normal(s, p, ray.direction);
     if (!n) return std::nullopt;
-    double n_in = from_film ? index_after(i, options.wavelength_nm)
-                            : index_before(i, options.wavelength_nm);
-    double n_out = from_film ? index_before(i, options.wavelength_nm)
-                             : index_after(i, options.wavelength_nm);
+    double n_in =
+        from_film ? index_after(i, options.wavelength_nm) : index_before(i, options.wavelength_nm);
+    double n_out =
+        from_film ? index_before(i, options.wavelength_nm) : index_after(i, options.wavelength_nm);
     std::optional<Vector3d> refracted = refract(ray.direction, *n, n_in, n_out);
     if (!refracted) return std::nullopt;
     ray = {p, *refracted};

@@ -11,7 +11,8 @@ namespace obscura {
 void validate(const LensSystemProjection& p) {
   if (!p.lens) throw Error("camera.lens", "a lens-system camera needs a lens");
   if (!(p.sensor_width_mm > 0) || !std::isfinite(p.sensor_width_mm))
-    throw Error("camera.sensor_width_mm", "must be positive; got " + number_text(p.sensor_width_mm));
+    throw Error("camera.sensor_width_mm",
+                "must be positive; got " + number_text(p.sensor_width_mm));
   if (p.f_number) {
     const double widest = p.lens->f_number();
     if (!std::isfinite(*p.f_number) || !(*p.f_number >= widest * (1 - 1e-3)))
