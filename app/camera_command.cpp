@@ -89,6 +89,19 @@ void print_geometry(const Camera& c) {
       lens += ", field limited to " + short_num(p->max_field_angle_degrees) + "° off axis";
     row("distortion", lens);
   }
+  if (auto* l = std::get_if<LensSystemProjection>(&c.projection)) {
+    auto focused = focused_lens_system(l->lens, c.lens_system_settings());
+    const LensSystem& lens = *l->lens;
+    row("lens", "'" + lens.name() + "': EFL " + short_num(lens.effective_focal_length_mm()) +
+                    " mm, back focal distance " + short_num(lens.back_focal_distance_mm()) +
+                    " mm, f/" + short_num(lens.f_number()) + " wide open, " +
+                    std::to_string(lens.prescription().surfaces.size()) + " surfaces");
+    row("focus", short_num(c.lens.focus_distance_m) + " m from the sensor; sensor " +
+                     short_num(focused->film_distance_mm()) + " mm behind the rear vertex, " +
+                     short_num(focused->settings().sensor_width_mm) + " x " +
+                     short_num(focused->settings().sensor_height_mm) + " mm; iris f/" +
+                     short_num(focused->f_number()));
+  }
   if (std::holds_alternative<Orthographic>(c.projection)) {
     ScreenWindow w = c.screen_window();
     row("view", short_num(w.x_max - w.x_min) + " x " + short_num(w.y_max - w.y_min) + " m");
@@ -106,8 +119,11 @@ void print_lens_and_exposure(const Camera& c) {
     row("lens", "thin lens f/" + short_num(c.f_number()) + ", aperture " + short_num(diameter) +
                     " mm (" + shape + "), lens radius " + short_num(c.lens_radius_m()) +
                     " m, focus " + short_num(c.lens.focus_distance_m) + " m");
-  } else {
+  } else if (!std::holds_alternative<LensSystemProjection>(c.projection)) {
     row("lens", "pinhole (depth of field off; f/" + short_num(c.f_number()) + " for exposure)");
+  } else if (c.lens.aperture.blades > 0) {
+    row("iris", std::to_string(c.lens.aperture.blades) + " blades, rotated " +
+                    short_num(c.lens.aperture.rotation_degrees) + "°");
   }
   row("shutter", num(c.shutter.open_s) + " s to " + short_num(c.shutter.close_s) + " s (" +
                      short_num(c.shutter.duration_s()) + " s)");

@@ -4,6 +4,7 @@
 #include <vector>
 
 #include "calibrated_camera_options.h"
+#include "lens_system_options.h"
 #include "number_list_option.h"
 #include "obscura/camera/perspective.h"
 #include "obscura/math/error.h"
@@ -71,6 +72,7 @@ const Camera& find_camera(const Scene& scene, const std::optional<std::string>& 
 }
 
 void apply_lens_overrides(Camera& camera, const CameraOverrides& o) {
+  if (apply_lens_system_overrides(camera, o)) return;
   if (o.projection && *o.projection != "calibrated") {  // calibrated: calibrated_camera_options
     camera.projection = projection_from_name(*o.projection, camera);
     if (!std::holds_alternative<Perspective>(camera.projection)) camera.lens.depth_of_field = false;
@@ -284,6 +286,13 @@ void add_camera_options(CLI::App& command, CameraOverrides& o) {
       ->group(group);
   command.add_option("--far", o.far_m, "Far clipping plane in m")
       ->check(number_in(0, 1e15))
+      ->group(group);
+  command
+      .add_option("--lens", o.lens,
+                  "A real lens traced surface by surface: double-gauss-50mm, telephoto-250mm or "
+                  "fisheye-10mm (--fstop stops it down, --focus-distance focuses it)")
+      ->group(group);
+  command.add_option("--lens-file", o.lens_file, "A lens prescription file (see docs/camera.md)")
       ->group(group);
   add_calibrated_camera_options(command, o);
 }

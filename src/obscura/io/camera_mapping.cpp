@@ -2,10 +2,13 @@
 
 #include <algorithm>
 #include <cmath>
+#include <filesystem>
 #include <limits>
 #include <numbers>
 
+#include "obscura/camera/builtin_lenses.h"
 #include "obscura/camera/frames.h"
+#include "obscura/camera/lens_prescription_file.h"
 #include "obscura/io/calibrated_camera_json.h"
 #include "obscura/math/error.h"
 
@@ -72,6 +75,28 @@ Perspective perspective_from_json(JsonReader& json) {
   return p;
 }
 
+// A lens-system camera: a built-in lens by name or a prescription file (relative to the scene
+// file), the sensor's width, and an f-number that stops the iris down.
+LensSystemProjection lens_system_from_json(JsonReader& json) {
+  if (json.has("lens") == json.has("lens_file"))
+    json.fail("lens", "a lens_system camera needs one of lens (a built-in name) or lens_file");
+  LensSystemProjection p;
+  try {
+    if (json.has("lens")) {
+      p.lens = builtin_lens(json.string("lens"));
+    } else {
+      std::filesystem::path file(json.string("lens_file"));
+      if (file.is_relative()) file = std::filesystem::path(json.file()).parent_path() / file;
+      p.lens = std::make_shared<const LensSystem>(load_lens_prescription(file.string()));
+    }
+  } catch (const Error& e) {
+    json.fail(json.has("lens") ? "lens" : "lens_file", e.what());
+  }
+  p.sensor_width_mm = json.number_in("sensor_width_mm", 36, 1e-3, 1e4);
+  if (json.has("f_number")) p.f_number = json.number_in("f_number", 0, 1e-3, 1e4);
+  return p;
+}
+
 }  // namespace
 
 Camera gltf_perspective_camera(std::string name, const Transform& world_from_camera,
@@ -114,10 +139,12 @@ Camera camera_from_json(JsonReader& json) {
     c.projection = Fisheye{.fov_degrees = json.number_in("fisheye_fov_degrees", 180, 1e-3, 360)};
   } else if (type == "calibrated") {
     c.projection = calibrated_projection_from_json(json);
+  } else if (type == "lens_system") {
+    c.projection = lens_system_from_json(json);
   } else {
-    json.fail("type",
-              "unknown camera type '" + type +
-                  "'; expected perspective, orthographic, spherical, fisheye or calibrated");
+    json.fail("type", "unknown camera type '" + type +
+                          "'; expected perspective, orthographic, spherical, fisheye, calibrated "
+                          "or lens_system");
   }
   // Thin lens: an f-number or aperture diameter turns depth of field on.
   if (json.has("f_number") || json.has("aperture_diameter_mm")) c.lens.depth_of_field = true;
@@ -128,6 +155,8 @@ Camera camera_from_json(JsonReader& json) {
   c.lens.focus_breathing = json.boolean("focus_breathing", true);
   c.lens.aperture.blades = json.integer("aperture_blades", 0, 0, 64);
   c.lens.aperture.rotation_degrees = json.number("aperture_rotation_degrees", 0);
+  // A lens system always has depth of field; its f-number is its own (lens_system_from_json).
+  if (std::holds_alternative<LensSystemProjection>(c.projection)) c.lens.depth_of_field = false;
   c.shutter.open_s = json.number("shutter_open", c.shutter.open_s);
   c.shutter.close_s = json.number("shutter_close", c.shutter.close_s);
   c.shutter.line_time_s = json.number_in("rolling_shutter_line_time", 0, 0, 1);

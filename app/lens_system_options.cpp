@@ -1,0 +1,61 @@
+#include "lens_system_options.h"
+
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "number_list_option.h"
+#include "obscura/camera/builtin_lenses.h"
+#include "obscura/camera/lens_prescription_file.h"
+#include "obscura/math/error.h"
+#include "usage_error.h"
+
+namespace obscura::app {
+
+bool apply_lens_system_overrides(Camera& camera, const CameraOverrides& o) {
+  if (o.lens && o.lens_file) throw UsageError("--lens and --lens-file: give one of them");
+  if ((o.lens || o.lens_file) && o.projection)
+    throw UsageError("--lens and --projection: a lens system is its own projection");
+  if (o.lens || o.lens_file) {
+    LensSystemProjection p;
+    // A perspective camera's sensor carries over (its width; the height follows the image).
+    if (auto* perspective = std::get_if<Perspective>(&camera.projection))
+      p.sensor_width_mm = perspective->sensor_width_mm;
+    if (o.lens) {
+      try {
+        p.lens = builtin_lens(*o.lens);
+      } catch (const Error& e) {
+        throw UsageError(std::string("--lens: ") + e.what());
+      }
+    } else {
+      p.lens = std::make_shared<const LensSystem>(load_lens_prescription(*o.lens_file));
+    }
+    camera.projection = p;
+    camera.lens.depth_of_field = false;  // the lens system's own, not the thin lens's
+  }
+  auto* p = std::get_if<LensSystemProjection>(&camera.projection);
+  if (!p) return false;
+  for (auto [given, option] : {std::pair{bool(o.fov_degrees), "--fov"},
+                               {bool(o.horizontal_fov_degrees), "--hfov"},
+                               {bool(o.focal_length_mm), "--focal-length"},
+                               {bool(o.sensor_fit), "--sensor-fit"},
+                               {bool(o.view_height_m), "--view-height"},
+                               {bool(o.focus_breathing), "--focus-breathing"}})
+    if (given)
+      throw UsageError(std::string(option) +
+                       " does not apply to a lens-system camera (its lens sets the field of view)");
+  if (o.sensor) {
+    std::string text = *o.sensor;
+    for (char& c : text)
+      if (c == 'X') c = 'x';
+    p->sensor_width_mm = parse_list(text, 'x', 2, "--sensor", "WxH in mm (36x24)")[0];
+  }
+  if (o.f_number) p->f_number = *o.f_number;
+  if (o.focus_distance_m) camera.lens.focus_distance_m = *o.focus_distance_m;
+  if (o.aperture_blades) camera.lens.aperture.blades = *o.aperture_blades;
+  if (o.aperture_rotation_degrees)
+    camera.lens.aperture.rotation_degrees = *o.aperture_rotation_degrees;
+  return true;
+}
+
+}  // namespace obscura::app
