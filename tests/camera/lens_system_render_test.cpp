@@ -129,5 +129,50 @@ TEST(LensSystemRender, ThinElementConvergesToTheThinLensImage) {
   EXPECT_GT(total / (kWidth * kHeight), 0.2);
 }
 
+// A lens whose glass disperses tells the renderer so, and bends each wavelength its own way: the
+// camera ray for the same film and lens point leaves in a different direction for blue (F line)
+// and red (C line) light (a ray off the lens centre is bent by the element's power, and
+// n_F > n_C), while the default wavelength is the d line. The spectral tracer then gives each
+// camera ray its path's hero wavelength and renders a lit image.
+TEST(LensSystemRender, ADispersiveLensBendsEachWavelengthItsOwnWay) {
+  LensPrescription element = thin_element();
+  auto camera_with = [&](double abbe_number) {
+    LensPrescription p = element;
+    p.surfaces[1].abbe_number = abbe_number;
+    Camera camera;
+    LensSystemProjection projection;
+    projection.lens = std::make_shared<const LensSystem>(p);
+    projection.sensor_width_mm = 12;
+    camera.projection = projection;
+    camera.film.width_px = kWidth;
+    camera.film.height_px = kHeight;
+    camera.near_m = 1e-3;
+    camera.lens.focus_distance_m = 2.1;
+    camera.validate();
+    return camera;
+  };
+  const Camera plain = camera_with(0), dispersive = camera_with(20);
+  EXPECT_FALSE(plain.prepare().disperses());
+  const PreparedCamera prepared = dispersive.prepare();
+  ASSERT_TRUE(prepared.disperses());
+  const Point2d corner(2, 2), off_centre(0.7, 0.5);
+  auto blue = prepared.generate_ray(corner, off_centre, 0, 486.1327);
+  auto red = prepared.generate_ray(corner, off_centre, 0, 656.2725);
+  auto d_line = prepared.generate_ray(corner, off_centre, 0, kWavelengthD_nm);
+  auto by_default = prepared.generate_ray(corner, off_centre);
+  ASSERT_TRUE(blue && red && d_line && by_default);
+  EXPECT_EQ(by_default->direction.x, d_line->direction.x);
+  EXPECT_EQ(by_default->direction.y, d_line->direction.y);
+  EXPECT_GT(length(blue->direction - red->direction), 1e-4);
+
+  TraceScene trace(squares(), std::make_shared<EmbreeDevice>());
+  Film film(kWidth, kHeight);
+  render(trace, dispersive, PathTracer(), {.samples_per_pixel = 8, .seed = 1, .spectral = true},
+         film);
+  double total = 0;
+  for (float v : film.to_image().data) total += v;
+  EXPECT_GT(total, 0);
+}
+
 }  // namespace
 }  // namespace obscura

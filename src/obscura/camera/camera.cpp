@@ -302,6 +302,8 @@ PreparedCamera::PreparedCamera(const Camera& camera, bool for_many_rays) : camer
     focused_lens_ = focused_lens_system(l->lens, camera.lens_system_settings());
     sensor_width_mm_ = focused_lens_->settings().sensor_width_mm;
     sensor_height_mm_ = focused_lens_->settings().sensor_height_mm;
+    for (const LensSurface& surface : focused_lens_->lens().prescription().surfaces)
+      if (surface.abbe_number > 0) disperses_ = true;
   }
   if (!camera.world_from_camera.is_animated())
     fixed_world_from_camera_ = &camera.world_from_camera.keys().front().transform;
@@ -335,7 +337,7 @@ std::optional<Point2d> PreparedCamera::start_at(Point2d film_point) const {
 }
 
 std::optional<CameraRay> PreparedCamera::generate_ray(Point2d film_point, Point2d lens_sample,
-                                                      double time_s) const {
+                                                      double time_s, double wavelength_nm) const {
   const Camera& camera = *camera_;
   const ThinLens& lens = camera.lens;
   // 1. The ray in camera space. `depth_per_t` turns the clipping range into t: perspective and
@@ -385,7 +387,8 @@ std::optional<CameraRay> PreparedCamera::generate_ray(Point2d film_point, Point2
             return LocalRay{{0, 0, 0}, direction, is_planar(c.lens) ? -direction.z : 1};
           },
           [&](const LensSystemProjection&) -> std::optional<LocalRay> {
-            auto r = focused_lens_->ray(image_mm_from_raster(film_point), lens_sample);
+            auto r =
+                focused_lens_->ray(image_mm_from_raster(film_point), lens_sample, wavelength_nm);
             if (!r || !(r->direction.z < 0)) return std::nullopt;  // stopped, or turned back
             return LocalRay{r->origin, r->direction, -r->direction.z, r->weight, -r->origin.z};
           },

@@ -149,8 +149,15 @@ class PreparedCamera {
   explicit PreparedCamera(const Camera& camera, bool for_many_rays = false);
   const Camera& camera() const { return *camera_; }
 
+  // `wavelength_nm` matters only to a camera whose optics disperse (see disperses()): a lens
+  // system with glasses of finite Abbe number bends each wavelength differently (chromatic
+  // aberration). Other cameras ignore it; the default is the d line the lens data are given at.
   std::optional<CameraRay> generate_ray(Point2d film_point, Point2d lens_sample = {0.5, 0.5},
-                                        double time_s = 0) const;
+                                        double time_s = 0,
+                                        double wavelength_nm = kWavelengthD_nm) const;
+  // Whether the ray generate_ray returns depends on the wavelength: a spectral renderer then
+  // traces one wavelength per camera ray.
+  bool disperses() const { return disperses_; }
   std::optional<FilmProjection> project(Point3d world, double time_s = 0) const;
   std::optional<Point3d> unproject(Point2d film_point, double depth_m, double time_s = 0) const;
   // As Camera's; the window ones for perspective and orthographic cameras only.
@@ -169,7 +176,8 @@ class PreparedCamera {
   const Transform* fixed_world_from_camera_ = nullptr;     // a camera that does not move
   std::optional<LensMap> lens_map_;                        // a calibrated camera's
   std::shared_ptr<const FocusedLensSystem> focused_lens_;  // a lens-system camera's
-  double sensor_width_mm_ = 0, sensor_height_mm_ = 0;      // a lens-system camera's
+  bool disperses_ = false;
+  double sensor_width_mm_ = 0, sensor_height_mm_ = 0;  // a lens-system camera's
   Point2d image_mm_from_raster(Point2d raster) const;
   Point2d raster_from_image_mm(Point2d image) const;
   // Its undistorted points (X/Z, Y/Z) at raster points every kStartSpacing pixels (NaN where

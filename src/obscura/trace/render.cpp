@@ -122,13 +122,20 @@ RenderStats render(const TraceScene& scene, const Camera& camera, const Integrat
           //    whose optics disperse can be given the hero wavelength.
           std::optional<SampledWavelengths> wavelengths;
           if (settings.spectral) wavelengths = SampledWavelengths::sample(sampler.next_1d());
+          // A dispersive lens sends each wavelength its own way: the ray is the hero's, and the
+          // companions, which would have left the lens elsewhere, end here.
+          double camera_nm = kWavelengthD_nm;
+          if (wavelengths && prepared_camera.disperses()) {
+            camera_nm = wavelengths->hero_nm();
+            wavelengths->terminate_secondary();
+          }
           // 4. The radiance along the ray, exposed, into this pixel with the filter's weight.
           std::optional<Ray> ray;
           float ray_weight = 1;
           if (pinhole) {
             ray = pinhole->generate(film_point, time);
-          } else if (std::optional<CameraRay> r =
-                         prepared_camera.generate_ray(film_point, {u_lens.x, u_lens.y}, time)) {
+          } else if (std::optional<CameraRay> r = prepared_camera.generate_ray(
+                         film_point, {u_lens.x, u_lens.y}, time, camera_nm)) {
             ray = r->to_ray();
             ray_weight = float(r->weight);
           }
