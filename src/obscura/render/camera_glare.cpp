@@ -1,0 +1,34 @@
+#include "obscura/render/camera_glare.h"
+
+#include <variant>
+
+#include "obscura/camera/aperture.h"
+#include "obscura/camera/thin_lens.h"
+#include "obscura/math/error.h"
+
+namespace obscura {
+
+DiffractionOptics diffraction_optics(const Camera& camera) {
+  if (!std::holds_alternative<Perspective>(camera.projection))
+    throw Error("glare", "needs a perspective camera (its sensor gives the pixel pitch)");
+  const double focal_length = camera.focal_length_mm();
+  const Vector2d film_mm = camera.film_size_mm();
+  const Aperture aperture = camera.lens.aperture;
+  return DiffractionOptics{
+      .pupil = [aperture](double x, double y) { return aperture_contains(aperture, {x, y}); },
+      .f_number = camera.image_distance_mm() / aperture_diameter_mm(camera.lens, focal_length),
+      .pixel_width_mm = film_mm.x / camera.film.width_px,
+      .pixel_height_mm = film_mm.y / camera.film.height_px};
+}
+
+Image glare_psf(const Camera& camera, const GlareSettings& settings) {
+  validate(settings);
+  return scale_scattered_light(rgb_psf(diffraction_optics(camera), settings.radius_px),
+                               settings.strength);
+}
+
+void apply_glare(Image& image, const Camera& camera, const GlareSettings& settings) {
+  convolve_with_psf(image, glare_psf(camera, settings));
+}
+
+}  // namespace obscura
