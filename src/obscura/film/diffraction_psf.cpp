@@ -174,20 +174,37 @@ PupilPattern pupil_pattern(const PupilShape& pupil, int size, double spacing) {
   const int c = size / 2;
   const double radius = 0.5 * spacing * size;  // the pupil's radius in grid samples
   const int reach = std::min(c, int(std::ceil(radius)) + 1);
-  tbb::parallel_for(tbb::blocked_range<int>(c - reach, std::min(size, c + reach + 1)),
-                    [&](const tbb::blocked_range<int>& rows) {
-                      for (int j = rows.begin(); j < rows.end(); ++j)
-                        for (int i = std::max(0, c - reach); i < std::min(size, c + reach + 1); ++i) {
-                          int inside = 0;
-                          for (int sy = 0; sy < kPupilSupersamples; ++sy)
-                            for (int sx = 0; sx < kPupilSupersamples; ++sx) {
-                              double dx = i - c + (sx + 0.5) / kPupilSupersamples - 0.5;
-                              double dy = j - c + (sy + 0.5) / kPupilSupersamples - 0.5;
-                              inside += pupil(dx / radius, -dy / radius);  // rows run down
-                            }
-                          plane.row(j)[i] = double(inside) / (kPupilSupersamples * kPupilSupersamples);
-                        }
-                    });
+  const int first = c - reach, last = std::min(size, c + reach + 1);  // rows and columns
+  auto inside = [&](double x, double y) {  // grid offsets from the centre; rows run down
+    return pupil(x / radius, -y / radius);
+  };
+  // The shape at every cell corner, once: a cell whose four corners agree lies wholly on one
+  // side of the edge of a convex shape many cells wide; only the others are supersampled.
+  const int corners = last - first + 1;
+  std::vector<char> corner(size_t(corners) * corners);
+  tbb::parallel_for(tbb::blocked_range<int>(0, corners), [&](const tbb::blocked_range<int>& r) {
+    for (int j = r.begin(); j < r.end(); ++j)
+      for (int i = 0; i < corners; ++i)
+        corner[size_t(j) * corners + i] = inside(first + i - c - 0.5, first + j - c - 0.5);
+  });
+  tbb::parallel_for(tbb::blocked_range<int>(first, last), [&](const tbb::blocked_range<int>& rows) {
+    for (int j = rows.begin(); j < rows.end(); ++j)
+      for (int i = first; i < last; ++i) {
+        const char* top = &corner[size_t(j - first) * corners + (i - first)];
+        const char* bottom = top + corners;
+        int agree = top[0] + top[1] + bottom[0] + bottom[1];
+        if (agree == 0 || agree == 4) {
+          plane.row(j)[i] = agree == 4 ? 1.0 : 0.0;
+          continue;
+        }
+        int hits = 0;
+        for (int sy = 0; sy < kPupilSupersamples; ++sy)
+          for (int sx = 0; sx < kPupilSupersamples; ++sx)
+            hits += inside(i - c + (sx + 0.5) / kPupilSupersamples - 0.5,
+                           j - c + (sy + 0.5) / kPupilSupersamples - 0.5);
+        plane.row(j)[i] = double(hits) / (kPupilSupersamples * kPupilSupersamples);
+      }
+  });
   plane.forward();
   PupilPattern pattern{size, spacing, std::vector<double>(size_t(size) * size)};
   // |F|² everywhere from the half spectrum: F(−u, −v) is F(u, v)'s conjugate for a real pupil.
