@@ -144,8 +144,10 @@ void apply_lens_overrides(Camera& camera, const CameraOverrides& o) {
     std::vector<double> v =
         parse_list(*o.lens_barrel, ':', 2, "--lens-barrel", "DIAMETER:DISTANCE in mm (40:30)");
     if (!(v[0] > 0) || !(v[1] >= 0))
-      throw UsageError("--lens-barrel: the diameter must be positive and the distance not "
-                       "negative; got '" + *o.lens_barrel + "'");
+      throw UsageError(
+          "--lens-barrel: the diameter must be positive and the distance not "
+          "negative; got '" +
+          *o.lens_barrel + "'");
     camera.lens.vignetting.barrel_diameter_mm = v[0];
     camera.lens.vignetting.barrel_distance_mm = v[1];
   }

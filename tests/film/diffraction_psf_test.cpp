@@ -83,15 +83,19 @@ std::vector<double> spikes_in_annulus(const Image& psf, double inner, double out
 TEST(DiffractionPsf, CircularPupilHasItsFirstDarkRingWhereJ1VanishesWithin2Percent) {
   const double wavelength_nm = 550, f_number = 8, pitch_mm = 0.0005;
   const int radius = 40;
-  Image psf = monochromatic_psf(
-      {.pupil = iris(0), .f_number = f_number, .pixel_width_mm = pitch_mm, .pixel_height_mm = pitch_mm},
-      wavelength_nm, radius);
+  Image psf = monochromatic_psf({.pupil = iris(0),
+                                 .f_number = f_number,
+                                 .pixel_width_mm = pitch_mm,
+                                 .pixel_height_mm = pitch_mm},
+                                wavelength_nm, radius);
   ASSERT_EQ(psf.width, 2 * radius + 1);
   // The radial profile along +x from the centre; its first local minimum, refined by a parabola.
   std::vector<double> profile;
   for (int k = 0; k <= radius; ++k) profile.push_back(psf.at(radius + k, radius, 0));
   int k = 1;
-  while (k + 1 < int(profile.size()) && !(profile[k] < profile[k - 1] && profile[k] <= profile[k + 1])) ++k;
+  while (k + 1 < int(profile.size()) &&
+         !(profile[k] < profile[k - 1] && profile[k] <= profile[k + 1]))
+    ++k;
   ASSERT_LT(k + 1, int(profile.size()));
   double a = profile[k - 1], b = profile[k], c = profile[k + 1];
   double minimum_px = k + 0.5 * (a - c) / (a - 2 * b + c);
@@ -103,9 +107,11 @@ TEST(DiffractionPsf, CircularPupilHasItsFirstDarkRingWhereJ1VanishesWithin2Perce
 TEST(DiffractionPsf, CircularPupilFollowsTheAiryProfile) {
   const double wavelength_nm = 500, f_number = 4, pitch_mm = 0.0004;
   const int radius = 24;
-  Image psf = monochromatic_psf(
-      {.pupil = iris(0), .f_number = f_number, .pixel_width_mm = pitch_mm, .pixel_height_mm = pitch_mm},
-      wavelength_nm, radius);
+  Image psf = monochromatic_psf({.pupil = iris(0),
+                                 .f_number = f_number,
+                                 .pixel_width_mm = pitch_mm,
+                                 .pixel_height_mm = pitch_mm},
+                                wavelength_nm, radius);
   // The reference: the Airy intensity averaged over each pixel (8 × 8 points), relative to the
   // centre pixel's, as the PSF's own values are.
   const double lambda_n_mm = wavelength_nm * 1e-6 * f_number;
@@ -147,8 +153,8 @@ TEST(DiffractionPsf, BladedIrisThrowsOneSpikePerBladeWhenEvenTwoWhenOdd) {
 }
 
 TEST(DiffractionPsf, ChannelsSumToOneAndRedSpreadsWiderThanBlue) {
-  Image psf = rgb_psf({.pupil = iris(0), .f_number = 11, .pixel_width_mm = 0.002, .pixel_height_mm = 0.002},
-                      32);
+  Image psf = rgb_psf(
+      {.pupil = iris(0), .f_number = 11, .pixel_width_mm = 0.002, .pixel_height_mm = 0.002}, 32);
   ASSERT_EQ(psf.channels, 3);
   // The mean squared radius of each channel: the pattern scales with λ, so red's exceeds blue's.
   double second_moment[3] = {}, sum[3] = {};
@@ -165,7 +171,8 @@ TEST(DiffractionPsf, ChannelsSumToOneAndRedSpreadsWiderThanBlue) {
 }
 
 TEST(DiffractionPsf, RejectsBadOptics) {
-  DiffractionOptics good{.pupil = iris(0), .f_number = 8, .pixel_width_mm = 0.01, .pixel_height_mm = 0.01};
+  DiffractionOptics good{
+      .pupil = iris(0), .f_number = 8, .pixel_width_mm = 0.01, .pixel_height_mm = 0.01};
   DiffractionOptics bad = good;
   bad.f_number = 0;
   EXPECT_THROW(rgb_psf(bad, 8), Error);

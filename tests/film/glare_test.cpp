@@ -20,7 +20,10 @@ namespace {
 
 Image test_psf(int radius, int blades = 6) {
   Aperture a{.blades = blades, .rotation_degrees = 10};
-  return rgb_psf({.pupil = [a](double x, double y) { return aperture_contains(a, {x, y}); },
+  return rgb_psf({.pupil =
+                      [a](double x, double y) {
+                        return aperture_contains(a, {x, y});
+                      },
                   .f_number = 8,
                   .pixel_width_mm = 0.003,
                   .pixel_height_mm = 0.003},

@@ -43,7 +43,8 @@ Scene emitter_scene() {
 Image render_image(const Scene& scene, int spp = 16) {
   TraceScene trace(scene, std::make_shared<EmbreeDevice>());
   Film film(scene.camera.film.width_px, scene.camera.film.height_px);
-  render(trace, scene.camera, DirectLightingIntegrator(), {.samples_per_pixel = spp, .seed = 1}, film);
+  render(trace, scene.camera, DirectLightingIntegrator(), {.samples_per_pixel = spp, .seed = 1},
+         film);
   return film.to_image();
 }
 
@@ -77,7 +78,8 @@ TEST(VignettingRender, NaturalVignettingFallsOffAsCosineToTheFourth) {
       if (x >= kSize) continue;
       double expected = mean_cos4(x, y);
       EXPECT_NEAR(image.at(x, y, 1), expected, 0.01 * expected)
-          << "pixel " << x << "," << y << (depth_of_field ? " with" : " without") << " depth of field";
+          << "pixel " << x << "," << y << (depth_of_field ? " with" : " without")
+          << " depth of field";
     }
     EXPECT_NEAR(image.at(kSize - 1, kSize / 2, 0), mean_cos4(kSize - 1, kSize / 2), 0.01);
   }

@@ -285,6 +285,7 @@ PreparedCamera::PreparedCamera(const Camera& camera, bool for_many_rays) : camer
   film_width_mm_ = camera.film_size_mm().x;
   if (focal_length_mm_ > 0)
     aperture_radius_mm_ = 0.5 * aperture_diameter_mm(camera.lens, focal_length_mm_);
+  if (camera.lens.vignetting.mechanical()) aperture_chords_ = aperture_chords(camera.lens.aperture);
   if (auto* c = std::get_if<CalibratedProjection>(&camera.projection)) {
     lens_map_.emplace(lens_map(*c));  // a copy of this thread's, not built again
     auto* pinhole = std::get_if<PinholeDistortion>(&c->lens);
@@ -361,8 +362,8 @@ std::optional<CameraRay> PreparedCamera::generate_ray(Point2d film_point, Point2
     Point2d l = sample_aperture(lens.aperture, lens_sample);
     Point3d origin(lens_radius_m_ * l.x, lens_radius_m_ * l.y, 0);
     // The barrel keeps this lens point's ray or stops it: the cat-eye, sample by sample.
-    bool kept = passes_barrel(vignetting, {aperture_radius_mm_ * l.x, aperture_radius_mm_ * l.y},
-                              w, lens.focus_distance_m * kMillimetresPerMetre);
+    bool kept = passes_barrel(vignetting, {aperture_radius_mm_ * l.x, aperture_radius_mm_ * l.y}, w,
+                              lens.focus_distance_m * kMillimetresPerMetre);
     return LocalRay{origin, normalize(focus - origin), 0, kept ? natural : 0};
   };
   std::optional<LocalRay> local = std::visit(
@@ -434,7 +435,7 @@ Point2d PreparedCamera::raster_from_window(Point2d p) const {
 
 double PreparedCamera::relative_barrel_share(Point2d window) const {
   const ThinLens& lens = camera_->lens;
-  return barrel_transmission(lens.vignetting, lens.aperture, aperture_radius_mm_, window,
+  return barrel_transmission(lens.vignetting, aperture_chords_, aperture_radius_mm_, window,
                              lens.focus_distance_m * kMillimetresPerMetre);
 }
 

@@ -172,6 +172,7 @@ class PreparedCamera {
   double lens_radius_m_ = 0;
   double focal_length_mm_ = 0, film_width_mm_ = 0;         // what the circle of confusion needs
   double aperture_radius_mm_ = 0;  // what vignetting needs
+  ApertureChords aperture_chords_;
   const Transform* fixed_world_from_camera_ = nullptr;     // a camera that does not move
   std::optional<LensMap> lens_map_;                        // a calibrated camera's
   std::shared_ptr<const FocusedLensSystem> focused_lens_;  // a lens-system camera's

@@ -10,8 +10,6 @@ namespace obscura {
 
 namespace {
 
-constexpr int kStrips = 128;
-
 // 1 − D/S_f: how much of a lens point's offset survives to the barrel's plane.
 double survival(const Vignetting& v, double focus_distance_mm) {
   return std::isinf(focus_distance_mm) ? 1 : 1 - v.barrel_distance_mm / focus_distance_mm;
@@ -32,8 +30,15 @@ bool passes_barrel(const Vignetting& v, Point2d l, Point2d w, double focus_dista
   return x * x + y * y <= r * r;
 }
 
-double barrel_transmission(const Vignetting& v, const Aperture& aperture, double aperture_radius_mm,
-                           Point2d w, double focus_distance_mm) {
+ApertureChords aperture_chords(const Aperture& aperture) {
+  ApertureChords table;
+  for (int i = 0; i < ApertureChords::kStrips; ++i)
+    table.chords[i] = aperture_chord(aperture, -1 + (i + 0.5) * 2.0 / ApertureChords::kStrips);
+  return table;
+}
+
+double barrel_transmission(const Vignetting& v, const ApertureChords& aperture,
+                           double aperture_radius_mm, Point2d w, double focus_distance_mm) {
   if (!v.mechanical()) return 1;
   // The kept lens points, in units of the aperture's radius: a disc (the barrel seen from the
   // focus point) of radius rho centred at c.
@@ -47,12 +52,11 @@ double barrel_transmission(const Vignetting& v, const Aperture& aperture, double
   // Kept and whole aperture, summed over the same vertical strips (the same chords: exactly 1
   // where the disc holds the aperture).
   double kept = 0, whole = 0;
-  for (int i = 0; i < kStrips; ++i) {
-    double x = -1 + (i + 0.5) * 2.0 / kStrips;
-    auto [low, high] = aperture_chord(aperture, x);
+  for (int i = 0; i < ApertureChords::kStrips; ++i) {
+    auto [low, high] = aperture.chords[i];
     if (low >= high) continue;
     whole += high - low;
-    double dx = x - c.x;
+    double dx = -1 + (i + 0.5) * 2.0 / ApertureChords::kStrips - c.x;
     if (std::abs(dx) >= rho) continue;
     double h = std::sqrt(rho * rho - dx * dx);
     kept += std::max(0.0, std::min(high, c.y + h) - std::max(low, c.y - h));

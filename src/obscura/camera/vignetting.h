@@ -18,6 +18,9 @@
 // the axis the barrel (B ≥ A, validated) clips nothing, so the image centre keeps its exposure.
 #pragma once
 
+#include <array>
+#include <utility>
+
 #include "obscura/camera/aperture.h"
 #include "obscura/math/vector.h"
 
@@ -42,11 +45,19 @@ double natural_vignetting(Point2d window);
 bool passes_barrel(const Vignetting& v, Point2d lens_point_mm, Point2d window,
                    double focus_distance_mm);
 
-// The share of the aperture (radius `aperture_radius_mm`, shape `aperture`) whose rays towards
-// window point w's focus point pass the barrel: the light mechanical vignetting leaves there,
-// in [0, 1]; 1 without a barrel. Integrated over the aperture's chords (128 strips, ~2e-3).
-double barrel_transmission(const Vignetting& v, const Aperture& aperture, double aperture_radius_mm,
-                           Point2d window, double focus_distance_mm);
+// The aperture's vertical chords at the abscissas barrel_transmission integrates over (128
+// strips across the unit circle), computed once per aperture.
+struct ApertureChords {
+  static constexpr int kStrips = 128;
+  std::array<std::pair<double, double>, kStrips> chords;  // [low, high]; low > high: none
+};
+ApertureChords aperture_chords(const Aperture& aperture);
+
+// The share of the aperture (radius `aperture_radius_mm`, chords of its shape) whose rays
+// towards window point w's focus point pass the barrel: the light mechanical vignetting leaves
+// there, in [0, 1]; 1 without a barrel. Integrated over the chords (~2e-3).
+double barrel_transmission(const Vignetting& v, const ApertureChords& aperture,
+                           double aperture_radius_mm, Point2d window, double focus_distance_mm);
 
 // Throws obscura::Error naming the field for a negative or non-finite value, a barrel narrower
 // than the aperture diameter, or one at or beyond the focus distance.

@@ -20,7 +20,7 @@ namespace obscura {
 namespace {
 
 constexpr double kMillimetresPerNanometre = 1e-6;
-constexpr int kLargestGrid = 4096;       // 4096² doubles: 128 MiB per buffer
+constexpr int kLargestGrid = 4096;          // 4096² doubles: 128 MiB per buffer
 constexpr double kLeastPupilSamples = 160;  // across the pupil's diameter
 constexpr int kPupilSupersamples = 4;       // per axis, for the antialiased pupil edge
 constexpr double kFadeStart = 0.75;         // of the radius
@@ -63,7 +63,8 @@ PupilPattern pattern_for(const DiffractionOptics& o, int radius_px, double short
       std::min(0.5, smaller_pixel / (2 * longest_nm * kMillimetresPerNanometre * o.f_number));
   // Tiny pixels under a wide pattern: keep the pupil resolved within the largest grid.
   spacing = std::max(spacing, kLeastPupilSamples / kLargestGrid);
-  double reach = (radius_px + 1) * larger_pixel / (shortest_nm * kMillimetresPerNanometre * o.f_number);
+  double reach =
+      (radius_px + 1) * larger_pixel / (shortest_nm * kMillimetresPerNanometre * o.f_number);
   int size = even_fft_size(std::max(2 * reach, kLeastPupilSamples) / spacing);
   return pupil_pattern(o.pupil, size, spacing);
 }
@@ -74,7 +75,8 @@ struct SummedArea {
   int size;
   std::vector<double> sums;
 
-  explicit SummedArea(const PupilPattern& p) : size(p.size), sums(size_t(p.size + 1) * (p.size + 1)) {
+  explicit SummedArea(const PupilPattern& p)
+      : size(p.size), sums(size_t(p.size + 1) * (p.size + 1)) {
     const int n = size + 1;
     for (int j = 0; j < size; ++j) {
       double row = 0;
@@ -100,7 +102,8 @@ struct SummedArea {
 double fade(double distance_over_radius) {
   if (distance_over_radius <= kFadeStart) return 1;
   if (distance_over_radius >= 1) return 0;
-  double c = std::cos(0.5 * std::numbers::pi * (distance_over_radius - kFadeStart) / (1 - kFadeStart));
+  double c =
+      std::cos(0.5 * std::numbers::pi * (distance_over_radius - kFadeStart) / (1 - kFadeStart));
   return c * c;
 }
 
@@ -123,9 +126,8 @@ Image sensor_psf(const DiffractionOptics& o, int radius_px, const std::vector<Ba
   const double centre = area.size / 2 + 0.5;  // the cell of the pattern's centre spans [c, c + 1]
   const double larger_pixel = std::max(o.pixel_width_mm, o.pixel_height_mm);
   // How far (in pixels of the larger pitch) the grid reaches at the shortest wavelength.
-  const double grid_reach_px =
-      (0.5 * area.size - 1) * pattern_spacing * shortest * kMillimetresPerNanometre * o.f_number /
-      larger_pixel;
+  const double grid_reach_px = (0.5 * area.size - 1) * pattern_spacing * shortest *
+                               kMillimetresPerNanometre * o.f_number / larger_pixel;
   const double fade_radius = std::min(double(radius_px), grid_reach_px);
   tbb::parallel_for(tbb::blocked_range<int>(0, side), [&](const tbb::blocked_range<int>& rows) {
     std::vector<double> top(side + 1), bottom(side + 1);
@@ -148,7 +150,8 @@ Image sensor_psf(const DiffractionOptics& o, int radius_px, const std::vector<Ba
         }
       }
       for (int column = 0; column < side; ++column) {
-        double distance = std::hypot((column - radius_px) * o.pixel_width_mm, b * o.pixel_height_mm);
+        double distance =
+            std::hypot((column - radius_px) * o.pixel_width_mm, b * o.pixel_height_mm);
         double f = fade(distance / (fade_radius * larger_pixel));
         for (int c = 0; c < channels; ++c) out[column * channels + c] *= f;
       }
@@ -167,7 +170,8 @@ Image sensor_psf(const DiffractionOptics& o, int radius_px, const std::vector<Ba
 
 PupilPattern pupil_pattern(const PupilShape& pupil, int size, double spacing) {
   if (size < 16 || size % 2 != 0)
-    throw Error("pupil pattern", "grid size must be even and at least 16; got " + std::to_string(size));
+    throw Error("pupil pattern",
+                "grid size must be even and at least 16; got " + std::to_string(size));
   if (!(spacing > 0 && spacing <= 0.5))
     throw Error("pupil pattern", "spacing must be in (0, 0.5]; got " + number_text(spacing));
   FourierPlane plane(size, size);
@@ -227,7 +231,8 @@ PupilPattern pupil_pattern(const PupilShape& pupil, int size, double spacing) {
 Image monochromatic_psf(const DiffractionOptics& optics, double wavelength_nm, int radius_px) {
   validate(optics, radius_px);
   if (!(wavelength_nm > 0) || !std::isfinite(wavelength_nm))
-    throw Error("diffraction PSF", "wavelength must be positive; got " + number_text(wavelength_nm));
+    throw Error("diffraction PSF",
+                "wavelength must be positive; got " + number_text(wavelength_nm));
   Image psf = sensor_psf(optics, radius_px, {Band{wavelength_nm, {1, 0, 0}}}, 1);
   psf.channel_names = {"Y"};
   return psf;

@@ -31,8 +31,9 @@
 namespace obscura {
 
 // The aperture's shape on the unit disk (its size comes from the f-number): true where light
-// passes; convex (a disc or a regular polygon), which the antialiasing of its edge assumes. A predicate, so that film/ need not know the camera's blades (render/camera_glare.h
-// hands over the camera's aperture). x right, y up, seen from the sensor.
+// passes; convex (a disc or a regular polygon), which the antialiasing of its edge assumes. A
+// predicate, so that film/ need not know the camera's blades (render/camera_glare.h hands over the
+// camera's aperture). x right, y up, seen from the sensor.
 using PupilShape = std::function<bool(double x, double y)>;
 
 struct DiffractionOptics {

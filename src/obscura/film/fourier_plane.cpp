@@ -23,7 +23,9 @@ std::mutex& planner_mutex() {
   return mutex;
 }
 
-fftw_complex* as_fftw(double* p) { return reinterpret_cast<fftw_complex*>(p); }
+fftw_complex* as_fftw(double* p) {
+  return reinterpret_cast<fftw_complex*>(p);
+}
 
 }  // namespace
 
@@ -46,7 +48,9 @@ struct FourierPlane::Plans {
   }
 };
 
-void FourierPlane::FreeFftw::operator()(double* p) const { fftw_free(p); }
+void FourierPlane::FreeFftw::operator()(double* p) const {
+  fftw_free(p);
+}
 
 FourierPlane::FourierPlane(int width, int height) : width_(width), height_(height) {
   if (width < 2 || height < 1)
@@ -55,7 +59,8 @@ FourierPlane::FourierPlane(int width, int height) : width_(width), height_(heigh
   pitch_ = (spectrum_width() + kColumnBlock - 1) / kColumnBlock * kColumnBlock;
   size_t doubles = size_t(height) * 2 * pitch_;
   data_.reset(static_cast<double*>(fftw_malloc(doubles * sizeof(double))));
-  if (!data_) throw Error("FourierPlane", "out of memory for " + std::to_string(doubles) + " doubles");
+  if (!data_)
+    throw Error("FourierPlane", "out of memory for " + std::to_string(doubles) + " doubles");
   fill_zero();
   plans_ = std::make_unique<Plans>();
   double* base = data_.get();

@@ -79,17 +79,20 @@ void convolve_with_psf(Image& image, const Image& psf) {
       kernel.forward();
     }
     light.fill_zero();
-    tbb::parallel_for(tbb::blocked_range<int>(0, image.height), [&](const tbb::blocked_range<int>& rows) {
-      for (int y = rows.begin(); y < rows.end(); ++y)
-        for (int x = 0; x < image.width; ++x) light.row(y)[x] = image.at(x, y, c);
-    });
+    tbb::parallel_for(tbb::blocked_range<int>(0, image.height),
+                      [&](const tbb::blocked_range<int>& rows) {
+                        for (int y = rows.begin(); y < rows.end(); ++y)
+                          for (int x = 0; x < image.width; ++x) light.row(y)[x] = image.at(x, y, c);
+                      });
     light.forward();
     light.multiply(kernel, normalisation);
     light.inverse();
-    tbb::parallel_for(tbb::blocked_range<int>(0, image.height), [&](const tbb::blocked_range<int>& rows) {
-      for (int y = rows.begin(); y < rows.end(); ++y)
-        for (int x = 0; x < image.width; ++x) image.at(x, y, c) = float(light.row(y)[x]);
-    });
+    tbb::parallel_for(tbb::blocked_range<int>(0, image.height),
+                      [&](const tbb::blocked_range<int>& rows) {
+                        for (int y = rows.begin(); y < rows.end(); ++y)
+                          for (int x = 0; x < image.width; ++x)
+                            image.at(x, y, c) = float(light.row(y)[x]);
+                      });
   }
 }
 

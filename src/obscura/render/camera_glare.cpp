@@ -15,7 +15,10 @@ DiffractionOptics diffraction_optics(const Camera& camera) {
   const Vector2d film_mm = camera.film_size_mm();
   const Aperture aperture = camera.lens.aperture;
   return DiffractionOptics{
-      .pupil = [aperture](double x, double y) { return aperture_contains(aperture, {x, y}); },
+      .pupil =
+          [aperture](double x, double y) {
+            return aperture_contains(aperture, {x, y});
+          },
       .f_number = camera.image_distance_mm() / aperture_diameter_mm(camera.lens, focal_length),
       .pixel_width_mm = film_mm.x / camera.film.width_px,
       .pixel_height_mm = film_mm.y / camera.film.height_px};
