@@ -179,9 +179,8 @@ TEST_F(JsonScene, VignettingAndGlareArriveWhereTheyBelong) {
                {"$.cameras[0].vignetting.barel_diameter_mm"});
   expect_error(R"({"render": {"glare": -1}})", {"$.render.glare"});
   // 50 mm f/2 is a 25 mm aperture: a 20 mm barrel would be the aperture.
-  expect_error(
-      R"({"cameras": [{"f_number": 2, "vignetting": {"barrel_diameter_mm": 20}}]})",
-      {"barrel_diameter_mm", "aperture diameter"});
+  expect_error(R"({"cameras": [{"f_number": 2, "vignetting": {"barrel_diameter_mm": 20}}]})",
+               {"barrel_diameter_mm", "aperture diameter"});
 }
 
 TEST_F(JsonScene, MalformedJsonGivesLineAndColumn) {
