@@ -170,8 +170,8 @@ class PreparedCamera {
   double window_width_ = 0, window_height_ = 0;
   double width_px_ = 0, height_px_ = 0;
   double lens_radius_m_ = 0;
-  double focal_length_mm_ = 0, film_width_mm_ = 0;         // what the circle of confusion needs
-  double aperture_radius_mm_ = 0;  // what vignetting needs
+  double focal_length_mm_ = 0, film_width_mm_ = 0;  // what the circle of confusion needs
+  double aperture_radius_mm_ = 0;                   // what vignetting needs
   ApertureChords aperture_chords_;
   const Transform* fixed_world_from_camera_ = nullptr;     // a camera that does not move
   std::optional<LensMap> lens_map_;                        // a calibrated camera's
