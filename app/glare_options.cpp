@@ -8,7 +8,7 @@ void add_glare_options(CLI::App& render, GlareOptions& o) {
   render.add_flag("--glare", o.on,
                   "Diffraction glare: spread the HDR frame by the aperture's point-spread "
                   "function (Airy pattern, or a starburst with --aperture-blades), either "
-                  "renderer; perspective cameras");
+                  "renderer; perspective and lens-system cameras");
   render
       .add_option("--glare-strength", o.strength,
                   "Scale of the light the glare spreads (1 = the aperture's own diffraction, "

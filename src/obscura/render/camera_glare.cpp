@@ -3,25 +3,34 @@
 #include <variant>
 
 #include "obscura/camera/aperture.h"
+#include "obscura/camera/lens_system_projection.h"
 #include "obscura/camera/thin_lens.h"
 #include "obscura/math/error.h"
 
 namespace obscura {
 
 DiffractionOptics diffraction_optics(const Camera& camera) {
+  const Aperture aperture = camera.lens.aperture;
+  DiffractionOptics optics{.pupil = [aperture](double x, double y) {
+    return aperture_contains(aperture, {x, y});
+  }};
+  if (auto* lens_system = std::get_if<LensSystemProjection>(&camera.projection)) {
+    // The sensor's width spans the image; the stop's f-number (the working one at infinity).
+    double sensor_height_mm = lens_system->sensor_width_mm / camera.film.image_aspect();
+    optics.f_number = camera.f_number();
+    optics.pixel_width_mm = lens_system->sensor_width_mm / camera.film.width_px;
+    optics.pixel_height_mm = sensor_height_mm / camera.film.height_px;
+    return optics;
+  }
   if (!std::holds_alternative<Perspective>(camera.projection))
-    throw Error("glare", "needs a perspective camera (its sensor gives the pixel pitch)");
+    throw Error("glare",
+                "needs a perspective or lens-system camera (its sensor gives the pixel pitch)");
   const double focal_length = camera.focal_length_mm();
   const Vector2d film_mm = camera.film_size_mm();
-  const Aperture aperture = camera.lens.aperture;
-  return DiffractionOptics{
-      .pupil =
-          [aperture](double x, double y) {
-            return aperture_contains(aperture, {x, y});
-          },
-      .f_number = camera.image_distance_mm() / aperture_diameter_mm(camera.lens, focal_length),
-      .pixel_width_mm = film_mm.x / camera.film.width_px,
-      .pixel_height_mm = film_mm.y / camera.film.height_px};
+  optics.f_number = camera.image_distance_mm() / aperture_diameter_mm(camera.lens, focal_length);
+  optics.pixel_width_mm = film_mm.x / camera.film.width_px;
+  optics.pixel_height_mm = film_mm.y / camera.film.height_px;
+  return optics;
 }
 
 Image glare_psf(const Camera& camera, const GlareSettings& settings) {

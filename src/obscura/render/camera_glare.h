@@ -12,9 +12,9 @@
 namespace obscura {
 
 // The pupil is the camera's aperture (blades and rotation); the working f-number is the image
-// distance over the aperture diameter (N at infinity focus, a little more focused close); the
-// pitch is the sensor area the image covers over its pixels. Throws obscura::Error for a camera
-// other than perspective (no sensor to measure the pixels on).
+// distance over the aperture diameter (N at infinity focus, a little more focused close; a lens
+// system's f-number); the pitch is the sensor area the image covers over its pixels. Throws
+// obscura::Error for other cameras (no sensor to measure the pixels on).
 DiffractionOptics diffraction_optics(const Camera& camera);
 
 // The camera's colour PSF with the settings' strength applied.
