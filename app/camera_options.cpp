@@ -136,6 +136,21 @@ void apply_lens_overrides(Camera& camera, const CameraOverrides& o) {
   }
   if (o.aperture_rotation_degrees)
     camera.lens.aperture.rotation_degrees = *o.aperture_rotation_degrees;
+  if (o.natural_vignetting || o.lens_barrel) {
+    perspective_for(camera, o.natural_vignetting ? "--natural-vignetting" : "--lens-barrel");
+    if (o.natural_vignetting) camera.lens.vignetting.natural = true;
+  }
+  if (o.lens_barrel) {
+    std::vector<double> v =
+        parse_list(*o.lens_barrel, ':', 2, "--lens-barrel", "DIAMETER:DISTANCE in mm (40:30)");
+    if (!(v[0] > 0) || !(v[1] >= 0))
+      throw UsageError(
+          "--lens-barrel: the diameter must be positive and the distance not "
+          "negative; got '" +
+          *o.lens_barrel + "'");
+    camera.lens.vignetting.barrel_diameter_mm = v[0];
+    camera.lens.vignetting.barrel_distance_mm = v[1];
+  }
 }
 
 }  // namespace
@@ -250,6 +265,16 @@ void add_camera_options(CLI::App& command, CameraOverrides& o) {
       .add_option("--focus-breathing", o.focus_breathing,
                   "on (default): the sensor moves to the image distance as a real lens focuses; "
                   "off: the field of view stays fixed (Blender Cycles' and pbrt's convention)")
+      ->group(group);
+  command
+      .add_flag("--natural-vignetting", o.natural_vignetting,
+                "Thin lens: cos^4 falloff of the light towards the image corners")
+      ->group(group);
+  command
+      .add_option("--lens-barrel", o.lens_barrel,
+                  "Thin lens: mechanical vignetting by a barrel opening DIAMETER:DISTANCE (mm, "
+                  "in front of the aperture; diameter >= the aperture's): cat-eye bokeh, darker "
+                  "corners")
       ->group(group);
   command
       .add_option("--aperture-rotation", o.aperture_rotation_degrees,

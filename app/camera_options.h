@@ -25,6 +25,8 @@ struct CameraOverrides {
   std::optional<double> f_number, focus_distance_m, aperture_rotation_degrees;
   std::optional<int> aperture_blades;
   std::optional<std::string> focus_breathing;  // on | off
+  bool natural_vignetting = false;             // cos⁴
+  std::optional<std::string> lens_barrel;      // "DIAMETER:DISTANCE" in mm (mechanical vignetting)
   std::optional<std::string> shutter;  // "OPEN:CLOSE" in seconds, fractions allowed (0:1/60)
   // "LINE_TIME[:READOUT]": a rolling shutter's line time in seconds and its readout order.
   std::optional<std::string> rolling_shutter;

@@ -11,6 +11,7 @@
 #include "obscura/io/image_io.h"
 #include "obscura/io/scene_loader.h"
 #include "obscura/raster/ground_truth_render.h"
+#include "obscura/render/camera_glare.h"
 #include "obscura/scene/material_variants.h"
 #include "option_ranges.h"
 #include "usage_error.h"
@@ -81,6 +82,10 @@ Scene prepare_scene(RenderOptions& options, bool writes_output) {
   scene.camera = resolve_camera(scene, options.camera, options.width, options.height);
   scene.camera.shutter = shutter_at_time(options.choice, scene.camera.shutter);
   scene.validate();
+  if (auto glare = glare_settings(options.glare, scene.render)) {
+    validate(*glare);  // a camera without a sensor fails here, before rendering
+    diffraction_optics(scene.camera);
+  }
   if (!options.ground_truth.path.empty() || options.ground_truth.flow_times) {
     ground_truth_times(options.ground_truth, scene.camera);  // a bad value fails here, early
     if (writes_output) check_ground_truth_output(options.ground_truth, options.output, scene);
@@ -124,6 +129,7 @@ RenderedFrame render_frame(const Scene& scene, const RenderOptions& options, con
   frame.renderer = settings.renderer;
   frame.film_sums = film.sums();
   frame.post_dof_depth = std::move(stats.post_dof_depth);
+  frame.glare = glare_settings(options.glare, scene.render);
   frame.progress = {.end = stats.cancelled                     ? RenderEnd::kInterrupted
                            : stats.time_limited && !open_ended ? RenderEnd::kTimeLimit
                                                                : RenderEnd::kComplete,
@@ -153,7 +159,9 @@ void gather_frame(Team& team, RenderedFrame& frame) {
 Image finished_image(const RenderedFrame& frame, const Camera& camera) {
   Film film = Film::from_sums(frame.film_sums);
   if (frame.post_dof_depth) raster::apply_depth_of_field_post(film, *frame.post_dof_depth, camera);
-  return film.to_image();
+  Image image = film.to_image();
+  if (frame.glare) apply_glare(image, camera, *frame.glare);
+  return image;
 }
 
 void write_frame(const RenderOptions& options, const std::string& output,

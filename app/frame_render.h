@@ -8,6 +8,7 @@
 #include <vector>
 
 #include "obscura/film/aov_buffers.h"
+#include "obscura/film/glare.h"
 #include "obscura/film/image.h"
 #include "obscura/film/tiles.h"
 #include "obscura/film/work_share.h"
@@ -25,6 +26,8 @@ struct RenderedFrame {
   std::optional<AovBuffers> aovs;
   // The rasterizer's --raster-dof post on a frame in parts: applied once it is assembled.
   std::optional<Image> post_dof_depth;
+  // Diffraction glare, applied to the assembled frame (after the depth-of-field post).
+  std::optional<GlareSettings> glare;
   RenderProgress progress;
   std::vector<std::string> warnings;
   double seconds = 0;               // this process's

@@ -9,6 +9,7 @@
 #include "camera_options.h"
 #include "display_options.h"
 #include "frame_render.h"
+#include "glare_options.h"
 #include "image_limit_option.h"
 #include "obscura/io/default_environment.h"
 #include "obscura/io/image_io.h"
@@ -105,6 +106,10 @@ void run_render(RenderOptions options, const std::string& job) {
           "--shard: --raster-dof post blurs the whole frame, which no part has; "
           "use --raster-dof accumulate, or render the frame in one process or "
           "under mpirun");
+    if (options.glare.on || options.glare.strength)
+      throw UsageError(
+          "--shard: --glare spreads light across the whole frame, which no part has; render "
+          "the frame in one process or under mpirun");
     if (!options.ground_truth.path.empty())
       throw UsageError(
           "--ground-truth is not written by --shard parts: render the ground truth in one "
@@ -230,6 +235,7 @@ void add_render_command(CLI::App& app) {
   add_tracer_options(*render, options->tracer);
   add_raster_options(*render, options->raster);
   add_raster_effects_options(*render, options->raster_effects);
+  add_glare_options(*render, options->glare);
   add_ground_truth_options(*render, options->ground_truth);
   render->add_option("--shard", options->shard,
                      "Render part I of N of the frame (I counted from 0) to a partial film, an "

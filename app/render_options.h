@@ -6,6 +6,7 @@
 
 #include "camera_options.h"
 #include "display_options.h"
+#include "glare_options.h"
 #include "ground_truth_output.h"
 #include "raster_effects_options.h"
 #include "raster_options.h"
@@ -35,6 +36,7 @@ struct RenderOptions {
   TracerOptions tracer;
   RasterOptions raster;
   RasterEffectsOptions raster_effects;
+  GlareOptions glare;               // --glare, --glare-strength, --glare-radius
   GroundTruthOptions ground_truth;  // --ground-truth, --flow-times
   // Which options were given on the command line: those override the scene file's settings.
   bool width_given = false, height_given = false, spp_given = false, seed_given = false;

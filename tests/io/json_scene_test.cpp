@@ -165,6 +165,24 @@ TEST_F(JsonScene, UnknownKeyNamesTheKeyAndItsPath) {
   expect_error(R"({"cameras": [{"position": [0, 0, 1], "fov": 40}]})", {"$.cameras[0].fov"});
 }
 
+TEST_F(JsonScene, VignettingAndGlareArriveWhereTheyBelong) {
+  Scene scene = load_scene_file(write("scene.json", R"({
+    "render": {"glare": 2.5, "glare_radius": 64},
+    "cameras": [{"f_number": 2, "vignetting": {"natural": true, "barrel_diameter_mm": 30,
+                                               "barrel_distance_mm": 40}}]})"));
+  EXPECT_EQ(scene.render.glare_strength, 2.5);
+  EXPECT_EQ(scene.render.glare_radius_px, 64);
+  EXPECT_TRUE(scene.camera.lens.vignetting.natural);
+  EXPECT_EQ(scene.camera.lens.vignetting.barrel_diameter_mm, 30);
+  EXPECT_EQ(scene.camera.lens.vignetting.barrel_distance_mm, 40);
+  expect_error(R"({"cameras": [{"vignetting": {"natural": true, "barel_diameter_mm": 3}}]})",
+               {"$.cameras[0].vignetting.barel_diameter_mm"});
+  expect_error(R"({"render": {"glare": -1}})", {"$.render.glare"});
+  // 50 mm f/2 is a 25 mm aperture: a 20 mm barrel would be the aperture.
+  expect_error(R"({"cameras": [{"f_number": 2, "vignetting": {"barrel_diameter_mm": 20}}]})",
+               {"barrel_diameter_mm", "aperture diameter"});
+}
+
 TEST_F(JsonScene, MalformedJsonGivesLineAndColumn) {
   expect_error("{\n  \"name\": \"x\",\n  \"objects\": [,]\n}", {"scene.json:3:", "malformed JSON"});
 }

@@ -56,6 +56,28 @@ bool aperture_contains(const Aperture& a, Point2d p) {
   return true;
 }
 
+std::pair<double, double> aperture_chord(const Aperture& a, double x) {
+  if (a.blades == 0) {
+    double h = std::sqrt(std::max(0.0, 1 - x * x));
+    return std::abs(x) <= 1 ? std::pair{-h, h} : std::pair{1.0, -1.0};
+  }
+  // Inside = left of every counter-clockwise edge v0 → v1: e_x·(y − v0.y) ≥ e_y·(x − v0.x),
+  // a lower bound on y where the edge runs rightwards, an upper one where it runs leftwards.
+  double low = -2, high = 2;
+  for (int k = 0; k < a.blades; ++k) {
+    Point2d v0 = polygon_vertex(a, k), v1 = polygon_vertex(a, k + 1);
+    double ex = v1.x - v0.x, ey = v1.y - v0.y;
+    double bound_offset = ey * (x - v0.x);
+    if (ex > 0)
+      low = std::max(low, v0.y + bound_offset / ex);
+    else if (ex < 0)
+      high = std::min(high, v0.y + bound_offset / ex);
+    else if (-ey * (x - v0.x) < 0)
+      return {1.0, -1.0};  // a vertical edge with x on its outside
+  }
+  return {low, high};
+}
+
 double aperture_area(const Aperture& a) {
   if (a.blades == 0) return std::numbers::pi;
   return 0.5 * a.blades * std::sin(2 * std::numbers::pi / a.blades);

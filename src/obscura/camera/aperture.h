@@ -2,6 +2,8 @@
 // circle, or a regular polygon of B straight blades turned by a rotation.
 #pragma once
 
+#include <utility>
+
 #include "obscura/math/vector.h"
 
 namespace obscura {
@@ -17,6 +19,9 @@ struct Aperture {
 Point2d sample_aperture(const Aperture& a, Point2d u);
 // Whether p (unit-circle coordinates) lies inside the aperture, boundary included.
 bool aperture_contains(const Aperture& a, Point2d p);
+// The aperture's extent along y at abscissa x (unit-circle coordinates): [first, second], empty
+// (first > second) where x misses the shape.
+std::pair<double, double> aperture_chord(const Aperture& a, double x);
 // Area of the aperture inscribed in the unit circle: π for the circle, (B/2)·sin(2π/B) for B
 // blades.
 double aperture_area(const Aperture& a);

@@ -13,6 +13,7 @@ namespace obscura {
 namespace {
 
 constexpr double kMetresPerMillimetre = 0.001;
+constexpr double kMillimetresPerMetre = 1000;
 constexpr double kDegreesPerRadian = 180 / 3.14159265358979323846;
 
 // The fisheye's image circle touches the shorter side of the image; its radius in raster units
@@ -282,6 +283,9 @@ PreparedCamera::PreparedCamera(const Camera& camera, bool for_many_rays) : camer
   lens_radius_m_ = camera.lens_radius_m();
   focal_length_mm_ = camera.focal_length_mm();
   film_width_mm_ = camera.film_size_mm().x;
+  if (focal_length_mm_ > 0)
+    aperture_radius_mm_ = 0.5 * aperture_diameter_mm(camera.lens, focal_length_mm_);
+  if (camera.lens.vignetting.mechanical()) aperture_chords_ = aperture_chords(camera.lens.aperture);
   if (auto* c = std::get_if<CalibratedProjection>(&camera.projection)) {
     lens_map_.emplace(lens_map(*c));  // a copy of this thread's, not built again
     auto* pinhole = std::get_if<PinholeDistortion>(&c->lens);
@@ -351,12 +355,18 @@ std::optional<CameraRay> PreparedCamera::generate_ray(Point2d film_point, Point2
   };
   auto pinhole_or_lens = [&](Point2d w) {
     Vector3d pinhole(w.x, w.y, -1);
-    if (!lens.depth_of_field) return LocalRay{{0, 0, 0}, normalize(pinhole), 0};
+    const Vignetting& vignetting = lens.vignetting;
+    double natural = vignetting.natural ? natural_vignetting(w) : 1;
+    if (!lens.depth_of_field)  // the barrel's share of the whole aperture, as a weight
+      return LocalRay{{0, 0, 0}, normalize(pinhole), 0, natural * relative_barrel_share(w)};
     // Every lens point aims at the point of the focus plane that the pinhole ray reaches.
     Point3d focus = Point3d(0, 0, 0) + pinhole * lens.focus_distance_m;
     Point2d l = sample_aperture(lens.aperture, lens_sample);
     Point3d origin(lens_radius_m_ * l.x, lens_radius_m_ * l.y, 0);
-    return LocalRay{origin, normalize(focus - origin), 0};
+    // The barrel keeps this lens point's ray or stops it: the cat-eye, sample by sample.
+    bool kept = passes_barrel(vignetting, {aperture_radius_mm_ * l.x, aperture_radius_mm_ * l.y}, w,
+                              lens.focus_distance_m * kMillimetresPerMetre);
+    return LocalRay{origin, normalize(focus - origin), 0, kept ? natural : 0};
   };
   std::optional<LocalRay> local = std::visit(
       Overloaded{
@@ -424,6 +434,23 @@ Point2d PreparedCamera::window_from_raster(Point2d raster) const {
 Point2d PreparedCamera::raster_from_window(Point2d p) const {
   return {(p.x - window_.x_min) / window_width_ * width_px_,
           (window_.y_max - p.y) / window_height_ * height_px_};
+}
+
+double PreparedCamera::relative_barrel_share(Point2d window) const {
+  const ThinLens& lens = camera_->lens;
+  return barrel_transmission(lens.vignetting, aperture_chords_, aperture_radius_mm_, window,
+                             lens.focus_distance_m * kMillimetresPerMetre);
+}
+
+double PreparedCamera::relative_illumination(Point2d film_point) const {
+  const Vignetting& v = camera_->lens.vignetting;
+  if (!v.any() || !std::holds_alternative<Perspective>(camera_->projection)) return 1;
+  Point2d w = window_from_raster(film_point);
+  return (v.natural ? natural_vignetting(w) : 1) * relative_barrel_share(w);
+}
+
+double Camera::relative_illumination(Point2d film_point) const {
+  return prepare().relative_illumination(film_point);
 }
 
 double PreparedCamera::circle_of_confusion_px(double depth_m) const {

@@ -124,6 +124,10 @@ struct Camera {
   LensSettings lens_system_settings() const;
   double f_number() const;
   double exposure_scale() const;  // see exposure.h
+  // The thin lens's vignetting at raster point `film_point` (vignetting.h): cos⁴θ if natural,
+  // times the share of the aperture the barrel leaves if mechanical; the mean of the tracer's
+  // ray weights over the lens there. 1 without vignetting or for other projections.
+  double relative_illumination(Point2d film_point) const;
 
   // --- rolling shutter (shutter.h) ---
   // How long after the shutter opens the sensor line through raster point `film_point` starts
@@ -164,6 +168,7 @@ class PreparedCamera {
   Point2d window_from_raster(Point2d raster) const;
   Point2d raster_from_window(Point2d window) const;
   double circle_of_confusion_px(double depth_m) const;
+  double relative_illumination(Point2d film_point) const;
   Transform world_from_camera(double time_s) const;
 
  private:
@@ -172,7 +177,9 @@ class PreparedCamera {
   double window_width_ = 0, window_height_ = 0;
   double width_px_ = 0, height_px_ = 0;
   double lens_radius_m_ = 0;
-  double focal_length_mm_ = 0, film_width_mm_ = 0;         // what the circle of confusion needs
+  double focal_length_mm_ = 0, film_width_mm_ = 0;  // what the circle of confusion needs
+  double aperture_radius_mm_ = 0;                   // what vignetting needs
+  ApertureChords aperture_chords_;
   const Transform* fixed_world_from_camera_ = nullptr;     // a camera that does not move
   std::optional<LensMap> lens_map_;                        // a calibrated camera's
   std::shared_ptr<const FocusedLensSystem> focused_lens_;  // a lens-system camera's
@@ -186,6 +193,8 @@ class PreparedCamera {
   int start_columns_ = 0, start_rows_ = 0;
   std::vector<Point2d> starts_;
   std::optional<Point2d> start_at(Point2d film_point) const;
+  // The share of the aperture the lens barrel leaves at window point w (1 without a barrel).
+  double relative_barrel_share(Point2d window) const;
 };
 
 }  // namespace obscura

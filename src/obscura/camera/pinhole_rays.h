@@ -20,7 +20,7 @@ class PinholeRays {
   // Rays for `camera` when it is such a pinhole; nothing otherwise.
   static std::optional<PinholeRays> of(const Camera& camera) {
     if (!std::holds_alternative<Perspective>(camera.projection) || camera.lens.depth_of_field ||
-        camera.world_from_camera.is_animated())
+        camera.lens.vignetting.any() || camera.world_from_camera.is_animated())
       return std::nullopt;
     return PinholeRays(camera);
   }

@@ -53,6 +53,8 @@ void validate(const ThinLens& lens, double focal_length_mm) {
                 "must exceed the focal length (" + number_text(focal_length_mm) +
                     " mm) to focus; got " + number_text(lens.focus_distance_m) + " m");
   validate(lens.aperture);
+  validate(lens.vignetting, aperture_diameter_mm(lens, focal_length_mm),
+           lens.focus_distance_m * kMillimetresPerMetre);
 }
 
 }  // namespace obscura

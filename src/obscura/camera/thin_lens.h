@@ -13,6 +13,7 @@
 #include <optional>
 
 #include "obscura/camera/aperture.h"
+#include "obscura/camera/vignetting.h"
 
 namespace obscura {
 
@@ -27,6 +28,8 @@ struct ThinLens {
   // renderers that keep the field of view fixed (Cycles, pbrt), to match their images.
   bool focus_breathing = true;
   Aperture aperture;
+  // Natural (cos⁴) and mechanical (lens barrel, cat-eye) vignetting; off by default.
+  Vignetting vignetting;
 };
 
 // A = f / N, or the given diameter.

@@ -36,6 +36,11 @@ class Film {
     return px.weight_sum != 0 ? px.weighted_sum / px.weight_sum : Rgb();
   }
   float weight(Point2i p) const { return pixels_[index(p)].weight_sum; }
+  // Multiplies a pixel's light (not its weight) by `factor`: a gain applied after rendering.
+  void scale_pixel(Point2i pixel, float factor) {
+    Pixel& p = pixels_[index(pixel)];
+    p.weighted_sum = p.weighted_sum * factor;
+  }
 
   // The film as a linear RGB image.
   Image to_image() const;

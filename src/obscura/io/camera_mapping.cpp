@@ -157,6 +157,13 @@ Camera camera_from_json(JsonReader& json) {
   c.lens.aperture.rotation_degrees = json.number("aperture_rotation_degrees", 0);
   // A lens system always has depth of field; its f-number is its own (lens_system_from_json).
   if (std::holds_alternative<LensSystemProjection>(c.projection)) c.lens.depth_of_field = false;
+  if (json.has("vignetting")) {
+    JsonReader v = json.object("vignetting");
+    c.lens.vignetting.natural = v.boolean("natural", false);
+    c.lens.vignetting.barrel_diameter_mm = v.number_in("barrel_diameter_mm", 0, 0, 1e5);
+    c.lens.vignetting.barrel_distance_mm = v.number_in("barrel_distance_mm", 0, 0, 1e5);
+    v.finish();
+  }
   c.shutter.open_s = json.number("shutter_open", c.shutter.open_s);
   c.shutter.close_s = json.number("shutter_close", c.shutter.close_s);
   c.shutter.line_time_s = json.number_in("rolling_shutter_line_time", 0, 0, 1);

@@ -62,6 +62,9 @@ class JsonSceneReader {
       scene_.render.samples_per_pixel = json.integer("spp", 0, 1, kMaxSamplesPerPixel);
     if (json.has("seed")) scene_.render.seed = uint64_t(json.integer("seed", 0, 0, 1 << 30));
     if (json.has("spectral")) scene_.render.spectral = json.boolean("spectral", false);
+    if (json.has("glare")) scene_.render.glare_strength = json.number_in("glare", 1, 0, 1000);
+    if (json.has("glare_radius"))
+      scene_.render.glare_radius_px = json.integer("glare_radius", 256, 1, 4096);
     json.finish();
   }
 

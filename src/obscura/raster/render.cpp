@@ -8,6 +8,7 @@
 #include "obscura/raster/depth_of_field_post.h"
 #include "obscura/raster/lens_warp.h"
 #include "obscura/raster/rolling_shutter.h"
+#include "obscura/raster/vignetting_gain.h"
 
 namespace obscura::raster {
 
@@ -174,6 +175,7 @@ RenderStats render(const Scene& scene, const Camera& camera, const RenderSetting
     apply_depth_of_field_post(film, *stats.post_dof_depth, camera);
     stats.post_dof_depth.reset();
   }
+  apply_vignetting(film, camera);
   stats.seconds = seconds_since(start);
   return stats;
 }

@@ -30,6 +30,9 @@ struct SceneRenderSettings {
   std::optional<int> samples_per_pixel;
   std::optional<uint64_t> seed;
   std::optional<bool> spectral;  // spectral light transport (path tracer)
+  // Diffraction glare (render/camera_glare.h): its strength (1 = the aperture's own) and radius.
+  std::optional<double> glare_strength;
+  std::optional<int> glare_radius_px;
 };
 
 // Counts for `obscura info` and benchmarks.

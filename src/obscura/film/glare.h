@@ -1,0 +1,38 @@
+// Diffraction glare as a post-process of the HDR film: every pixel's light spread by the
+// optics' point-spread function (film/diffraction_psf.h), which is what turns a bright light into
+// an Airy halo or a starburst. Applied to linear, scene-referred pixels before develop: on
+// display values the lights have already been clipped and would lose the energy that glares.
+//
+// The convolution is an FFT product on a grid padded by the PSF's radius (fft_friendly_size),
+// so nothing wraps around: the image is zero outside its frame, light spread beyond the frame
+// leaves it and none comes in from outside (the sensor's edge), so the sum of the image is kept
+// exactly only for light farther than the radius from every edge.
+#pragma once
+
+#include "obscura/film/image.h"
+
+namespace obscura {
+
+struct GlareSettings {
+  // Scale of the light the PSF carries out of a point's own pixel: 1 is the aperture's own
+  // diffraction (physical), 0 none, above 1 a stronger glare than the optics make (artistic, as
+  // lenses with dirt or a star filter show). The pixel keeps its share and the PSF is normalised
+  // again, so light is conserved at any strength. In [0, 1000].
+  double strength = 1;
+  // Where the PSF is cut off (faded over its outer quarter), in pixels; 1…4096.
+  int radius_px = 256;
+};
+
+// Throws obscura::Error naming the field and its value when out of range.
+void validate(const GlareSettings& settings);
+
+// The PSF (odd square, the point's pixel at the centre, each channel summing to 1) with its
+// light outside the centre pixel scaled by `strength`, each channel normalised again.
+Image scale_scattered_light(const Image& psf, double strength);
+
+// Convolves the first three channels of `image` with `psf` (odd square; 1 channel for all three
+// or 3, one per channel). Deterministic and thread-count independent. Throws obscura::Error for
+// an image with fewer than 3 channels or a PSF that is not an odd square of 1 or 3 channels.
+void convolve_with_psf(Image& image, const Image& psf);
+
+}  // namespace obscura

@@ -1,0 +1,24 @@
+#include "obscura/raster/vignetting_gain.h"
+
+#include <tbb/blocked_range.h>
+#include <tbb/parallel_for.h>
+
+namespace obscura::raster {
+
+void apply_vignetting(Film& film, const Camera& camera) {
+  if (!camera.lens.vignetting.any()) return;
+  const PreparedCamera prepared = camera.prepare();
+  const Bounds2i crop = camera.film.crop_pixels();
+  // Per pixel: the barrel's share changes quickly where a strong barrel cuts in, faster than an
+  // interpolated grid follows, and each pixel is independent of the others.
+  tbb::parallel_for(tbb::blocked_range<int>(0, film.height()),
+                    [&](const tbb::blocked_range<int>& r) {
+                      for (int y = r.begin(); y < r.end(); ++y)
+                        for (int x = 0; x < film.width(); ++x) {
+                          Point2d centre(crop.min.x + x + 0.5, crop.min.y + y + 0.5);
+                          film.scale_pixel({x, y}, float(prepared.relative_illumination(centre)));
+                        }
+                    });
+}
+
+}  // namespace obscura::raster
