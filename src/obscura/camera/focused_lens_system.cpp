@@ -223,7 +223,7 @@ std::optional<LensCameraRay> FocusedLensSystem::ray(Point2d image_mm, Point2d u,
                                                     double wavelength_nm) const {
   // 1. The film point: the image point, inverted (a real lens turns the image upside down).
   const Point2d film(-image_mm.x, -image_mm.y);
-  const double r = std::hypot(film.x, film.y);
+  const double r = std::sqrt(film.x * film.x + film.y * film.y);
   // 2. A point of the exit pupil's bounds for this radius, turned to the film point's azimuth.
   const PupilBounds b = pupil_bounds(r);
   if (b.empty()) return std::nullopt;

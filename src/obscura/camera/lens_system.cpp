@@ -13,7 +13,8 @@ namespace {
 // ray; nothing when it misses. Spheres and planes are solved exactly; an asphere starts from
 // its base sphere's (or plane's) solution and refines t by Newton's method on the sag equation
 // z(t) − vertex_z + sag(r(t)) = 0.
-std::optional<double> intersect(const LensSurface& s, double vertex_z, const LensRay& ray) {
+std::optional<double> intersect(const LensSurface& s, bool aspheric, double vertex_z,
+                                const LensRay& ray) {
   const Point3d& o = ray.origin;
   const Vector3d& d = ray.direction;
   double t;
@@ -32,7 +33,7 @@ std::optional<double> intersect(const LensSurface& s, double vertex_z, const Len
     // vertex's side of the centre, the near side otherwise.
     t = (d.z > 0) == (s.radius_mm > 0) ? -b + root : -b - root;
   }
-  if (s.is_aspheric()) {
+  if (aspheric) {
     constexpr int kMaxIterations = 30;
     constexpr double kTolerance_mm = 1e-12;
     bool converged = false;
@@ -66,6 +67,18 @@ std::optional<Vector3d> facing_normal(const LensSurface& s, Point3d p, Vector3d 
   return dot(n, d) < 0 ? n : -n;
 }
 
+// The same for a sphere or a plane, without the sag: a sphere's unit normal is (p − centre)/R
+// (the centre R towards the sensor from the vertex), which is the sag's gradient direction
+// (c·x, c·y, √(1 − c²r²)) with c = 1/R, already of unit length.
+Vector3d facing_normal_spherical(const LensSurface& s, double vertex_z, Point3d p, Vector3d d) {
+  Vector3d n(0, 0, 1);
+  if (s.radius_mm != 0) {
+    const double c = 1 / s.radius_mm;
+    n = Vector3d(p.x * c, p.y * c, (p.z - vertex_z + s.radius_mm) * c);
+  }
+  return dot(n, d) < 0 ? n : -n;
+}
+
 // Snell's law for unit d and unit n facing against it, from index n1 into n2; nothing by total
 // internal reflection.
 std::optional<Vector3d> refract(Vector3d d, Vector3d n, double n1, double n2) {
@@ -74,8 +87,8 @@ std::optional<Vector3d> refract(Vector3d d, Vector3d n, double n1, double n2) {
   double sin2_t = eta * eta * (1 - cos_i * cos_i);
   if (sin2_t > 1) return std::nullopt;
   double cos_t = std::sqrt(1 - sin2_t);
-  Vector3d t = d * eta + n * (eta * cos_i - cos_t);
-  return t / length(t);
+  // |t|² = η²(1 − cos²θi) + cos²θt = sin²θt + cos²θt = 1: unit to rounding, no normalizing.
+  return d * eta + n * (eta * cos_i - cos_t);
 }
 
 }  // namespace
@@ -117,7 +130,8 @@ std::optional<LensRay> LensSystem::trace(LensRay ray, TraceFrom from,
     const int i = from_film ? count - 1 - k : k;
     const LensSurface& s = surfaces[size_t(i)];
     // 1. Where the ray meets the surface.
-    std::optional<double> t = intersect(s, vertex_z_[size_t(i)], ray);
+    const bool aspheric = s.is_aspheric();
+    std::optional<double> t = intersect(s, aspheric, vertex_z_[size_t(i)], ray);
     if (!t) return std::nullopt;
     Point3d p = ray.origin + ray.direction * *t;
     // 2. Stopped outside the clear aperture, or outside the stop's opening.
@@ -139,7 +153,9 @@ std::optional<LensRay> LensSystem::trace(LensRay ray, TraceFrom from,
     double clear_radius = 0.5 * s.aperture_diameter_mm;
     if (options.apertures && r2 > clear_radius * clear_radius) return std::nullopt;
     // 3. Refraction into the next medium.
-    std::optional<Vector3d> n = facing_normal(s, p, ray.direction);
+    std::optional<Vector3d> n =
+        aspheric ? facing_normal(s, p, ray.direction)
+                 : facing_normal_spherical(s, vertex_z_[size_t(i)], p, ray.direction);
     if (!n) return std::nullopt;
     double n_in =
         from_film ? index_after(i, options.wavelength_nm) : index_before(i, options.wavelength_nm);
