@@ -70,19 +70,17 @@ std::optional<Vector3d> facing_normal(const LensSurface& s, Point3d p, Vector3d 
 // The same for a sphere or a plane, without the sag: a sphere's unit normal is (p − centre)/R
 // (the centre R towards the sensor from the vertex), which is the sag's gradient direction
 // (c·x, c·y, √(1 − c²r²)) with c = 1/R, already of unit length.
-Vector3d facing_normal_spherical(const LensSurface& s, double vertex_z, Point3d p, Vector3d d) {
+Vector3d facing_normal_spherical(const LensSurface& s, double curvature, double vertex_z, Point3d p,
+                                 Vector3d d) {
   Vector3d n(0, 0, 1);
-  if (s.radius_mm != 0) {
-    const double c = 1 / s.radius_mm;
-    n = Vector3d(p.x * c, p.y * c, (p.z - vertex_z + s.radius_mm) * c);
-  }
+  if (s.radius_mm != 0)
+    n = Vector3d(p.x * curvature, p.y * curvature, (p.z - vertex_z + s.radius_mm) * curvature);
   return dot(n, d) < 0 ? n : -n;
 }
 
-// Snell's law for unit d and unit n facing against it, from index n1 into n2; nothing by total
+// Snell's law for unit d and unit n facing against it, with η = n_in / n_out; nothing by total
 // internal reflection.
-std::optional<Vector3d> refract(Vector3d d, Vector3d n, double n1, double n2) {
-  double eta = n1 / n2;
+std::optional<Vector3d> refract(Vector3d d, Vector3d n, double eta) {
   double cos_i = -dot(n, d);
   double sin2_t = eta * eta * (1 - cos_i * cos_i);
   if (sin2_t > 1) return std::nullopt;
@@ -100,6 +98,15 @@ LensSystem::LensSystem(LensPrescription prescription) : prescription_(std::move(
   vertex_z_.assign(surfaces.size(), 0);
   for (int i = int(surfaces.size()) - 2; i >= 0; --i)
     vertex_z_[size_t(i)] = vertex_z_[size_t(i) + 1] + surfaces[size_t(i)].thickness_mm;
+  for (int i = 0; i < int(surfaces.size()); ++i) {
+    const LensSurface& s = surfaces[size_t(i)];
+    TraceSurface& t = trace_surfaces_.emplace_back();
+    t.curvature = s.radius_mm != 0 ? 1 / s.radius_mm : 0;
+    t.clear_radius2 = 0.25 * s.aperture_diameter_mm * s.aperture_diameter_mm;
+    t.eta_from_film = index_after(i, kWavelengthD_nm) / index_before(i, kWavelengthD_nm);
+    t.eta_from_scene = 1 / t.eta_from_film;
+    t.aspheric = s.is_aspheric();
+  }
   measure_first_order();
 }
 
@@ -129,9 +136,9 @@ std::optional<LensRay> LensSystem::trace(LensRay ray, TraceFrom from,
   for (int k = 0; k < count; ++k) {
     const int i = from_film ? count - 1 - k : k;
     const LensSurface& s = surfaces[size_t(i)];
+    const TraceSurface& surface = trace_surfaces_[size_t(i)];
     // 1. Where the ray meets the surface.
-    const bool aspheric = s.is_aspheric();
-    std::optional<double> t = intersect(s, aspheric, vertex_z_[size_t(i)], ray);
+    std::optional<double> t = intersect(s, surface.aspheric, vertex_z_[size_t(i)], ray);
     if (!t) return std::nullopt;
     Point3d p = ray.origin + ray.direction * *t;
     // 2. Stopped outside the clear aperture, or outside the stop's opening.
@@ -140,7 +147,7 @@ std::optional<LensRay> LensSystem::trace(LensRay ray, TraceFrom from,
       if (options.at_stop) *options.at_stop = p;
       if (options.apertures) {
         if (!options.stop) {
-          if (r2 > stop_radius_mm() * stop_radius_mm()) return std::nullopt;
+          if (r2 > surface.clear_radius2) return std::nullopt;
         } else {
           const double scale = 1 / options.stop->radius_mm;
           if (!aperture_contains(options.stop->shape, {p.x * scale, p.y * scale}))
@@ -150,18 +157,19 @@ std::optional<LensRay> LensSystem::trace(LensRay ray, TraceFrom from,
       ray.origin = p;
       continue;
     }
-    double clear_radius = 0.5 * s.aperture_diameter_mm;
-    if (options.apertures && r2 > clear_radius * clear_radius) return std::nullopt;
+    if (options.apertures && r2 > surface.clear_radius2) return std::nullopt;
     // 3. Refraction into the next medium.
     std::optional<Vector3d> n =
-        aspheric ? facing_normal(s, p, ray.direction)
-                 : facing_normal_spherical(s, vertex_z_[size_t(i)], p, ray.direction);
+        surface.aspheric
+            ? facing_normal(s, p, ray.direction)
+            : facing_normal_spherical(s, surface.curvature, vertex_z_[size_t(i)], p, ray.direction);
     if (!n) return std::nullopt;
-    double n_in =
-        from_film ? index_after(i, options.wavelength_nm) : index_before(i, options.wavelength_nm);
-    double n_out =
-        from_film ? index_before(i, options.wavelength_nm) : index_after(i, options.wavelength_nm);
-    std::optional<Vector3d> refracted = refract(ray.direction, *n, n_in, n_out);
+    double eta = from_film ? surface.eta_from_film : surface.eta_from_scene;
+    if (options.wavelength_nm != kWavelengthD_nm)
+      eta = from_film
+                ? index_after(i, options.wavelength_nm) / index_before(i, options.wavelength_nm)
+                : index_before(i, options.wavelength_nm) / index_after(i, options.wavelength_nm);
+    std::optional<Vector3d> refracted = refract(ray.direction, *n, eta);
     if (!refracted) return std::nullopt;
     ray = {p, *refracted};
   }

@@ -77,6 +77,15 @@ class LensSystem {
  private:
   LensPrescription prescription_;
   std::vector<double> vertex_z_;  // per surface
+  // What each trace asks of surface i, computed once: the tests and divisions a ray would
+  // otherwise repeat at every surface.
+  struct TraceSurface {
+    double curvature = 0;                          // 1 / radius (0: flat)
+    double clear_radius2 = 0;                      // (clear aperture / 2)²
+    double eta_from_film = 1, eta_from_scene = 1;  // n_in / n_out at the d line
+    bool aspheric = false;
+  };
+  std::vector<TraceSurface> trace_surfaces_;
   int stop_ = 0;
   double efl_mm_ = 0, bfd_mm_ = 0, ffd_mm_ = 0, entrance_pupil_mm_ = 0;
 
