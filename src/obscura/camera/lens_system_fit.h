@@ -2,9 +2,9 @@
 // camera's parametric models (calibrated_projection.h, lens_distortion.h): what the rasterizer
 // draws a lens-system camera with, and what `obscura camera --export` writes for it.
 //
-// Measured along the sensor's diagonal, at evenly spaced image heights h from the centre to the
-// corner (or to the image circle's rim when the lens's light ends before the corner), at the d
-// line:
+// Measured along the sensor's diagonal, at image heights h from the centre to the corner (or to
+// the image circle's rim when the lens's light ends before the corner; closer together towards
+// it), at the d line:
 //   * distortion: the field angle θ of the chief ray (through the stop's centre) on the object
 //     side, against h;
 //   * the entrance pupil: where each object-side chief ray, extended, crosses the axis. A real
@@ -52,7 +52,8 @@ struct LensFieldPoint {
 };
 
 struct LensMeasurement {
-  std::vector<LensFieldPoint> field;  // evenly spaced from h = 0 to edge_height_mm
+  // From h = 0 to edge_height_mm, three times as close together at the edge as at the centre.
+  std::vector<LensFieldPoint> field;
   // The half diagonal, or the image circle's radius when light ends before the corner.
   double edge_height_mm = 0;
   bool image_circle = false;  // the lens's light ends before the sensor's corner
@@ -68,7 +69,7 @@ struct LensMeasurement {
 };
 
 struct LensFitSettings {
-  int heights = 65;     // image heights measured, from the centre to the edge (≥ 8)
+  int heights = 33;     // image heights measured, from the centre to the edge (≥ 8)
   int pupil_grid = 64;  // pupil_grid² ray weights averaged per height (64: within ~0.3 %)
   // Also trace the midpoints between the heights, for max_illumination_error (doubles the
   // tracing; renders leave it off).
@@ -77,7 +78,7 @@ struct LensFitSettings {
 
 // Traces `heights` image heights (≥ 8) and `pupil_grid`² pupil samples at each. Throws
 // obscura::Error when no chief ray leaves the lens beyond the axis.
-LensMeasurement measure_lens_system(const FocusedLensSystem& lens, int heights = 65,
+LensMeasurement measure_lens_system(const FocusedLensSystem& lens, int heights = 33,
                                     int pupil_grid = 64);
 
 struct LensSystemFit {
