@@ -140,6 +140,19 @@ std::string fitted_lens_note(const Camera& camera, const FittedLensCamera& fitte
          "aberration blur or ghosts (the tracer traces the lens)";
 }
 
+// A lens-system camera's fitted camera; nothing for other cameras, and nothing with `note` saying
+// why for a lens no model fits (it is then drawn along its own traced rays, unvignetted).
+std::optional<FittedLensCamera> fit_lens_system_camera(const Camera& camera, std::string& note) {
+  if (!std::holds_alternative<LensSystemProjection>(camera.projection)) return std::nullopt;
+  try {
+    return fitted_lens_camera(camera, {.check_illumination = false});
+  } catch (const Error& e) {
+    note = std::string("no fitted camera (") + e.what() +
+           "): the rasterizer draws the lens system along its traced rays, unvignetted";
+    return std::nullopt;
+  }
+}
+
 }  // namespace
 
 std::optional<DepthOfFieldMethod> parse_depth_of_field_method(std::string_view name) {
@@ -187,9 +200,8 @@ RenderStats render(const Scene& scene, const Camera& camera, const RenderSetting
                                       std::to_string(settings.effect_samples));
   // A lens system is drawn through its fitted calibrated camera (camera/lens_system_fit.h), at
   // its centre of projection, then darkened by its measured relative illumination.
-  std::optional<FittedLensCamera> fitted;
-  if (std::holds_alternative<LensSystemProjection>(camera.projection))
-    fitted = fitted_lens_camera(camera, {.check_illumination = false});
+  std::string unfitted;
+  std::optional<FittedLensCamera> fitted = fit_lens_system_camera(camera, unfitted);
   const Camera& drawn = fitted ? fitted->camera : camera;
   RenderStats stats = wants_effects(scene, drawn, settings)
                           ? render_effects(scene, drawn, settings, film, aovs, progress)
@@ -203,6 +215,7 @@ RenderStats render(const Scene& scene, const Camera& camera, const RenderSetting
     apply_relative_illumination(film, *fitted);
     stats.warnings.push_back(fitted_lens_note(camera, *fitted));
   }
+  if (!unfitted.empty()) stats.warnings.push_back(unfitted);
   stats.seconds = seconds_since(start);
   return stats;
 }
