@@ -8,6 +8,7 @@
 #include "camera_export.h"
 #include "camera_options.h"
 #include "obscura/camera/intrinsics.h"
+#include "obscura/camera/lens_system_fit.h"
 #include "obscura/io/gltf_camera.h"
 #include "obscura/io/lens_model_coefficients.h"
 #include "obscura/math/number_text.h"
@@ -107,6 +108,48 @@ void print_geometry(const Camera& c) {
     row("view", short_num(w.x_max - w.x_min) + " x " + short_num(w.y_max - w.y_min) + " m");
   }
   row("clipping", "near " + num(c.near_m) + " m, far " + num(c.far_m) + " m");
+}
+
+// A lens system's fitted camera (camera/lens_system_fit.h): what the rasterizer draws it with
+// and what --export writes.
+void print_fitted_camera(const Camera& c) {
+  FittedLensCamera fitted = fitted_lens_camera(c);
+  const LensSystemFit& fit = fitted.fit;
+  const LensMeasurement& m = fit.measured;
+  const CalibratedProjection& p = fit.projection;
+  std::string model = lens_model_name(p.lens);
+  std::vector<double> coefficients = lens_model_coefficients(p.lens);
+  for (size_t i = 0; i < coefficients.size(); ++i)
+    model += (i ? "," : ":") + short_num(coefficients[i]);
+  if (p.max_field_angle_degrees > 0)
+    model += ", field limited to " + short_num(p.max_field_angle_degrees) + "° (image circle " +
+             short_num(2 * m.edge_height_mm) + " mm)";
+  row("fitted camera", model);
+  row("fitted K", "[" + short_num(p.k.fx) + " 0 " + short_num(p.k.cx) + "; 0 " + short_num(p.k.fy) +
+                      " " + short_num(p.k.cy) + "; 0 0 1] px (focal length " +
+                      short_num(p.k.fx * fitted.sensor_mm.x / c.film.width_px) + " mm; paraxial " +
+                      short_num(m.paraxial_focal_length_mm) + " mm)");
+  row("centre", short_num(m.centre_of_projection_mm) +
+                    " mm in front of the sensor (paraxial entrance pupil " +
+                    short_num(m.entrance_pupil_distance_mm) +
+                    " mm; chief rays cross the axis within " + short_num(fit.pupil_shift_mm) +
+                    " mm of the centre)");
+  row("fitted field", short_num(fit.fov_degrees.x) + "° x " + short_num(fit.fov_degrees.y) +
+                          "°, diagonal " + short_num(fit.fov_degrees.z) +
+                          "° (traced: " + short_num(m.fov_degrees.x) + "° x " +
+                          short_num(m.fov_degrees.y) + "°, " + short_num(m.fov_degrees.z) + "°)");
+  row("fit residuals",
+      "distortion max " + short_num(fit.max_error_px) + " px, RMS " + short_num(fit.rms_error_px) +
+          " px at " + std::to_string(c.film.width_px) + " x " + std::to_string(c.film.height_px) +
+          "; parallax " + short_num(fit.parallax_px_m) +
+          " px·m x |1/D - 1/focus| off the focus plane; illumination table within " +
+          short_num(fit.max_illumination_error));
+  const double centre = m.field.front().relative_illumination;
+  const double corner =
+      fit.relative_illumination(std::hypot(fitted.sensor_mm.x, fitted.sensor_mm.y) / 2);
+  row("illumination", "relative to the thin lens at f/" + short_num(c.f_number()) + ": centre " +
+                          short_num(centre) + ", corner " + short_num(corner) + " (" +
+                          short_num(centre > 0 ? corner / centre : 0) + " of the centre)");
 }
 
 void print_lens_and_exposure(const Camera& c) {
@@ -210,6 +253,7 @@ void run_camera(const CameraCommandOptions& options) {
   }
   std::printf("camera '%s' of scene '%s'\n", camera.name.c_str(), scene.name.c_str());
   print_geometry(camera);
+  if (std::holds_alternative<LensSystemProjection>(camera.projection)) print_fitted_camera(camera);
   print_lens_and_exposure(camera);
   print_equivalents(camera);
 }

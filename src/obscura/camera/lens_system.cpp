@@ -1,5 +1,6 @@
 #include "obscura/camera/lens_system.h"
 
+#include <algorithm>
 #include <cmath>
 #include <string>
 
@@ -52,8 +53,12 @@ std::optional<double> intersect(const LensSurface& s, bool aspheric, double vert
     }
     if (!converged) return std::nullopt;
   }
-  if (!(t >= 0) || !std::isfinite(t)) return std::nullopt;  // behind the ray: missed
-  return t;
+  // Behind the ray: missed. A surface the ray has just left may touch the next one (a stop
+  // plane at a convex vertex, 0 mm apart): there the distance is the sag, ~1e-11 mm for a chief
+  // ray, and rounding can make it negative; a hair of slack keeps such rays.
+  constexpr double kTouching_mm = 1e-9;
+  if (!(t >= -kTouching_mm) || !std::isfinite(t)) return std::nullopt;
+  return std::max(t, 0.0);
 }
 
 // The unit normal of the surface at p, facing against `d` (the side the ray comes from).

@@ -4,6 +4,7 @@
 #include <cmath>
 
 #include "obscura/camera/intrinsics.h"
+#include "obscura/camera/lens_system_fit.h"
 #include "obscura/math/error.h"
 #include "obscura/math/number_text.h"
 
@@ -17,6 +18,8 @@ constexpr int kMaxCalibrationSidePx = 65536;
 }  // namespace
 
 CameraCalibration calibration_of(const Camera& camera) {
+  if (std::holds_alternative<LensSystemProjection>(camera.projection))
+    return calibration_of(fitted_lens_camera(camera, {.check_illumination = false}).camera);
   CameraCalibration out;
   CalibratedProjection& p = out.projection;
   if (auto* c = std::get_if<CalibratedProjection>(&camera.projection)) {
@@ -25,7 +28,7 @@ CameraCalibration calibration_of(const Camera& camera) {
     throw Error("camera '" + camera.name + "'",
                 "a calibration (K and a lens model) cannot describe its " +
                     std::string(projection_name(camera.projection)) +
-                    " projection; use a perspective or calibrated camera");
+                    " projection; use a perspective, calibrated or lens-system camera");
   }
   p.k = intrinsics(camera);  // scaled to the film
   p.width_px = camera.film.width_px;

@@ -25,7 +25,9 @@ struct CameraCalibration {
 
 // The calibration of `camera` at its film's resolution, posed at the shutter's open time: a
 // perspective camera's K (camera/intrinsics.h) with no distortion, a calibrated camera's K
-// scaled to the film with its lens model. Throws obscura::Error naming the projection when K
+// scaled to the film with its lens model, a lens system's fitted camera
+// (camera/lens_system_fit.h: OpenCV's pinhole or Kannala–Brandt model) posed at its centre of
+// projection. Throws obscura::Error naming the projection when K
 // cannot describe it (orthographic, spherical, fisheye: use a calibrated fisheye lens model).
 CameraCalibration calibration_of(const Camera& camera);
 

@@ -2,7 +2,11 @@
 
 #include <algorithm>
 #include <chrono>
+#include <cstdio>
+#include <optional>
+#include <string>
 
+#include "obscura/camera/lens_system_fit.h"
 #include "obscura/math/error.h"
 #include "obscura/raster/accumulation.h"
 #include "obscura/raster/depth_of_field_post.h"
@@ -123,6 +127,32 @@ RenderStats render_effects(const Scene& scene, const Camera& camera, const Rende
   return stats;
 }
 
+// What the rasterizer leaves out of a lens-system camera it draws through its fitted camera.
+std::string fitted_lens_note(const Camera& camera, const FittedLensCamera& fitted) {
+  const auto& lens = *std::get<LensSystemProjection>(camera.projection).lens;
+  char numbers[160];
+  std::snprintf(numbers, sizeof numbers,
+                "distortion within %.2g px, %.2g px·m of parallax off the focus plane",
+                fitted.fit.max_error_px, fitted.fit.parallax_px_m);
+  return "lens system '" + lens.name() + "': the rasterizer draws it through a fitted " +
+         lens_model_name(fitted.fit.projection.lens) + " camera (" + numbers +
+         ") with its measured vignetting; it has no depth of field, chromatic aberration, "
+         "aberration blur or ghosts (the tracer traces the lens)";
+}
+
+// A lens-system camera's fitted camera; nothing for other cameras, and nothing with `note` saying
+// why for a lens no model fits (it is then drawn along its own traced rays, unvignetted).
+std::optional<FittedLensCamera> fit_lens_system_camera(const Camera& camera, std::string& note) {
+  if (!std::holds_alternative<LensSystemProjection>(camera.projection)) return std::nullopt;
+  try {
+    return fitted_lens_camera(camera, {.check_illumination = false});
+  } catch (const Error& e) {
+    note = std::string("no fitted camera (") + e.what() +
+           "): the rasterizer draws the lens system along its traced rays, unvignetted";
+    return std::nullopt;
+  }
+}
+
 }  // namespace
 
 std::optional<DepthOfFieldMethod> parse_depth_of_field_method(std::string_view name) {
@@ -168,14 +198,24 @@ RenderStats render(const Scene& scene, const Camera& camera, const RenderSetting
   if (settings.effect_samples < 1)
     throw Error("raster::render", "effect_samples must be a positive number of frames; got " +
                                       std::to_string(settings.effect_samples));
-  RenderStats stats = wants_effects(scene, camera, settings)
-                          ? render_effects(scene, camera, settings, film, aovs, progress)
-                          : render_sharp(scene, camera, settings, film, aovs);
+  // A lens system is drawn through its fitted calibrated camera (camera/lens_system_fit.h), at
+  // its centre of projection, then darkened by its measured relative illumination.
+  std::string unfitted;
+  std::optional<FittedLensCamera> fitted = fit_lens_system_camera(camera, unfitted);
+  const Camera& drawn = fitted ? fitted->camera : camera;
+  RenderStats stats = wants_effects(scene, drawn, settings)
+                          ? render_effects(scene, drawn, settings, film, aovs, progress)
+                          : render_sharp(scene, drawn, settings, film, aovs);
   if (stats.post_dof_depth && settings.share.parts <= 1) {
-    apply_depth_of_field_post(film, *stats.post_dof_depth, camera);
+    apply_depth_of_field_post(film, *stats.post_dof_depth, drawn);
     stats.post_dof_depth.reset();
   }
-  apply_vignetting(film, camera);
+  apply_vignetting(film, drawn);
+  if (fitted) {
+    apply_relative_illumination(film, *fitted);
+    stats.warnings.push_back(fitted_lens_note(camera, *fitted));
+  }
+  if (!unfitted.empty()) stats.warnings.push_back(unfitted);
   stats.seconds = seconds_since(start);
   return stats;
 }

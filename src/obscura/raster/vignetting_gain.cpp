@@ -21,4 +21,16 @@ void apply_vignetting(Film& film, const Camera& camera) {
                     });
 }
 
+void apply_relative_illumination(Film& film, const FittedLensCamera& fitted) {
+  const Bounds2i crop = fitted.camera.film.crop_pixels();
+  tbb::parallel_for(tbb::blocked_range<int>(0, film.height()),
+                    [&](const tbb::blocked_range<int>& r) {
+                      for (int y = r.begin(); y < r.end(); ++y)
+                        for (int x = 0; x < film.width(); ++x) {
+                          Point2d centre(crop.min.x + x + 0.5, crop.min.y + y + 0.5);
+                          film.scale_pixel({x, y}, float(fitted.relative_illumination(centre)));
+                        }
+                    });
+}
+
 }  // namespace obscura::raster

@@ -7,6 +7,7 @@
 #pragma once
 
 #include "obscura/camera/camera.h"
+#include "obscura/camera/lens_system_fit.h"
 #include "obscura/film/film.h"
 
 namespace obscura::raster {
@@ -14,5 +15,12 @@ namespace obscura::raster {
 // Multiplies each pixel of `film` (the camera's crop) by the relative illumination at its
 // centre; nothing without vignetting.
 void apply_vignetting(Film& film, const Camera& camera);
+
+// A lens system's relative illumination, as its fitted camera measured it (the mean of the
+// tracer's ray weights at each image height, interpolated): each pixel of `film` (the camera's
+// crop) times the value at its centre. This carries the lens's cos⁴ and mechanical vignetting
+// and its exposure at the focus distance, so the rasterizer's frame is as bright as the
+// tracer's, centre and corners.
+void apply_relative_illumination(Film& film, const FittedLensCamera& fitted);
 
 }  // namespace obscura::raster
