@@ -110,9 +110,10 @@ struct LensSystemFit {
 LensSystemFit fit_lens_system(const FocusedLensSystem& lens, int width_px, int height_px,
                               const LensFitSettings& settings = {});
 
-// A lens-system camera's stand-in: a calibrated camera with the fitted model, at the paraxial
-// entrance pupil (so close objects land where the lens's chief rays put them), sharp (no depth
-// of field), exposed at the lens system's f-number; and the fit, for its relative illumination.
+// A lens-system camera's stand-in: a calibrated camera with the fitted model, at the centre of
+// projection (so objects on the plane of focus land where the lens's chief rays put them), sharp
+// (no depth of field), exposed at the lens system's f-number; and the fit, for its relative
+// illumination.
 struct FittedLensCamera {
   Camera camera;
   LensSystemFit fit;
