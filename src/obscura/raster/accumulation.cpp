@@ -5,6 +5,7 @@
 #include <limits>
 #include <string>
 
+#include "obscura/camera/vignetting.h"
 #include "obscura/math/error.h"
 #include "obscura/math/rng.h"
 #include "obscura/math/sobol.h"
@@ -12,6 +13,8 @@
 namespace obscura::raster {
 
 namespace {
+
+constexpr double kMillimetresPerMetre = 1000;
 
 // A 32-bit fraction as a double in [0, 1), keeping all 32 bits.
 double fraction_to_double(uint32_t bits) {
@@ -58,6 +61,23 @@ AccumulationStats accumulate(const Camera& camera, const AccumulationSettings& s
   auto elapsed = [&] {
     return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   };
+  // A lens barrel (mechanical vignetting) stops some lens points' rays to some pixels: each
+  // frame's pixels are kept or dropped as the tracer keeps or stops its ray through that lens
+  // point (the cat-eye of off-axis bokeh), so the light it loses is in the frames already.
+  const bool barrel =
+      settings.depth_of_field && camera.lens.depth_of_field && camera.lens.vignetting.mechanical();
+  std::vector<Point2d> windows;
+  std::vector<float> kept;
+  if (barrel) {
+    const PreparedCamera prepared = camera.prepare();
+    const Bounds2i crop = camera.film.crop_pixels();
+    windows.resize(size_t(film.width()) * size_t(film.height()));
+    kept.resize(windows.size());
+    for (int y = 0; y < film.height(); ++y)
+      for (int x = 0; x < film.width(); ++x)
+        windows[size_t(y) * size_t(film.width()) + size_t(x)] =
+            prepared.window_from_raster({crop.min.x + x + 0.5, crop.min.y + y + 0.5});
+  }
   AccumulationStats stats;
   RenderTarget target(film.width(), film.height(), settings.msaa_samples, settings.aovs);
   target.set_share(settings.share.part, settings.share.parts);
@@ -84,7 +104,16 @@ AccumulationStats accumulate(const Camera& camera, const AccumulationSettings& s
     frame.lens = lens_view(camera, frame.sample.lens_sample, frame.sample.time_s);
     target.clear();
     render_frame(frame, target);
-    target.accumulate_into(film);
+    if (barrel) {
+      const Point2d lens_mm(frame.lens.lens_point_m.x * kMillimetresPerMetre,
+                            frame.lens.lens_point_m.y * kMillimetresPerMetre);
+      const double focus_mm = camera.lens.focus_distance_m * kMillimetresPerMetre;
+      for (size_t p = 0; p < windows.size(); ++p)
+        kept[p] = passes_barrel(camera.lens.vignetting, lens_mm, windows[p], focus_mm) ? 1.f : 0.f;
+      target.accumulate_into(film, kept);
+    } else {
+      target.accumulate_into(film);
+    }
     double distance = std::abs(frame.sample.time_s - middle);
     if (middle_frame && distance < kept_distance) {
       *middle_frame = target;

@@ -203,14 +203,18 @@ RenderStats render(const Scene& scene, const Camera& camera, const RenderSetting
   std::string unfitted;
   std::optional<FittedLensCamera> fitted = fit_lens_system_camera(camera, unfitted);
   const Camera& drawn = fitted ? fitted->camera : camera;
-  RenderStats stats = wants_effects(scene, drawn, settings)
-                          ? render_effects(scene, drawn, settings, film, aovs, progress)
-                          : render_sharp(scene, drawn, settings, film, aovs);
+  const bool effects = wants_effects(scene, drawn, settings);
+  RenderStats stats = effects ? render_effects(scene, drawn, settings, film, aovs, progress)
+                              : render_sharp(scene, drawn, settings, film, aovs);
   if (stats.post_dof_depth && settings.share.parts <= 1) {
     apply_depth_of_field_post(film, *stats.post_dof_depth, drawn);
     stats.post_dof_depth.reset();
   }
-  apply_vignetting(film, drawn);
+  // Accumulated depth of field keeps or drops each lens point's frame per pixel at the barrel
+  // (accumulate()): the cat-eye bokeh, and the barrel's light loss with it.
+  const bool barrel_in_frames = effects && drawn.lens.depth_of_field &&
+                                settings.depth_of_field == DepthOfFieldMethod::kAccumulate;
+  apply_vignetting(film, drawn, barrel_in_frames);
   if (fitted) {
     apply_relative_illumination(film, *fitted);
     stats.warnings.push_back(fitted_lens_note(camera, *fitted));

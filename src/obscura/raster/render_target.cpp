@@ -93,6 +93,22 @@ void RenderTarget::accumulate_into(Film& film, float weight) const {
   });
 }
 
+void RenderTarget::accumulate_into(Film& film, const std::vector<float>& gain) const {
+  if (film.width() != width_ || film.height() != height_ ||
+      gain.size() != size_t(width_) * size_t(height_))
+    throw Error("render target", "film or gain size differs from the target's " +
+                                     std::to_string(width_) + "x" + std::to_string(height_));
+  const float inv = 1.f / float(samples_);
+  tbb::parallel_for(0, height_, [&](int y) {
+    for (int x = 0; x < width_; ++x) {
+      if (!draws_pixel(x, y)) continue;
+      Rgb sum;
+      for (int s = 0; s < samples_; ++s) sum += color(sample_index(x, y, s));
+      film.add_sample({x, y}, sum * (inv * gain[size_t(y) * size_t(width_) + size_t(x)]), 1.f);
+    }
+  });
+}
+
 Image RenderTarget::depth_image() const {
   Image image(width_, height_, 1);
   for (int y = 0; y < height_; ++y)

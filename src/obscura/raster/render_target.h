@@ -97,6 +97,9 @@ class RenderTarget {
   // Adds the resolved colour to `film` as one sample per pixel of weight `weight`, so several
   // renders (jittered lens, shutter times) accumulate into their average.
   void accumulate_into(Film& film, float weight = 1.f) const;
+  // The same with each pixel's colour times gain[y · width + x] (a frame's per-pixel share of
+  // light, e.g. whether the lens barrel lets this lens point's ray reach the pixel).
+  void accumulate_into(Film& film, const std::vector<float>& gain) const;
   // Per-pixel outputs of sample 0 (one channel; normals three): window depth, view depth,
   // normals. View depth and normals need aovs.
   Image depth_image() const;

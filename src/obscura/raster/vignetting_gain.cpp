@@ -5,9 +5,12 @@
 
 namespace obscura::raster {
 
-void apply_vignetting(Film& film, const Camera& camera) {
+void apply_vignetting(Film& film, const Camera& camera, bool barrel_in_frames) {
   if (!camera.lens.vignetting.any()) return;
-  const PreparedCamera prepared = camera.prepare();
+  if (barrel_in_frames && !camera.lens.vignetting.natural) return;
+  Camera natural_only = camera;
+  if (barrel_in_frames) natural_only.lens.vignetting.barrel_diameter_mm = 0;
+  const PreparedCamera prepared = natural_only.prepare();
   const Bounds2i crop = camera.film.crop_pixels();
   // Per pixel: the barrel's share changes quickly where a strong barrel cuts in, faster than an
   // interpolated grid follows, and each pixel is independent of the others.

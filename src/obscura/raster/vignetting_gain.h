@@ -13,8 +13,10 @@
 namespace obscura::raster {
 
 // Multiplies each pixel of `film` (the camera's crop) by the relative illumination at its
-// centre; nothing without vignetting.
-void apply_vignetting(Film& film, const Camera& camera);
+// centre; nothing without vignetting. `barrel_in_frames`: the frames were accumulated through
+// jittered lens points with the barrel applied per lens point (accumulation.h), so only the
+// natural cos⁴ part remains to apply.
+void apply_vignetting(Film& film, const Camera& camera, bool barrel_in_frames = false);
 
 // A lens system's relative illumination, as its fitted camera measured it (the mean of the
 // tracer's ray weights at each image height, interpolated): each pixel of `film` (the camera's
