@@ -340,28 +340,34 @@ std::vector<FlareSource> flare_sources(const Scene& scene, const Camera& camera)
     if (!is_dark(s.intensity)) sources.push_back(s);
   }
   // Emissive objects: Σ L·A·cos θ over the faces turned to the camera (lights emit from their
-  // front faces), at the centroid of that emission.
+  // front faces), at the centroid of that emission. θ is measured from one direction, from the
+  // object's middle to the camera: the intensity of a small source seen from afar (per-face
+  // directions would shrink a sphere's by 4/3 of its radius over the distance).
   for (const Instance& instance : scene.instances) {
     const Material& material = scene.materials[scene.material_of(instance)];
     if (is_dark(material.emission)) continue;
     const Mesh& mesh = scene.meshes[instance.mesh];
     const Transform& world_from_object = instance.world_from_object;
+    std::vector<Point3d> world(mesh.positions.size());
+    Vector3d middle(0, 0, 0);
+    for (size_t v = 0; v < world.size(); ++v) {
+      const Point3f p = world_from_object(mesh.positions[v]);
+      world[v] = Point3d(p.x, p.y, p.z);
+      middle = middle + Vector3d(p.x, p.y, p.z) / double(world.size());
+    }
+    const Vector3d towards = eye - Point3d(middle.x, middle.y, middle.z);
+    if (world.empty() || !(length(towards) > 0)) continue;
+    const Vector3d w = towards / length(towards);
     double r = 0, g = 0, b = 0, weight = 0;
     Vector3d centroid(0, 0, 0);
     for (size_t t = 0; t + 2 < mesh.indices.size(); t += 3) {
-      Point3d p[3];
-      for (int k = 0; k < 3; ++k) {
-        Point3f v = world_from_object(mesh.positions[mesh.indices[t + size_t(k)]]);
-        p[k] = Point3d(v.x, v.y, v.z);
-      }
+      const Point3d p[3] = {world[mesh.indices[t]], world[mesh.indices[t + 1]],
+                            world[mesh.indices[t + 2]]};
       const Vector3d normal_area2 = cross(p[1] - p[0], p[2] - p[0]);  // |·| = 2 × area
       const Point3d centre((p[0].x + p[1].x + p[2].x) / 3, (p[0].y + p[1].y + p[2].y) / 3,
                            (p[0].z + p[1].z + p[2].z) / 3);
-      const Vector3d towards = eye - centre;
-      const double distance = length(towards);
-      if (!(distance > 0)) continue;
       // A·cos θ = ½ |n2| · (n̂ · ŵ) = ½ n2 · ŵ.
-      const double projected = 0.5 * dot(normal_area2, towards) / distance;
+      const double projected = 0.5 * dot(normal_area2, w);
       if (!(projected > 0)) continue;
       r += material.emission.r * projected, g += material.emission.g * projected;
       b += material.emission.b * projected;
