@@ -192,7 +192,8 @@ std::optional<SequenceTrace> LensSystem::trace_sequence(LensRay ray,
     const int i = visit.surface;
     const LensSurface& s = surfaces[size_t(i)];
     // 1. Where the ray meets the surface, and how far outside its opening.
-    std::optional<double> t = intersect(s, vertex_z_[size_t(i)], ray);
+    const TraceSurface& ts = trace_surfaces_[size_t(i)];
+    std::optional<double> t = intersect(s, ts.aspheric, vertex_z_[size_t(i)], ray);
     if (!t) return std::nullopt;
     const Point3d p = ray.origin + ray.direction * *t;
     if (s.is_stop) {
@@ -202,7 +203,10 @@ std::optional<SequenceTrace> LensSystem::trace_sequence(LensRay ray,
     }
     gauge = std::max(gauge, std::sqrt(p.x * p.x + p.y * p.y) / (0.5 * s.aperture_diameter_mm));
     // 2. The media on either side, by the direction of travel.
-    std::optional<Vector3d> n = facing_normal(s, p, ray.direction);
+    std::optional<Vector3d> n =
+        ts.aspheric
+            ? facing_normal(s, p, ray.direction)
+            : facing_normal_spherical(s, ts.curvature, vertex_z_[size_t(i)], p, ray.direction);
     if (!n) return std::nullopt;
     const bool towards_sensor = ray.direction.z < 0;
     const double before = index_before(i, wavelength_nm), after = index_after(i, wavelength_nm);
@@ -213,7 +217,7 @@ std::optional<SequenceTrace> LensSystem::trace_sequence(LensRay ray,
     if (visit.reflect) {
       ray = {p, ray.direction + *n * (2 * cos_i)};
     } else {
-      std::optional<Vector3d> refracted = refract(ray.direction, *n, n_from, n_to);
+      std::optional<Vector3d> refracted = refract(ray.direction, *n, n_from / n_to);
       if (!refracted) return std::nullopt;
       ray = {p, *refracted};
     }
