@@ -319,6 +319,11 @@ void add_camera_options(CLI::App& command, CameraOverrides& o) {
       ->group(group);
   command.add_option("--lens-file", o.lens_file, "A lens prescription file (see docs/camera.md)")
       ->group(group);
+  command
+      .add_option("--lens-coating", o.lens_coating,
+                  "A lens system's anti-reflection coating, what its ghost flares reflect: none, "
+                  "quarter-wave (MgF2, n 1.38, at 550 nm; the default) or quarter-wave:INDEX[:NM]")
+      ->group(group);
   add_calibrated_camera_options(command, o);
 }
 

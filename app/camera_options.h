@@ -44,8 +44,9 @@ struct CameraOverrides {
   std::optional<std::string> calibration;        // a calibration file
   std::optional<std::string> calibration_image;  // which image of a COLMAP or NeRF file
   // Lens-system cameras (lens_system_options.h).
-  std::optional<std::string> lens;       // a built-in lens's name
-  std::optional<std::string> lens_file;  // a prescription file
+  std::optional<std::string> lens;          // a built-in lens's name
+  std::optional<std::string> lens_file;     // a prescription file
+  std::optional<std::string> lens_coating;  // "none" | "quarter-wave[:INDEX[:NM]]"
 };
 
 void add_camera_options(CLI::App& command, CameraOverrides& overrides);

@@ -10,8 +10,10 @@
 #include "obscura/io/default_environment.h"
 #include "obscura/io/image_io.h"
 #include "obscura/io/scene_loader.h"
+#include "obscura/math/error.h"
 #include "obscura/raster/ground_truth_render.h"
 #include "obscura/render/camera_glare.h"
+#include "obscura/render/lens_flare.h"
 #include "obscura/scene/material_variants.h"
 #include "option_ranges.h"
 #include "usage_error.h"
@@ -55,6 +57,10 @@ void validate(const RenderOptions& o) {
 
 }  // namespace
 
+bool flare_requested(const RenderOptions& options, const SceneRenderSettings& scene) {
+  return options.flare || scene.flare.value_or(false);
+}
+
 Scene prepare_scene(RenderOptions& options, bool writes_output) {
   validate(options);
   validate(options.tracer);
@@ -82,6 +88,14 @@ Scene prepare_scene(RenderOptions& options, bool writes_output) {
   scene.camera = resolve_camera(scene, options.camera, options.width, options.height);
   scene.camera.shutter = shutter_at_time(options.choice, scene.camera.shutter);
   scene.validate();
+  if (flare_requested(options, scene.render) &&
+      !std::holds_alternative<LensSystemProjection>(scene.camera.projection)) {
+    const std::string message =
+        "ghost flares need a lens-system camera (--lens, --lens-file or a lens_system camera in "
+        "the scene), whose surfaces reflect";
+    if (options.flare) throw UsageError("--flare: " + message);
+    throw obscura::Error("render.flare", message);
+  }
   if (auto glare = glare_settings(options.glare, scene.render)) {
     validate(*glare);  // a camera without a sensor fails here, before rendering
     diffraction_optics(scene.camera);
@@ -130,6 +144,8 @@ RenderedFrame render_frame(const Scene& scene, const RenderOptions& options, con
   frame.film_sums = film.sums();
   frame.post_dof_depth = std::move(stats.post_dof_depth);
   frame.glare = glare_settings(options.glare, scene.render);
+  if (flare_requested(options, scene.render))
+    frame.flare = lens_flare_image(scene, scene.camera, {}, &frame.flare_stats);
   frame.progress = {.end = stats.cancelled                     ? RenderEnd::kInterrupted
                            : stats.time_limited && !open_ended ? RenderEnd::kTimeLimit
                                                                : RenderEnd::kComplete,
@@ -160,6 +176,7 @@ Image finished_image(const RenderedFrame& frame, const Camera& camera) {
   Film film = Film::from_sums(frame.film_sums);
   if (frame.post_dof_depth) raster::apply_depth_of_field_post(film, *frame.post_dof_depth, camera);
   Image image = film.to_image();
+  if (frame.flare) add_lens_flare(image, *frame.flare);
   if (frame.glare) apply_glare(image, camera, *frame.glare);
   return image;
 }

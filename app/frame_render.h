@@ -12,6 +12,7 @@
 #include "obscura/film/image.h"
 #include "obscura/film/tiles.h"
 #include "obscura/film/work_share.h"
+#include "obscura/render/lens_flare.h"
 #include "obscura/render/render_frame.h"
 #include "obscura/scene/scene.h"
 #include "partial_render.h"
@@ -28,6 +29,9 @@ struct RenderedFrame {
   std::optional<Image> post_dof_depth;
   // Diffraction glare, applied to the assembled frame (after the depth-of-field post).
   std::optional<GlareSettings> glare;
+  // Ghost flares (render/lens_flare.h) in the film's units, added before the glare.
+  std::optional<Image> flare;
+  FlareStats flare_stats;
   RenderProgress progress;
   std::vector<std::string> warnings;
   double seconds = 0;               // this process's
@@ -40,6 +44,9 @@ struct RenderedFrame {
 // written and would not replace an input. The scene file's own settings (size, samples, seed)
 // fill in what the command line did not give.
 Scene prepare_scene(RenderOptions& options, bool writes_output);
+
+// Whether ghost flares are asked for: --flare, or the scene file's render.flare.
+bool flare_requested(const RenderOptions& options, const SceneRenderSettings& scene);
 
 // How the renderer's tiles are dealt to `parts` parts (the tracer's 16-pixel tiles, the
 // rasterizer's 64-pixel bins).

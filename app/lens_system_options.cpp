@@ -34,7 +34,18 @@ bool apply_lens_system_overrides(Camera& camera, const CameraOverrides& o) {
     camera.lens.depth_of_field = false;  // the lens system's own, not the thin lens's
   }
   auto* p = std::get_if<LensSystemProjection>(&camera.projection);
-  if (!p) return false;
+  if (!p) {
+    if (o.lens_coating)
+      throw UsageError("--lens-coating applies to a lens-system camera (--lens or --lens-file)");
+    return false;
+  }
+  if (o.lens_coating) {
+    try {
+      p->coating = parse_lens_coating(*o.lens_coating, "--lens-coating");
+    } catch (const Error& e) {
+      throw UsageError(e.what());
+    }
+  }
   for (auto [given, option] : {std::pair{bool(o.fov_degrees), "--fov"},
                                {bool(o.horizontal_fov_degrees), "--hfov"},
                                {bool(o.focal_length_mm), "--focal-length"},

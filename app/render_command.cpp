@@ -67,15 +67,22 @@ void print_summary(const RenderOptions& options, const Scene& scene, const Rende
     std::fprintf(stderr, "rendered %s: %dx%d (raster%s) in %s%s\n", scene.name.c_str(),
                  options.width, options.height, ranks.c_str(), format_seconds(seconds).c_str(),
                  partial_note(frame.progress).c_str());
-    return;
+  } else {
+    std::fprintf(stderr, "rendered %s: %dx%d, %lld spp (%s%s) in %s (%.2f Mrays/s)%s\n",
+                 scene.name.c_str(), options.width, options.height, frame.progress.done,
+                 renderer_name(frame.renderer), ranks.c_str(), format_seconds(seconds).c_str(),
+                 seconds > 0 ? rays / seconds * 1e-6 : 0.0,
+                 frame.progress.partial()   ? partial_note(frame.progress).c_str()
+                 : frame.time_limit_reached ? " [time limit reached]"
+                                            : "");
   }
-  std::fprintf(stderr, "rendered %s: %dx%d, %lld spp (%s%s) in %s (%.2f Mrays/s)%s\n",
-               scene.name.c_str(), options.width, options.height, frame.progress.done,
-               renderer_name(frame.renderer), ranks.c_str(), format_seconds(seconds).c_str(),
-               seconds > 0 ? rays / seconds * 1e-6 : 0.0,
-               frame.progress.partial()   ? partial_note(frame.progress).c_str()
-               : frame.time_limit_reached ? " [time limit reached]"
-                                          : "");
+  if (frame.flare) {
+    const FlareStats& f = frame.flare_stats;
+    std::fprintf(stderr,
+                 "flare: %d sources, %d ghosts imaged, %d faint or missing, %.2f Mrays in %s\n",
+                 f.sources, f.ghosts_traced, f.ghosts_skipped, f.rays * 1e-6,
+                 format_seconds(f.seconds).c_str());
+  }
 }
 
 void run_render(RenderOptions options, const std::string& job) {
@@ -106,6 +113,10 @@ void run_render(RenderOptions options, const std::string& job) {
           "--shard: --raster-dof post blurs the whole frame, which no part has; "
           "use --raster-dof accumulate, or render the frame in one process or "
           "under mpirun");
+    if (options.flare)
+      throw UsageError(
+          "--shard: --flare spreads a light's ghosts across the whole frame, which no part has; "
+          "render the frame in one process or under mpirun");
     if (options.glare.on || options.glare.strength)
       throw UsageError(
           "--shard: --glare spreads light across the whole frame, which no part has; render "
@@ -236,6 +247,10 @@ void add_render_command(CLI::App& app) {
   add_raster_options(*render, options->raster);
   add_raster_effects_options(*render, options->raster_effects);
   add_glare_options(*render, options->glare);
+  render->add_flag("--flare", options->flare,
+                   "Ghost flares: the images of bright lights that reflections between a lens "
+                   "system's surfaces form (--lens, --lens-coating); added to the HDR frame before "
+                   "glare, either renderer");
   add_ground_truth_options(*render, options->ground_truth);
   render->add_option("--shard", options->shard,
                      "Render part I of N of the frame (I counted from 0) to a partial film, an "

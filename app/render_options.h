@@ -37,6 +37,7 @@ struct RenderOptions {
   RasterOptions raster;
   RasterEffectsOptions raster_effects;
   GlareOptions glare;               // --glare, --glare-strength, --glare-radius
+  bool flare = false;               // --flare: ghost flares of a lens-system camera
   GroundTruthOptions ground_truth;  // --ground-truth, --flow-times
   // Which options were given on the command line: those override the scene file's settings.
   bool width_given = false, height_given = false, spp_given = false, seed_given = false;

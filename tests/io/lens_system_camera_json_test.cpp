@@ -66,5 +66,40 @@ TEST(LensSystemCameraJson, MistakesNameThePath) {
             std::string::npos);
 }
 
+TEST(LensSystemCameraJson, CoatingAndFlareArrive) {
+  Scene s = load(R"({"type": "lens_system", "lens": "double-gauss-50mm", "coating": "none"})");
+  EXPECT_FALSE(std::get<LensSystemProjection>(s.camera.projection).coating.coated());
+  s = load(R"({"type": "lens_system", "lens": "double-gauss-50mm",
+               "coating": "quarter-wave:1.25:500"})");
+  EXPECT_EQ(std::get<LensSystemProjection>(s.camera.projection).coating,
+            quarter_wave_coating(1.25, 500));
+  // The default: single-coated (MgF2 at 550 nm).
+  s = load(R"({"type": "lens_system", "lens": "double-gauss-50mm"})");
+  EXPECT_EQ(std::get<LensSystemProjection>(s.camera.projection).coating, quarter_wave_coating());
+  Scene flare = load_json_scene_text(R"({"render": {"flare": true}})", "scene.json");
+  EXPECT_EQ(flare.render.flare, true);
+}
+
+TEST(LensSystemCameraJson, CoatingAndFlareMistakesNameTheField) {
+  auto error_of = [](const std::string& text) -> std::string {
+    try {
+      load_json_scene_text(text, "scene.json");
+    } catch (const Error& e) {
+      return e.what();
+    }
+    return "";
+  };
+  const std::string bad_coating = error_of(
+      R"({"cameras": [{"type": "lens_system", "lens": "double-gauss-50mm", "coating": "wax"}]})");
+  EXPECT_NE(bad_coating.find("$.cameras[0].coating"), std::string::npos) << bad_coating;
+  EXPECT_NE(bad_coating.find("quarter-wave"), std::string::npos) << bad_coating;
+  EXPECT_NE(error_of(R"({"cameras": [{"type": "lens_system", "lens": "double-gauss-50mm",
+                                       "coating": 3}]})")
+                .find("coating"),
+            std::string::npos);
+  const std::string bad_flare = error_of(R"({"render": {"flare": "yes"}})");
+  EXPECT_NE(bad_flare.find("flare"), std::string::npos) << bad_flare;
+}
+
 }  // namespace
 }  // namespace obscura

@@ -1,5 +1,6 @@
 #include "obscura/camera/aperture.h"
 
+#include <algorithm>
 #include <cmath>
 #include <numbers>
 #include <string>
@@ -54,6 +55,29 @@ bool aperture_contains(const Aperture& a, Point2d p) {
     if (side < -kEpsilon) return false;  // outside this (counter-clockwise) edge
   }
   return true;
+}
+
+double aperture_gauge(const Aperture& a, Point2d p) {
+  return ApertureGauge(a)(p);
+}
+
+// The polygon is the intersection of the half-planes n_k · p ≤ cos(π/B), n_k the unit normal
+// through the middle of edge k: the gauge is the largest n_k · p / cos(π/B).
+ApertureGauge::ApertureGauge(const Aperture& a) {
+  if (a.blades == 0) return;
+  const double apothem = std::cos(std::numbers::pi / a.blades);
+  for (int k = 0; k < a.blades; ++k) {
+    double angle =
+        a.rotation_degrees * (std::numbers::pi / 180) + 2 * std::numbers::pi * (k + 0.5) / a.blades;
+    normals_.push_back({std::cos(angle) / apothem, std::sin(angle) / apothem});
+  }
+}
+
+double ApertureGauge::operator()(Point2d p) const {
+  if (normals_.empty()) return std::sqrt(p.x * p.x + p.y * p.y);
+  double largest = 0;
+  for (const Point2d& n : normals_) largest = std::max(largest, p.x * n.x + p.y * n.y);
+  return largest;
 }
 
 std::pair<double, double> aperture_chord(const Aperture& a, double x) {

@@ -3,6 +3,7 @@
 #pragma once
 
 #include <utility>
+#include <vector>
 
 #include "obscura/math/vector.h"
 
@@ -19,6 +20,19 @@ struct Aperture {
 Point2d sample_aperture(const Aperture& a, Point2d u);
 // Whether p (unit-circle coordinates) lies inside the aperture, boundary included.
 bool aperture_contains(const Aperture& a, Point2d p);
+// The smallest s for which p lies in the aperture scaled by s (its gauge): ≤ 1 exactly where
+// aperture_contains holds (up to rounding), and continuous, so that it can be interpolated
+// between traced rays to find the aperture's edge between them (lens flare's ghosts).
+double aperture_gauge(const Aperture& a, Point2d p);
+// The same with the blades' directions computed once, for many points.
+class ApertureGauge {
+ public:
+  explicit ApertureGauge(const Aperture& a);
+  double operator()(Point2d p) const;
+
+ private:
+  std::vector<Point2d> normals_;  // per edge: its outward normal over the polygon's apothem
+};
 // The aperture's extent along y at abscissa x (unit-circle coordinates): [first, second], empty
 // (first > second) where x misses the shape.
 std::pair<double, double> aperture_chord(const Aperture& a, double x);

@@ -181,6 +181,50 @@ std::optional<LensRay> LensSystem::trace(LensRay ray, TraceFrom from,
   return ray;
 }
 
+std::optional<SequenceTrace> LensSystem::trace_sequence(LensRay ray,
+                                                        std::span<const SurfaceVisit> sequence,
+                                                        double wavelength_nm, const StopGauge& stop,
+                                                        std::vector<InterfaceHit>* hits) const {
+  if (hits) hits->clear();
+  const auto& surfaces = prescription_.surfaces;
+  double gauge = 0;
+  for (const SurfaceVisit& visit : sequence) {
+    const int i = visit.surface;
+    const LensSurface& s = surfaces[size_t(i)];
+    // 1. Where the ray meets the surface, and how far outside its opening.
+    const TraceSurface& ts = trace_surfaces_[size_t(i)];
+    std::optional<double> t = intersect(s, ts.aspheric, vertex_z_[size_t(i)], ray);
+    if (!t) return std::nullopt;
+    const Point3d p = ray.origin + ray.direction * *t;
+    if (s.is_stop) {
+      gauge = std::max(gauge, stop.shape({p.x / stop.radius_mm, p.y / stop.radius_mm}));
+      ray.origin = p;
+      continue;
+    }
+    gauge = std::max(gauge, std::sqrt(p.x * p.x + p.y * p.y) / (0.5 * s.aperture_diameter_mm));
+    // 2. The media on either side, by the direction of travel.
+    std::optional<Vector3d> n =
+        ts.aspheric
+            ? facing_normal(s, p, ray.direction)
+            : facing_normal_spherical(s, ts.curvature, vertex_z_[size_t(i)], p, ray.direction);
+    if (!n) return std::nullopt;
+    const bool towards_sensor = ray.direction.z < 0;
+    const double before = index_before(i, wavelength_nm), after = index_after(i, wavelength_nm);
+    const double n_from = towards_sensor ? before : after, n_to = towards_sensor ? after : before;
+    const double cos_i = -dot(*n, ray.direction);
+    if (hits) hits->push_back({i, visit.reflect, cos_i, n_from, n_to});
+    // 3. Reflected (the mirror direction) or refracted.
+    if (visit.reflect) {
+      ray = {p, ray.direction + *n * (2 * cos_i)};
+    } else {
+      std::optional<Vector3d> refracted = refract(ray.direction, *n, n_from / n_to);
+      if (!refracted) return std::nullopt;
+      ray = {p, *refracted};
+    }
+  }
+  return SequenceTrace{ray, gauge};
+}
+
 void LensSystem::measure_first_order() {
   const std::string lens = "lens '" + name() + "'";
   // Near-axial rays behave as paraxial ones: the angles are ~1e-4, so the sines and tangents

@@ -10,6 +10,7 @@
 #pragma once
 
 #include <optional>
+#include <span>
 #include <vector>
 
 #include "obscura/camera/aperture.h"
@@ -43,6 +44,38 @@ struct TraceOptions {
   Point3d* at_stop = nullptr;
 };
 
+// One step of an explicit path through the lens (a ghost's, lens_ghosts.h): the surface met
+// next, and whether the ray reflects off it or refracts through it. The direction of travel is
+// the ray's own (towards −z: to the sensor; +z: back out to the scene).
+struct SurfaceVisit {
+  int surface = 0;
+  bool reflect = false;
+};
+
+// What a sequence's ray met at one interface (the stop is no interface and is not listed): what
+// a coating's reflectance needs.
+struct InterfaceHit {
+  int surface = 0;
+  bool reflect = false;
+  double cos_incidence = 1;     // of the ray with the surface's normal, in (0, 1]
+  double n_from = 1, n_to = 1;  // the indices on the ray's side and on the far side
+};
+
+// The stop's opening as a sequence trace measures it.
+struct StopGauge {
+  double radius_mm = 0;
+  ApertureGauge shape;
+  explicit StopGauge(const StopOpening& stop) : radius_mm(stop.radius_mm), shape(stop.shape) {}
+};
+
+struct SequenceTrace {
+  LensRay ray;  // after the last visit
+  // How far outside the openings the ray went: the largest, over the visits, of the height over
+  // the clear aperture's radius and of the stop opening's gauge (aperture_gauge). ≤ 1: nothing
+  // stopped it. Not clipped during the trace, so that it can be interpolated between rays.
+  double aperture_gauge = 0;
+};
+
 class LensSystem {
  public:
   // Validates the prescription (throws obscura::Error naming the surface and field) and measures
@@ -54,6 +87,14 @@ class LensSystem {
 
   // The ray after the last (from the film: front) surface, or nothing where it is stopped.
   std::optional<LensRay> trace(LensRay ray, TraceFrom from, const TraceOptions& options = {}) const;
+  // The ray through an explicit sequence of surfaces at `wavelength_nm` through `stop`, its
+  // interfaces appended to `hits` when given (cleared first). Nothing where it misses a surface
+  // or is totally reflected where it should refract; apertures do not end it (see
+  // SequenceTrace::aperture_gauge). Through every surface in order without reflections, it is
+  // trace(TraceFrom::scene) with the openings measured instead of applied.
+  std::optional<SequenceTrace> trace_sequence(LensRay ray, std::span<const SurfaceVisit> sequence,
+                                              double wavelength_nm, const StopGauge& stop,
+                                              std::vector<InterfaceHit>* hits = nullptr) const;
 
   // First-order properties at the d line, measured by tracing near-axial rays (heights a
   // thousandth of the stop's radius; such rays follow the paraxial ABCD optics to ~1e-6):
@@ -73,6 +114,8 @@ class LensSystem {
   double rear_aperture_radius_mm() const;
   // The index of the medium in front of surface i (towards the scene) at `wavelength_nm`.
   double index_before(int surface, double wavelength_nm) const;
+  // The index of the medium behind surface i (towards the sensor).
+  double index_after(int surface, double wavelength_nm) const;
 
  private:
   LensPrescription prescription_;
@@ -89,7 +132,6 @@ class LensSystem {
   int stop_ = 0;
   double efl_mm_ = 0, bfd_mm_ = 0, ffd_mm_ = 0, entrance_pupil_mm_ = 0;
 
-  double index_after(int surface, double wavelength_nm) const;
   void measure_first_order();
 };
 

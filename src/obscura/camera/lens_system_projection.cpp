@@ -20,6 +20,7 @@ void validate(const LensSystemProjection& p) {
                                          number_text(widest) + " at most; got f/" +
                                          number_text(*p.f_number));
   }
+  validate(p.coating);
 }
 
 }  // namespace obscura

@@ -8,6 +8,7 @@
 #include <memory>
 #include <optional>
 
+#include "obscura/camera/lens_coating.h"
 #include "obscura/camera/lens_system.h"
 
 namespace obscura {
@@ -18,10 +19,13 @@ struct LensSystemProjection {
   double sensor_width_mm = 36;
   // Stops the iris down from the lens's widest opening (≥ lens->f_number()); nothing: wide open.
   std::optional<double> f_number;
+  // The anti-reflection coating of its air–glass surfaces: what its ghost flares reflect
+  // (lens_ghosts.h). A single quarter-wave layer of magnesium fluoride by default.
+  LensCoating coating = quarter_wave_coating();
 };
 
 // Throws obscura::Error naming the field: no lens, a sensor width that is not positive, an
-// f-number below the lens's widest.
+// f-number below the lens's widest, an invalid coating.
 void validate(const LensSystemProjection& p);
 
 }  // namespace obscura

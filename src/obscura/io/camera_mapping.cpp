@@ -8,6 +8,7 @@
 
 #include "obscura/camera/builtin_lenses.h"
 #include "obscura/camera/frames.h"
+#include "obscura/camera/lens_coating.h"
 #include "obscura/camera/lens_prescription_file.h"
 #include "obscura/io/calibrated_camera_json.h"
 #include "obscura/math/error.h"
@@ -76,7 +77,7 @@ Perspective perspective_from_json(JsonReader& json) {
 }
 
 // A lens-system camera: a built-in lens by name or a prescription file (relative to the scene
-// file), the sensor's width, and an f-number that stops the iris down.
+// file), the sensor's width, an f-number that stops the iris down, and its coating.
 LensSystemProjection lens_system_from_json(JsonReader& json) {
   if (json.has("lens") == json.has("lens_file"))
     json.fail("lens", "a lens_system camera needs one of lens (a built-in name) or lens_file");
@@ -94,6 +95,14 @@ LensSystemProjection lens_system_from_json(JsonReader& json) {
   }
   p.sensor_width_mm = json.number_in("sensor_width_mm", 36, 1e-3, 1e4);
   if (json.has("f_number")) p.f_number = json.number_in("f_number", 0, 1e-3, 1e4);
+  if (json.has("coating")) {
+    try {
+      p.coating = parse_lens_coating(json.string("coating"));
+    } catch (const Error& e) {
+      std::string message = e.what();
+      json.fail("coating", message.substr(e.where().size() + 2));  // without parse's own field
+    }
+  }
   return p;
 }
 

@@ -65,6 +65,7 @@ class JsonSceneReader {
     if (json.has("glare")) scene_.render.glare_strength = json.number_in("glare", 1, 0, 1000);
     if (json.has("glare_radius"))
       scene_.render.glare_radius_px = json.integer("glare_radius", 256, 1, 4096);
+    if (json.has("flare")) scene_.render.flare = json.boolean("flare", false);
     json.finish();
   }
 

@@ -33,6 +33,8 @@ struct SceneRenderSettings {
   // Diffraction glare (render/camera_glare.h): its strength (1 = the aperture's own) and radius.
   std::optional<double> glare_strength;
   std::optional<int> glare_radius_px;
+  // Ghost flares of a lens-system camera (render/lens_flare.h).
+  std::optional<bool> flare;
 };
 
 // Counts for `obscura info` and benchmarks.
