@@ -7,6 +7,7 @@
 #include <string>
 
 #include "obscura/math/error.h"
+#include "obscura/math/golden_section.h"
 #include "obscura/math/number_text.h"
 
 namespace obscura {
@@ -144,20 +145,7 @@ double FocusedLensSystem::best_focus(double focus_distance_mm, double paraxial_m
   };
   // The spot is centred on the axis by symmetry; search ±2 % of the focal length.
   const double span = 0.02 * lens.effective_focal_length_mm();
-  const double golden = (std::sqrt(5.0) - 1) / 2;
-  double a = paraxial_mm - span, b = paraxial_mm + span;
-  double c = b - golden * (b - a), d = a + golden * (b - a);
-  double fc = rms_spot(c), fd = rms_spot(d);
-  for (int i = 0; i < 60; ++i) {
-    if (fc < fd) {
-      b = d, d = c, fd = fc;
-      c = b - golden * (b - a), fc = rms_spot(c);
-    } else {
-      a = c, c = d, fc = fd;
-      d = a + golden * (b - a), fd = rms_spot(d);
-    }
-  }
-  double best = 0.5 * (a + b);
+  double best = golden_section_minimum(rms_spot, paraxial_mm - span, paraxial_mm + span, 60);
   return std::isfinite(rms_spot(best)) && best > 0 ? best : paraxial_mm;
 }
 

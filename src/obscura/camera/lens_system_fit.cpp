@@ -11,6 +11,7 @@
 #include <tbb/parallel_for.h>
 
 #include "obscura/math/error.h"
+#include "obscura/math/golden_section.h"
 #include "obscura/math/least_squares.h"
 
 namespace obscura {
@@ -179,19 +180,7 @@ double centre_of_projection(const std::vector<LensFieldPoint>& field, double par
         e = std::max(e, std::abs(w[i] * (field[i].pupil_distance_mm - c)));
     return e;
   };
-  const double golden = (std::sqrt(5.0) - 1) / 2;
-  double a = lo, b = hi, c = b - golden * (b - a), d = a + golden * (b - a);
-  double fc = worst(c), fd = worst(d);
-  for (int i = 0; i < 80 && b - a > 1e-9 * (1 + std::abs(b)); ++i) {
-    if (fc < fd) {
-      b = d, d = c, fd = fc;
-      c = b - golden * (b - a), fc = worst(c);
-    } else {
-      a = c, c = d, fc = fd;
-      d = a + golden * (b - a), fd = worst(d);
-    }
-  }
-  return 0.5 * (a + b);
+  return golden_section_minimum(worst, lo, hi, 80, 1e-9 * (1 + std::abs(hi)));
 }
 
 }  // namespace

@@ -77,6 +77,18 @@ Image RenderTarget::resolve_color() const {
 }
 
 void RenderTarget::accumulate_into(Film& film, float weight) const {
+  accumulate(film, weight, nullptr);
+}
+
+void RenderTarget::accumulate_into(Film& film, const std::vector<float>& gain) const {
+  if (gain.size() != size_t(width_) * size_t(height_))
+    throw Error("render target", "gain for " + std::to_string(gain.size()) +
+                                     " pixels; the target has " + std::to_string(width_) + "x" +
+                                     std::to_string(height_));
+  accumulate(film, 1.f, gain.data());
+}
+
+void RenderTarget::accumulate(Film& film, float weight, const float* gain) const {
   if (film.width() != width_ || film.height() != height_)
     throw Error("render target", "film size " + std::to_string(film.width()) + "x" +
                                      std::to_string(film.height()) + " differs from " +
@@ -88,23 +100,8 @@ void RenderTarget::accumulate_into(Film& film, float weight) const {
       if (!draws_pixel(x, y)) continue;
       Rgb sum;
       for (int s = 0; s < samples_; ++s) sum += color(sample_index(x, y, s));
-      film.add_sample({x, y}, sum * inv, weight);
-    }
-  });
-}
-
-void RenderTarget::accumulate_into(Film& film, const std::vector<float>& gain) const {
-  if (film.width() != width_ || film.height() != height_ ||
-      gain.size() != size_t(width_) * size_t(height_))
-    throw Error("render target", "film or gain size differs from the target's " +
-                                     std::to_string(width_) + "x" + std::to_string(height_));
-  const float inv = 1.f / float(samples_);
-  tbb::parallel_for(0, height_, [&](int y) {
-    for (int x = 0; x < width_; ++x) {
-      if (!draws_pixel(x, y)) continue;
-      Rgb sum;
-      for (int s = 0; s < samples_; ++s) sum += color(sample_index(x, y, s));
-      film.add_sample({x, y}, sum * (inv * gain[size_t(y) * size_t(width_) + size_t(x)]), 1.f);
+      const float scale = gain ? inv * gain[size_t(y) * size_t(width_) + size_t(x)] : inv;
+      film.add_sample({x, y}, sum * scale, weight);
     }
   });
 }

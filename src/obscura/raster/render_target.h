@@ -107,6 +107,9 @@ class RenderTarget {
   Image normal_image() const;
 
  private:
+  // accumulate_into's work: each pixel's resolved colour, times gain[pixel] when there is one.
+  void accumulate(Film& film, float weight, const float* gain) const;
+
   int width_, height_, samples_, stride_;
   bool aovs_;
   int share_part_ = 0, share_parts_ = 1;
