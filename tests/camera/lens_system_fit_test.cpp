@@ -13,6 +13,7 @@
 #include <memory>
 #include <numbers>
 
+#include "camera/thin_element.h"
 #include "lens_optics.h"
 #include "obscura/camera/builtin_lenses.h"
 #include "obscura/math/error.h"
@@ -40,19 +41,6 @@ Camera lens_camera(std::shared_ptr<const LensSystem> lens, double focus_m = kInf
   return c;
 }
 
-// A biconvex element, R = ±100 mm, 1 mm thick, n 1.5 (f ≈ 100 mm), its stop at the front
-// vertex: nothing in front of the stop, so every chief ray crosses the axis there.
-LensPrescription thin_element() {
-  LensPrescription p;
-  p.name = "thin element";
-  p.surfaces = {
-      {.radius_mm = 0, .thickness_mm = 0, .n_d = 1, .aperture_diameter_mm = 12, .is_stop = true},
-      {.radius_mm = 100, .thickness_mm = 1, .n_d = 1.5, .aperture_diameter_mm = 30},
-      {.radius_mm = -100, .n_d = 1, .aperture_diameter_mm = 30},
-  };
-  return p;
-}
-
 // The raster point of image point `image_mm` (x right, y up on the sensor).
 Point2d raster_of(Point2d image_mm) {
   return {(image_mm.x / 36 + 0.5) * kWidth, (0.5 - image_mm.y / kSensorHeightMm) * kHeight};
@@ -77,7 +65,7 @@ double paraxial_chief_slope(const LensPrescription& p, double film_mm) {
 }
 
 TEST(LensSystemFit, ThinElementFitsItsParaxialFocalLengthWithoutDistortionAndCosFourth) {
-  auto lens = std::make_shared<const LensSystem>(thin_element());
+  auto lens = std::make_shared<const LensSystem>(test::thin_element());
   const test::ParaxialOptics optics = test::paraxial_optics(lens->prescription());
   Camera camera = lens_camera(lens);
   auto focused = focused_lens_system(lens, camera.lens_system_settings());

@@ -7,6 +7,7 @@
 #include <cmath>
 #include <memory>
 
+#include "camera/thin_element.h"
 #include "lens_optics.h"
 #include "obscura/camera/focused_lens_system.h"
 #include "obscura/scene/scene.h"
@@ -19,19 +20,6 @@ namespace {
 
 constexpr int kWidth = 48, kHeight = 32;
 constexpr double kFocusM = 2;  // from the thin lens
-
-// A biconvex element, R = ±100 mm, 1 mm thick, n 1.5 (f ≈ 100 mm), with the stop at its front
-// vertex: at f/8 its aberrations blur a point by a few micrometres, far below a pixel.
-LensPrescription thin_element() {
-  LensPrescription p;
-  p.name = "thin element";
-  p.surfaces = {
-      {.radius_mm = 0, .thickness_mm = 0, .n_d = 1, .aperture_diameter_mm = 12, .is_stop = true},
-      {.radius_mm = 100, .thickness_mm = 1, .n_d = 1.5, .aperture_diameter_mm = 30},
-      {.radius_mm = -100, .n_d = 1, .aperture_diameter_mm = 30},
-  };
-  return p;
-}
 
 // Emitting squares: a checkerboard on the focus plane and one square in front of it, out of
 // focus.
@@ -71,7 +59,7 @@ double rmse(const Image& a, const Image& b) {
 }
 
 TEST(LensSystemRender, ThinElementConvergesToTheThinLensImage) {
-  const LensPrescription element = thin_element();
+  const LensPrescription element = test::thin_element();
   const test::ParaxialOptics optics = test::paraxial_optics(element);
   const double sensor_width_mm = 12;
   Scene scene = squares();
@@ -135,7 +123,7 @@ TEST(LensSystemRender, ThinElementConvergesToTheThinLensImage) {
 // n_F > n_C), while the default wavelength is the d line. The spectral tracer then gives each
 // camera ray its path's hero wavelength and renders a lit image.
 TEST(LensSystemRender, ADispersiveLensBendsEachWavelengthItsOwnWay) {
-  LensPrescription element = thin_element();
+  LensPrescription element = test::thin_element();
   auto camera_with = [&](double abbe_number) {
     LensPrescription p = element;
     p.surfaces[1].abbe_number = abbe_number;
