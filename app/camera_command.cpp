@@ -246,7 +246,9 @@ void run_camera(const CameraCommandOptions& options) {
   if (options.width && options.height) check_image_size(*options.width, *options.height, true);
   Scene scene = load_scene(options.scene);
   if (options.output && !options.export_format) throw UsageError("--output needs --export FORMAT");
-  Camera camera = resolve_camera(scene, options.overrides, options.width, options.height);
+  std::vector<std::string> notes;
+  Camera camera = resolve_camera(scene, options.overrides, options.width, options.height, &notes);
+  for (const std::string& note : notes) std::fprintf(stderr, "warning: %s\n", note.c_str());
   if (options.export_format) {
     export_calibration(camera, *options.export_format, options.output);
     return;

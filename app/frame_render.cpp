@@ -13,6 +13,7 @@
 #include "obscura/math/error.h"
 #include "obscura/raster/ground_truth_render.h"
 #include "obscura/render/camera_glare.h"
+#include "obscura/render/frame_request.h"
 #include "obscura/render/lens_flare.h"
 #include "obscura/scene/material_variants.h"
 #include "option_ranges.h"
@@ -23,15 +24,27 @@ namespace obscura::app {
 namespace {
 
 // The scene file's suggested settings, where the command line did not give them.
+// What the command line asked of the frame beyond the camera: the options given.
+FrameRequest frame_request(const RenderOptions& o) {
+  FrameRequest r;
+  if (o.spp_given) r.samples_per_pixel = o.spp;
+  if (o.seed_given) r.seed = o.seed;
+  if (o.tracer.spectral_option && o.tracer.spectral_option->count() > 0)
+    r.spectral = o.tracer.spectral;
+  r.glare = o.glare.on;
+  r.glare_strength = o.glare.strength;
+  r.glare_radius_px = o.glare.radius_px;
+  if (o.flare) r.flare = true;
+  return r;
+}
+
+// The scene file's settings where the command line did not give them (render/frame_request.h;
+// the film's size is resolve_camera's).
 void apply_scene_settings(const SceneRenderSettings& s, RenderOptions& o) {
-  if (s.width && !o.width_given) o.width = *s.width;
-  if (s.height && !o.height_given) o.height = *s.height;
-  if (s.samples_per_pixel && !o.spp_given) o.spp = *s.samples_per_pixel;
-  if (s.seed && !o.seed_given) o.seed = *s.seed;
-  // A scene's wish for spectral transport applies where it can: to the path tracer.
-  const bool spectral_given = o.tracer.spectral_option && o.tracer.spectral_option->count() > 0;
-  if (s.spectral && !spectral_given && o.tracer.renderer == Renderer::kPath)
-    o.tracer.spectral = *s.spectral;
+  const ResolvedFrameRequest r = resolve_frame_request(frame_request(o), s, o.tracer.renderer);
+  o.spp = r.samples_per_pixel;
+  o.seed = r.seed;
+  o.tracer.spectral = r.spectral;
 }
 
 void validate(const RenderOptions& o) {
@@ -58,7 +71,8 @@ void validate(const RenderOptions& o) {
 }  // namespace
 
 bool flare_requested(const RenderOptions& options, const SceneRenderSettings& scene) {
-  return options.flare || scene.flare.value_or(false);
+  return resolve_frame_request(frame_request(options), scene, options.tracer.renderer)
+      .flare.has_value();
 }
 
 Scene prepare_scene(RenderOptions& options, bool writes_output) {
@@ -69,7 +83,7 @@ Scene prepare_scene(RenderOptions& options, bool writes_output) {
   if (writes_output) check_output_path(options.output);  // fail before rendering, not after
 
   // Skins and morph targets are posed when the file is read, at the shutter's middle.
-  const Shutter shutter = shutter_option(options.camera);
+  const Shutter shutter = requested_shutter(options.camera);
   Scene scene = obscura::load_scene(options.scene, gltf_load_options(options.choice, shutter));
   if (!options.gltf_variant.empty()) select_material_variant(scene, options.gltf_variant);
   EnvironmentChoice environment = parse_environment_choice(options.environment);
@@ -84,8 +98,12 @@ Scene prepare_scene(RenderOptions& options, bool writes_output) {
         check_not_an_input(aov, scene.input_files);
   }
   apply_scene_settings(scene.render, options);
+  scene.camera = resolve_camera(
+      scene, options.camera, options.width_given ? std::optional(options.width) : std::nullopt,
+      options.height_given ? std::optional(options.height) : std::nullopt, &scene.warnings);
+  options.width = scene.camera.film.width_px;
+  options.height = scene.camera.film.height_px;
   check_image_size(options.width, options.height, options.width_given || options.height_given);
-  scene.camera = resolve_camera(scene, options.camera, options.width, options.height);
   scene.camera.shutter = shutter_at_time(options.choice, scene.camera.shutter);
   scene.validate();
   if (flare_requested(options, scene.render) &&
@@ -96,7 +114,9 @@ Scene prepare_scene(RenderOptions& options, bool writes_output) {
     if (options.flare) throw UsageError("--flare: " + message);
     throw obscura::Error("render.flare", message);
   }
-  if (auto glare = glare_settings(options.glare, scene.render)) {
+  if (auto glare =
+          resolve_frame_request(frame_request(options), scene.render, options.tracer.renderer)
+              .glare) {
     validate(*glare);  // a camera without a sensor fails here, before rendering
     diffraction_optics(scene.camera);
   }
@@ -113,7 +133,8 @@ TileDeal tile_deal(Renderer renderer, int width, int height, int parts) {
   return {.width = width, .height = height, .tile_size = tile_size(renderer), .parts = parts};
 }
 
-FrameSettings frame_settings(const RenderOptions& options, const WorkShare& share) {
+FrameSettings frame_settings(const RenderOptions& options, const SceneRenderSettings& scene,
+                             const WorkShare& share) {
   FrameSettings settings{.renderer = options.tracer.renderer,
                          .samples_per_pixel = samples_per_pixel(options.tracer, options.spp),
                          .seed = options.seed,
@@ -122,30 +143,29 @@ FrameSettings frame_settings(const RenderOptions& options, const WorkShare& shar
                          .spectral = options.tracer.spectral,
                          .time_limit_s = options.tracer.time_limit_s,
                          .cancel = &InterruptGuard::requested(),
-                         .share = share};
+                         .share = share,
+                         .raster = {},
+                         .glare = std::nullopt,
+                         .flare = std::nullopt};
   apply_raster_options(options.raster, settings.raster);
   apply_raster_effects_options(options.raster_effects, settings.raster);
+  const ResolvedFrameRequest finishing =
+      resolve_frame_request(frame_request(options), scene, options.tracer.renderer);
+  settings.glare = finishing.glare;
+  settings.flare = finishing.flare;
   return settings;
 }
 
 RenderedFrame render_frame(const Scene& scene, const RenderOptions& options, const WorkShare& share,
                            const ProgressCallback& progress) {
-  const FrameSettings settings = frame_settings(options, share);
-  Bounds2i crop = scene.camera.film.crop_pixels();
-  Film film(crop.width(), crop.height());
+  const FrameSettings settings = frame_settings(options, scene.render, share);
   RenderedFrame frame;
-  if (options.tracer.aovs) frame.aovs.emplace(film.width(), film.height());
-  FrameStats stats = obscura::render_frame(scene, scene.camera, settings, film,
-                                           frame.aovs ? &*frame.aovs : nullptr, progress);
+  static_cast<obscura::RenderedFrame&>(frame) =
+      obscura::render_frame(scene, scene.camera, settings, options.tracer.aovs, progress);
+  const FrameStats& stats = frame.stats;
   // Without --spp, a time limit asks the tracer for as many samples as fit: reaching it
   // completes the render.
   const bool open_ended = is_tracer(settings.renderer) && settings.samples_per_pixel != options.spp;
-  frame.renderer = settings.renderer;
-  frame.film_sums = film.sums();
-  frame.post_dof_depth = std::move(stats.post_dof_depth);
-  frame.glare = glare_settings(options.glare, scene.render);
-  if (flare_requested(options, scene.render))
-    frame.flare = lens_flare_image(scene, scene.camera, {}, &frame.flare_stats);
   frame.progress = {.end = stats.cancelled                     ? RenderEnd::kInterrupted
                            : stats.time_limited && !open_ended ? RenderEnd::kTimeLimit
                                                                : RenderEnd::kComplete,
@@ -153,7 +173,7 @@ RenderedFrame render_frame(const Scene& scene, const RenderOptions& options, con
                     .requested = stats.requested,
                     .unit = is_tracer(settings.renderer) ? "samples per pixel" : "frames"};
   frame.time_limit_reached = open_ended && stats.time_limited;
-  frame.warnings = std::move(stats.warnings);
+  frame.warnings = stats.warnings;
   frame.seconds = stats.seconds;
   frame.rays = stats.rays;
   return frame;
@@ -169,24 +189,14 @@ void gather_frame(Team& team, RenderedFrame& frame) {
     for (AovImage& aov : images) team.gather(deal, aov.image);
     frame.aovs = AovBuffers::from_images(images);
   }
-  if (frame.post_dof_depth) team.gather(deal, *frame.post_dof_depth);
-}
-
-Image finished_image(const RenderedFrame& frame, const Camera& camera) {
-  Film film = Film::from_sums(frame.film_sums);
-  if (frame.post_dof_depth) raster::apply_depth_of_field_post(film, *frame.post_dof_depth, camera);
-  Image image = film.to_image();
-  if (frame.flare) add_lens_flare(image, *frame.flare);
-  if (frame.glare) apply_glare(image, camera, *frame.glare);
-  return image;
+  for (AovImage& layer : frame.layers) team.gather(deal, layer.image);
 }
 
 void write_frame(const RenderOptions& options, const std::string& output,
-                 const RenderedFrame& frame, const Camera& camera) {
+                 const RenderedFrame& frame) {
   ImageWriteOptions write_options = image_write_options(options.display);
   write_options.metadata = partial_metadata(frame.progress);
-  report_write(output, write_image(output, finished_image(frame, camera), write_options),
-               options.quiet);
+  report_write(output, write_image(output, frame.finished(), write_options), options.quiet);
   warn_if_unmarked(output, frame.progress, options.quiet);
   std::printf("%s\n", output.c_str());
   if (frame.aovs)

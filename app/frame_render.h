@@ -8,7 +8,6 @@
 #include <vector>
 
 #include "obscura/film/aov_buffers.h"
-#include "obscura/film/glare.h"
 #include "obscura/film/image.h"
 #include "obscura/film/tiles.h"
 #include "obscura/film/work_share.h"
@@ -21,17 +20,9 @@
 
 namespace obscura::app {
 
-struct RenderedFrame {
-  Renderer renderer = Renderer::kPath;
-  Image film_sums;  // Film::sums(): Σ w·L and Σ w per pixel
-  std::optional<AovBuffers> aovs;
-  // The rasterizer's --raster-dof post on a frame in parts: applied once it is assembled.
-  std::optional<Image> post_dof_depth;
-  // Diffraction glare, applied to the assembled frame (after the depth-of-field post).
-  std::optional<GlareSettings> glare;
-  // Ghost flares (render/lens_flare.h) in the film's units, added before the glare.
-  std::optional<Image> flare;
-  FlareStats flare_stats;
+// The library's frame (film sums, AOVs, finishing layers and recipe) with how the render ended,
+// as the command line reports it.
+struct RenderedFrame : obscura::RenderedFrame {
   RenderProgress progress;
   std::vector<std::string> warnings;
   double seconds = 0;               // this process's
@@ -52,23 +43,23 @@ bool flare_requested(const RenderOptions& options, const SceneRenderSettings& sc
 // rasterizer's 64-pixel bins).
 TileDeal tile_deal(Renderer renderer, int width, int height, int parts);
 
-// The library's settings for the options (validated by prepare_scene), the tiles `share` owns.
-FrameSettings frame_settings(const RenderOptions& options, const WorkShare& share);
+// The library's settings for the options (validated by prepare_scene) and the scene file's
+// render settings, the tiles `share` owns.
+FrameSettings frame_settings(const RenderOptions& options, const SceneRenderSettings& scene,
+                             const WorkShare& share);
 
 // Renders the scene with its camera (resolved by the options), the tiles `share` owns, through
 // the library's render_frame.
 RenderedFrame render_frame(const Scene& scene, const RenderOptions& options, const WorkShare& share,
                            const ProgressCallback& progress = {});
 
-// Rank 0 receives every rank's pixels of the film and the auxiliary images (rank = part).
+// Rank 0 receives every rank's pixels of the film, the auxiliary images and the finishing layers
+// (rank = part).
 void gather_frame(Team& team, RenderedFrame& frame);
-
-// The whole frame's film as the image to write: the post-process applied where asked for.
-Image finished_image(const RenderedFrame& frame, const Camera& camera);
 
 // Writes the image (marked partial when it is) and the auxiliary images beside it; prints the
 // paths on stdout (the image first) and sets the exit status that says how the render ended.
 void write_frame(const RenderOptions& options, const std::string& output,
-                 const RenderedFrame& frame, const Camera& camera);
+                 const RenderedFrame& frame);
 
 }  // namespace obscura::app

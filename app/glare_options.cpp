@@ -20,16 +20,4 @@ void add_glare_options(CLI::App& render, GlareOptions& o) {
       ->check(integer_in(1, 4096));
 }
 
-std::optional<GlareSettings> glare_settings(const GlareOptions& o,
-                                            const SceneRenderSettings& scene) {
-  if (!o.on && !o.strength && !scene.glare_strength) return std::nullopt;
-  GlareSettings settings;
-  settings.strength = o.strength ? *o.strength : scene.glare_strength.value_or(1.0);
-  if (o.radius_px)
-    settings.radius_px = *o.radius_px;
-  else if (scene.glare_radius_px)
-    settings.radius_px = *scene.glare_radius_px;
-  return settings;
-}
-
 }  // namespace obscura::app

@@ -6,9 +6,6 @@
 
 #include <CLI/CLI.hpp>
 
-#include "obscura/film/glare.h"
-#include "obscura/scene/scene.h"
-
 namespace obscura::app {
 
 struct GlareOptions {
@@ -18,10 +15,5 @@ struct GlareOptions {
 };
 
 void add_glare_options(CLI::App& render, GlareOptions& options);
-
-// The glare asked for by the options, else by the scene file's render settings; nothing when
-// neither asks.
-std::optional<GlareSettings> glare_settings(const GlareOptions& options,
-                                            const SceneRenderSettings& scene);
 
 }  // namespace obscura::app

@@ -7,9 +7,9 @@
 #include <vector>
 
 #include "camera_options.h"
-#include "number_list_option.h"
 #include "obscura/io/ground_truth_file.h"
 #include "obscura/io/image_io.h"
+#include "obscura/math/number_list.h"
 #include "obscura/render/ground_truth_frame.h"
 #include "usage_error.h"
 

@@ -14,6 +14,7 @@
 #include "info_command.h"
 #include "merge_command.h"
 #include "obscura/math/error.h"
+#include "obscura/math/request_error.h"
 #include "partial_render.h"
 #include "raster_clip_command.h"
 #include "render_command.h"
@@ -89,6 +90,9 @@ int run(int argc, char** argv) {
     if (*e.what()) std::fprintf(stderr, "obscura: error: %s\n", e.what());
     return 1;
   } catch (const obscura::app::UsageError& e) {
+    std::fprintf(stderr, "obscura: %serror: %s\n", rank_prefix().c_str(), e.what());
+    return fail(2);
+  } catch (const obscura::RequestError& e) {  // a value asked for, as a usage error
     std::fprintf(stderr, "obscura: %serror: %s\n", rank_prefix().c_str(), e.what());
     return fail(2);
   } catch (const std::bad_alloc&) {

@@ -30,8 +30,8 @@ void run_merge(const MergeOptions& options) {
   if (!options.render.quiet && frame.progress.partial())
     std::fprintf(stderr, "warning: the parts were stopped early%s\n",
                  partial_note(frame.progress).c_str());
-  // The camera matters only for a post-process, which --shard refuses.
-  write_frame(options.render, options.render.output, frame, Camera());
+  // Finished as one process finishes it: the parts carry the recipe and its layers.
+  write_frame(options.render, options.render.output, frame);
 }
 
 }  // namespace

@@ -76,7 +76,7 @@ void print_summary(const RenderOptions& options, const Scene& scene, const Rende
                  : frame.time_limit_reached ? " [time limit reached]"
                                             : "");
   }
-  if (frame.flare) {
+  if (frame.finish.flare) {
     const FlareStats& f = frame.flare_stats;
     std::fprintf(stderr,
                  "flare: %d sources, %d ghosts imaged, %d faint or missing, %.2f Mrays in %s\n",
@@ -106,21 +106,6 @@ void run_render(RenderOptions options, const std::string& job) {
       throw UsageError(
           "--shard splits a frame between separate processes; under mpirun the "
           "ranks share the frame already (leave --shard out)");
-    if (options.tracer.renderer == Renderer::kRaster &&
-        raster::parse_depth_of_field_method(options.raster_effects.dof) ==
-            raster::DepthOfFieldMethod::kPost)
-      throw UsageError(
-          "--shard: --raster-dof post blurs the whole frame, which no part has; "
-          "use --raster-dof accumulate, or render the frame in one process or "
-          "under mpirun");
-    if (options.flare)
-      throw UsageError(
-          "--shard: --flare spreads a light's ghosts across the whole frame, which no part has; "
-          "render the frame in one process or under mpirun");
-    if (options.glare.on || options.glare.strength)
-      throw UsageError(
-          "--shard: --glare spreads light across the whole frame, which no part has; render "
-          "the frame in one process or under mpirun");
     if (!options.ground_truth.path.empty())
       throw UsageError(
           "--ground-truth is not written by --shard parts: render the ground truth in one "
@@ -155,7 +140,8 @@ void run_render(RenderOptions options, const std::string& job) {
   // The tracer always shows progress; the rasterizer only when it accumulates several frames.
   const bool bar_wanted =
       is_tracer(options.tracer.renderer) ||
-      raster::wants_effects(scene, scene.camera, frame_settings(options, share).raster);
+      raster::wants_effects(scene, scene.camera,
+                            frame_settings(options, scene.render, share).raster);
   ProgressBar bar("render", !speaks || !bar_wanted);
   RenderedFrame frame =
       render_frame(scene, options, share, [&](int done, int total) { bar.update(done, total); });
@@ -185,7 +171,7 @@ void run_render(RenderOptions options, const std::string& job) {
       for (const std::string& w : frame.warnings) std::fprintf(stderr, "warning: %s\n", w.c_str());
       print_summary(options, scene, frame, ranks, rays, seconds);
     }
-    write_frame(options, options.output, frame, scene.camera);
+    write_frame(options, options.output, frame);
     // Rank 0 alone: the ground truth is one ray per pixel, not worth dealing out.
     if (!options.ground_truth.path.empty())
       std::printf("%s\n", write_ground_truth_file(options.ground_truth, frame.renderer,

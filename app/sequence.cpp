@@ -223,12 +223,12 @@ void run_sequence(RenderOptions options, Team& team) {
                      rank_prefix().c_str(), n, frame_options.output.c_str());
         continue;
       }
-      write_frame(frame_options, frame_options.output, frame, scene.camera);
+      write_frame(frame_options, frame_options.output, frame);
       continue;
     }
     DisplaySettings display = image_write_options(options.display).display;
     display.bits = 8;
-    DisplayImage developed = develop(pixels_of(finished_image(frame, scene.camera)), display);
+    DisplayImage developed = develop(pixels_of(frame.finished()), display);
     if (team.alone()) {
       if (!video_writer)
         video_writer = std::make_unique<Y4mWriter>(options.output, developed.width,

@@ -13,7 +13,10 @@ namespace obscura::app {
 
 namespace {
 
-constexpr const char* kFormat = "obscura partial film 1";
+// Version 2 added the finishing layers and recipe (obscura:layers, obscura:finish); version 1
+// parts, which have neither, are still read.
+constexpr const char* kFormat = "obscura partial film 2";
+constexpr const char* kFormatWithoutFinishing = "obscura partial film 1";
 // obscura:aovs of a part without auxiliary images: an empty string attribute is not kept in an
 // OpenEXR file (OpenImageIO drops it), and a missing one must stay an error.
 constexpr const char* kNoAovs = "none";
@@ -76,6 +79,13 @@ std::vector<AovImage> aov_images(const RenderedFrame& frame) {
   return frame.aovs ? frame.aovs->images() : std::vector<AovImage>();
 }
 
+std::string optional_attribute(const ImageMetadata& m, const std::string& name,
+                               const std::string& otherwise) {
+  for (const auto& [key, value] : m.attributes)
+    if (key == name) return value;
+  return otherwise;
+}
+
 std::vector<std::string> split(const std::string& text, char separator) {
   std::vector<std::string> parts;
   if (text.empty()) return parts;
@@ -106,17 +116,21 @@ void write_shard(const std::string& path, const RenderedFrame& frame, ShardSpec 
                  const std::string& job) {
   const Image& sums = frame.film_sums;
   const std::vector<AovImage> aovs = aov_images(frame);
+  // The auxiliary images, then the finishing layers: one list of channels after R, G, B, W.
+  std::vector<AovImage> images = aovs;
+  images.insert(images.end(), frame.layers.begin(), frame.layers.end());
   int channels = sums.channels;
-  for (const AovImage& aov : aovs) channels += aov.image.channels;
+  for (const AovImage& image : images) channels += image.image.channels;
   Image data(sums.width, sums.height, channels);
   data.channel_names = {"R", "G", "B", "W"};
-  for (const AovImage& aov : aovs)
-    for (const std::string& name : stored_channels(aov)) data.channel_names.push_back(name);
+  for (const AovImage& image : images)
+    for (const std::string& name : stored_channels(image)) data.channel_names.push_back(name);
   for (size_t p = 0; p < size_t(sums.width) * sums.height; ++p) {
     float* out = &data.data[p * size_t(channels)];
     out = std::copy_n(&sums.data[p * 4], 4, out);
-    for (const AovImage& aov : aovs)
-      out = std::copy_n(&aov.image.data[p * size_t(aov.image.channels)], aov.image.channels, out);
+    for (const AovImage& image : images)
+      out = std::copy_n(&image.image.data[p * size_t(image.image.channels)], image.image.channels,
+                        out);
   }
   const TileDeal deal = tile_deal(frame.renderer, sums.width, sums.height, spec.parts);
   ImageMetadata metadata;
@@ -130,6 +144,8 @@ void write_shard(const std::string& path, const RenderedFrame& frame, ShardSpec 
       {"obscura:renderer", renderer_name(frame.renderer)},
       {"obscura:job", job},
       {"obscura:aovs", aovs.empty() ? kNoAovs : aov_layout(aovs)},
+      {"obscura:layers", frame.layers.empty() ? kNoAovs : aov_layout(frame.layers)},
+      {"obscura:finish", frame_finish_text(frame.finish)},
       {"obscura:end", end_name(frame.progress.end)},
       {"obscura:done", std::to_string(frame.progress.done)},
       {"obscura:requested", std::to_string(frame.progress.requested)},
@@ -140,7 +156,8 @@ void write_shard(const std::string& path, const RenderedFrame& frame, ShardSpec 
 ShardFile read_shard(const std::string& path) {
   ImageMetadata m;
   Image data = read_exr_data(path, m);
-  if (attribute(m, path, "obscura:format") != kFormat)
+  const std::string format = attribute(m, path, "obscura:format");
+  if (format != kFormat && format != kFormatWithoutFinishing)
     throw Error(path, "obscura:format: expected '" + std::string(kFormat) + "'");
   ShardFile shard;
   shard.path = path;
@@ -175,25 +192,37 @@ ShardFile read_shard(const std::string& path) {
   frame.progress.requested = int_attribute(m, path, "obscura:requested", 1, 1 << 30);
   frame.progress.unit = attribute(m, path, "obscura:unit");
 
-  // The channels: R, G, B, W, then each auxiliary image's, as obscura:aovs lists them.
-  std::string aovs = attribute(m, path, "obscura:aovs");
-  if (aovs == kNoAovs) aovs.clear();
-  std::vector<std::pair<std::string, std::vector<std::string>>> layout;
-  for (const std::string& entry : split(aovs, ';')) {
-    size_t equals = entry.find('=');
-    std::vector<std::string> names = equals == std::string::npos
-                                         ? std::vector<std::string>()
-                                         : split(entry.substr(equals + 1), ',');
-    if (equals == 0 || names.empty() || names.size() > 4)
-      throw Error(path, "obscura:aovs: expected name=channel,…;…; got '" + aovs + "'");
-    layout.emplace_back(entry.substr(0, equals), names);
-  }
+  // The channels: R, G, B, W, then each auxiliary image's, as obscura:aovs lists them, then
+  // each finishing layer's, as obscura:layers lists them.
+  auto parse_layout = [&](const std::string& key) {
+    std::string text = optional_attribute(m, key, kNoAovs);
+    if (text == kNoAovs) text.clear();
+    std::vector<std::pair<std::string, std::vector<std::string>>> entries;
+    for (const std::string& entry : split(text, ';')) {
+      size_t equals = entry.find('=');
+      std::vector<std::string> names = equals == std::string::npos
+                                           ? std::vector<std::string>()
+                                           : split(entry.substr(equals + 1), ',');
+      if (equals == 0 || names.empty() || names.size() > 4)
+        throw Error(path, key + ": expected name=channel,…;…; got '" + text + "'");
+      entries.emplace_back(entry.substr(0, equals), names);
+    }
+    return entries;
+  };
+  attribute(m, path, "obscura:aovs");  // required, even when it says "none"
+  const auto aov_entries = parse_layout("obscura:aovs");
+  const auto layer_entries = parse_layout("obscura:layers");
+  frame.finish = parse_frame_finish(optional_attribute(m, "obscura:finish", "none"),
+                                    path + ": obscura:finish");
+  std::vector<std::pair<std::string, std::vector<std::string>>> layout = aov_entries;
+  layout.insert(layout.end(), layer_entries.begin(), layer_entries.end());
   int channels = 4;
   for (const auto& entry : layout) channels += int(entry.second.size());
   if (data.channels != channels)
-    throw Error(path, "has " + std::to_string(data.channels) + " channels; its header (" +
-                          (aovs.empty() ? "no auxiliary images" : aovs) + ") says " +
-                          std::to_string(channels));
+    throw Error(path,
+                "has " + std::to_string(data.channels) + " channels; its header (" +
+                    (layout.empty() ? "no auxiliary images" : "obscura:aovs, obscura:layers") +
+                    ") says " + std::to_string(channels));
   // OpenEXR keeps channels sorted by name: each is found by its name, not its position.
   auto column = [&](const std::string& name) {
     auto at = std::find(data.channel_names.begin(), data.channel_names.end(), name);
@@ -213,13 +242,21 @@ ShardFile read_shard(const std::string& path) {
   frame.film_sums.channel_names = {"R", "G", "B", "W"};
   copy_channels(frame.film_sums.channel_names, frame.film_sums);
   std::vector<AovImage> images;
-  for (const auto& [name, names] : layout) {
+  for (const auto& [name, names] : aov_entries) {
     AovImage aov{name, Image(data.width, data.height, int(names.size()))};
     aov.image.channel_names = names;
     std::vector<std::string> stored;
     for (const std::string& channel : names) stored.push_back(name + "." + channel);
     copy_channels(stored, aov.image);
     images.push_back(std::move(aov));
+  }
+  for (const auto& [name, names] : layer_entries) {
+    AovImage layer{name, Image(data.width, data.height, int(names.size()))};
+    layer.image.channel_names = names;
+    std::vector<std::string> stored;
+    for (const std::string& channel : names) stored.push_back(name + "." + channel);
+    copy_channels(stored, layer.image);
+    frame.layers.push_back(std::move(layer));
   }
   if (!images.empty()) {
     try {
@@ -252,6 +289,9 @@ RenderedFrame merge_shards(const std::vector<ShardFile>& shards) {
       throw differs("has another size");
     if (aov_layout(aov_images(s.frame)) != aov_layout(aov_images(first.frame)))
       throw differs("has other auxiliary images");
+    if (aov_layout(s.frame.layers) != aov_layout(first.frame.layers) ||
+        frame_finish_text(s.frame.finish) != frame_finish_text(first.frame.finish))
+      throw differs("is finished otherwise (depth of field, flare, glare)");
     if (!by_part.emplace(s.spec.part, &s).second)
       throw Error(s.path, "part " + std::to_string(s.spec.part) + " is given twice (also " +
                               by_part[s.spec.part]->path + ")");
@@ -279,6 +319,8 @@ RenderedFrame merge_shards(const std::vector<ShardFile>& shards) {
     take(shard->frame.film_sums, whole.film_sums);
     const std::vector<AovImage> aovs = aov_images(shard->frame);
     for (size_t a = 0; a < whole_aovs.size(); ++a) take(aovs[a].image, whole_aovs[a].image);
+    for (size_t l = 0; l < whole.layers.size(); ++l)
+      take(shard->frame.layers[l].image, whole.layers[l].image);
     // The least done and the most severe ending of any part.
     const RenderProgress& p = shard->frame.progress;
     whole.progress.done = std::min(whole.progress.done, p.done);

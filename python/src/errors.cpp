@@ -2,6 +2,7 @@
 
 #include "bindings.h"
 #include "obscura/math/error.h"
+#include "obscura/math/request_error.h"
 
 namespace obscura::python {
 
@@ -25,6 +26,8 @@ void bind_errors(py::module_& m) {
   py::register_exception_translator([](std::exception_ptr p) {
     try {
       if (p) std::rethrow_exception(p);
+    } catch (const RequestError& e) {  // a value the caller gave: Python's ValueError
+      PyErr_SetString(PyExc_ValueError, e.what());
     } catch (const Error& e) {
       error(e.what());
     }

@@ -16,4 +16,6 @@ PYBIND11_MODULE(_obscura, m) {
   bind_camera(m);
   bind_scene(m);
   bind_render(m);
+  bind_camera_request(m);
+  bind_ground_truth(m);
 }

@@ -85,12 +85,15 @@ RenderResult result_of(RenderOutcome&& outcome, const std::vector<std::string>& 
 }
 
 RenderResult render_frame_py(const Scene& scene, std::optional<Camera> camera,
-                             const std::string& renderer, int spp,
-                             const std::vector<std::string>& aov_names, int threads, uint64_t seed,
-                             const std::string& sampler, int max_depth, double time_limit,
-                             const py::object& progress, int msaa, const std::string& shading,
-                             bool cull, bool wireframe, int shadow_map,
-                             const std::string& raster_dof, int raster_samples) {
+                             const std::string& renderer, std::optional<int> spp,
+                             const std::vector<std::string>& aov_names, int threads,
+                             std::optional<uint64_t> seed, const std::string& sampler,
+                             int max_depth, double time_limit, const py::object& progress, int msaa,
+                             const std::string& shading, bool cull, bool wireframe, int shadow_map,
+                             const std::string& raster_dof, int raster_samples,
+                             std::optional<bool> spectral, bool glare,
+                             std::optional<double> glare_strength, std::optional<int> glare_radius,
+                             std::optional<bool> flare) {
   static const std::set<std::string> known{"albedo", "normal", "depth", "id"};
   for (const std::string& name : aov_names)
     if (!known.count(name))
@@ -107,8 +110,13 @@ RenderResult render_frame_py(const Scene& scene, std::optional<Camera> camera,
   if (!progress.is_none() && !PyCallable_Check(progress.ptr()))
     throw py::type_error("progress: expected a callable progress(done, total) or None");
   RenderRequest request{.renderer = renderer,
-                        .samples_per_pixel = spp,
-                        .seed = seed,
+                        .frame = {.samples_per_pixel = spp,
+                                  .seed = seed,
+                                  .spectral = spectral,
+                                  .glare = glare,
+                                  .glare_strength = glare_strength,
+                                  .glare_radius_px = glare_radius,
+                                  .flare = flare},
                         .sampler = sampler,
                         .max_depth = max_depth,
                         .time_limit_s = time_limit,
@@ -216,15 +224,19 @@ void bind_render(py::module_& m) {
       });
 
   m.def("render", &render_frame_py, py::arg("scene"), py::arg("camera") = py::none(), py::kw_only(),
-        py::arg("renderer") = "path", py::arg("spp") = 16,
-        py::arg("aovs") = std::vector<std::string>{}, py::arg("threads") = 0, py::arg("seed") = 0,
-        py::arg("sampler") = "sobol", py::arg("max_depth") = 0, py::arg("time_limit") = 0.0,
-        py::arg("progress") = py::none(), py::arg("msaa") = 1, py::arg("shading") = "phong",
-        py::arg("cull") = false, py::arg("wireframe") = false, py::arg("shadow_map") = 1024,
-        py::arg("raster_dof") = "accumulate", py::arg("raster_samples") = 32,
+        py::arg("renderer") = "path", py::arg("spp") = py::none(),
+        py::arg("aovs") = std::vector<std::string>{}, py::arg("threads") = 0,
+        py::arg("seed") = py::none(), py::arg("sampler") = "sobol", py::arg("max_depth") = 0,
+        py::arg("time_limit") = 0.0, py::arg("progress") = py::none(), py::arg("msaa") = 1,
+        py::arg("shading") = "phong", py::arg("cull") = false, py::arg("wireframe") = false,
+        py::arg("shadow_map") = 1024, py::arg("raster_dof") = "accumulate",
+        py::arg("raster_samples") = 32, py::arg("spectral") = py::none(), py::arg("glare") = false,
+        py::arg("glare_strength") = py::none(), py::arg("glare_radius") = py::none(),
+        py::arg("flare") = py::none(),
         "Renders `camera` (default: the scene's camera) over `scene` and returns a "
         "RenderResult whose .image is float32 (H, W, 3) linear RGB without a copy of the film. "
-        "renderer: 'path', 'whitted', 'direct' or 'raster'; spp: samples per pixel; aovs: any "
+        "renderer: 'path', 'whitted', 'direct' or 'raster'; spp: samples per pixel (default: "
+        "the scene file's render.spp, else 32, as `obscura render`); aovs: any "
         "of 'albedo' (tracer only), 'normal', 'depth', 'id'; threads: 0 = all cores (the image is "
         "the same "
         "for any count); seed, sampler ('sobol', 'independent'), max_depth (0: the renderer's "
@@ -235,8 +247,12 @@ void bind_render(py::module_& m) {
         "The rasterizer's options, as on `obscura render --renderer raster`: msaa (1, 4, 8), "
         "shading ('flat', 'gouraud', 'phong', 'blinn-phong'), cull, wireframe, shadow_map "
         "(texels, 0: none), raster_dof ('off', 'accumulate', 'post') and raster_samples "
-        "(frames accumulated for depth of field and motion blur). Every renderer goes through "
-        "the library's render_frame, as the CLI does.");
+        "(frames accumulated for depth of field and motion blur). Finishing, as on `obscura "
+        "render`: spectral (path tracer), glare / glare_strength / glare_radius (diffraction "
+        "glare), flare (ghost flares of a lens-system camera); each not given is the scene "
+        "file's render block's, as seed is. Every renderer goes through the library's "
+        "render_frame and every frame is finished by its finish_frame, as the CLI's are, so the "
+        "images are the CLI's bit for bit.");
 }
 
 }  // namespace obscura::python

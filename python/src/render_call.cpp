@@ -25,23 +25,30 @@ raster::DepthOfFieldMethod depth_of_field_named(const std::string& name) {
   throw Error("raster_dof", "expected 'off', 'accumulate' or 'post', got '" + name + "'");
 }
 
-FrameSettings frame_settings(const RenderRequest& r, const std::atomic<bool>* cancel) {
+FrameSettings frame_settings(const RenderRequest& r, const SceneRenderSettings& scene,
+                             const std::atomic<bool>* cancel) {
   std::optional<Renderer> renderer = parse_renderer(r.renderer);
   if (!renderer)
     throw Error("renderer",
                 "expected 'path', 'whitted', 'direct' or 'raster', got '" + r.renderer + "'");
-  if (r.samples_per_pixel <= 0 || r.samples_per_pixel > kMaxSamplesPerPixel)
+  const ResolvedFrameRequest frame = resolve_frame_request(r.frame, scene, *renderer);
+  if (frame.samples_per_pixel <= 0 || frame.samples_per_pixel > kMaxSamplesPerPixel)
     throw Error("spp", "expected 1 to " + std::to_string(kMaxSamplesPerPixel) + ", got " +
-                           std::to_string(r.samples_per_pixel));
+                           std::to_string(frame.samples_per_pixel));
   if (!(r.time_limit_s >= 0))
     throw Error("time_limit", "expected seconds >= 0, got " + std::to_string(r.time_limit_s));
   FrameSettings s{.renderer = *renderer,
-                  .samples_per_pixel = r.samples_per_pixel,
-                  .seed = r.seed,
+                  .samples_per_pixel = frame.samples_per_pixel,
+                  .seed = frame.seed,
                   .sampler = sampler_named(r.sampler),
                   .max_depth = r.max_depth,
+                  .spectral = frame.spectral,
                   .time_limit_s = r.time_limit_s,
-                  .cancel = cancel};
+                  .cancel = cancel,
+                  .share = {},
+                  .raster = {},
+                  .glare = frame.glare,
+                  .flare = frame.flare};
   s.raster.msaa_samples = r.msaa;
   s.raster.shading = shading_named(r.shading);
   s.raster.cull_back_faces = r.cull;
@@ -56,20 +63,18 @@ FrameSettings frame_settings(const RenderRequest& r, const std::atomic<bool>* ca
 
 RenderOutcome render_request(const Scene& scene, const Camera* camera, const RenderRequest& request,
                              const std::atomic<bool>* cancel, const ProgressCallback& progress) {
-  const FrameSettings settings = frame_settings(request, cancel);
+  const FrameSettings settings = frame_settings(request, scene.render, cancel);
   const Camera& view = camera ? *camera : scene.camera;
   view.validate();
   scene.validate();
   // render_frame renders `view` over the scene as it is: the tracer compiles object motion over
   // view's exposure, so another camera needs no copy of the scene.
 
-  const Bounds2i crop = view.film.crop_pixels();
-  Film film(crop.width(), crop.height());
+  RenderedFrame frame = render_frame(scene, view, settings, request.aovs, progress);
   RenderOutcome outcome;
-  if (request.aovs) outcome.aovs.emplace(film.width(), film.height());
-  FrameStats stats =
-      render_frame(scene, view, settings, film, outcome.aovs ? &*outcome.aovs : nullptr, progress);
-  outcome.image = film.to_image();
+  outcome.image = frame.finished();
+  outcome.aovs = std::move(frame.aovs);
+  const FrameStats& stats = frame.stats;
   outcome.seconds = stats.seconds;
   outcome.rays = stats.rays;
   outcome.done = stats.done;

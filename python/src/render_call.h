@@ -9,14 +9,16 @@
 #include "obscura/film/aov_buffers.h"
 #include "obscura/film/image.h"
 #include "obscura/film/tiles.h"
+#include "obscura/render/frame_request.h"
 #include "obscura/scene/scene.h"
 
 namespace obscura::python {
 
 struct RenderRequest {
   std::string renderer = "path";  // path | whitted | direct | raster
-  int samples_per_pixel = 16;
-  uint64_t seed = 0;
+  // What the frame is beyond the camera, each given or not (render/frame_request.h): samples,
+  // seed, spectral, glare, flare; the scene file's render block fills in the rest.
+  FrameRequest frame;
   std::string sampler = "sobol";  // sobol | independent
   int max_depth = 0;              // 0: the integrator's default
   double time_limit_s = 0;        // 0: none

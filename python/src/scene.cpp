@@ -12,6 +12,7 @@
 #include "obscura/io/default_environment.h"
 #include "obscura/io/scene_loader.h"
 #include "obscura/math/error.h"
+#include "obscura/render/camera_request.h"
 #include "obscura/scene/material_variants.h"
 #include "obscura/scene/scene.h"
 
@@ -302,6 +303,9 @@ void bind_scene(py::module_& m) {
         EnvironmentChoice choice = parse_environment_choice(environment);
         choice.intensity = float(environment_intensity);
         apply_environment(s, choice);
+        // The camera `obscura render` renders the file with: its film from the scene file's
+        // render.width/height (render/camera_request.h).
+        s.camera = resolve_camera(s, CameraRequest{}, std::nullopt, std::nullopt, &s.warnings);
         if (time) {
           s.camera.shutter.open_s = shutter.open_s;
           s.camera.shutter.close_s = shutter.close_s;

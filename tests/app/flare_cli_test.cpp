@@ -1,5 +1,5 @@
 // `obscura render --flare` on a lens-system camera, on both renderers: the ghosts add light and
-// a coating weakens them; and the refusals: a camera without lens surfaces, --shard, a bad
+// a coating weakens them; and the refusals: a camera without lens surfaces, a bad
 // --lens-coating, --lens-coating without a lens system.
 #include <gtest/gtest.h>
 
@@ -46,8 +46,6 @@ TEST_F(FlareCli, RefusesWhatItCannotDo) {
   test::expect_refusals(
       "render -q --width 16 --height 16 --spp 1 ",
       {{"spheres-and-lights --flare -o " + path("a.png"), "--flare"},
-       {"spheres-and-lights --lens double-gauss-50mm --flare --shard 0/2 -o " + path("b.exr"),
-        "--flare"},
        {"spheres-and-lights --lens double-gauss-50mm --lens-coating wax -o " + path("c.png"),
         "--lens-coating"},
        {"spheres-and-lights --lens-coating none -o " + path("d.png"), "--lens-coating"}});

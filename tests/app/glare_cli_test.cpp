@@ -1,5 +1,5 @@
 // `obscura render --glare` on both renderers, the vignetting options, and the refusals: glare on
-// a camera without a sensor, with --shard, and malformed values.
+// a camera without a sensor and malformed values.
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -54,7 +54,6 @@ TEST_F(GlareCli, RefusesWhatItCannotDo) {
   test::expect_refusals(
       "render -q --width 16 --height 16 --spp 1 ",
       {{"spheres-and-lights --projection spherical --glare -o " + path("a.png"), "perspective"},
-       {"spheres-and-lights --glare --shard 0/2 -o " + path("b.exr"), "--glare"},
        {"spheres-and-lights --glare-strength -1 -o " + path("c.png"), "--glare-strength"},
        {"spheres-and-lights --glare-radius 0 -o " + path("d.png"), "--glare-radius"},
        {"spheres-and-lights --lens-barrel 5 -o " + path("e.png"), "--lens-barrel"},

@@ -252,31 +252,29 @@ TEST(RenderFrame, PostProcessDepthOfFieldInPartsIsTheLoneFrameOnceAssembled) {
   FrameSettings settings{.renderer = Renderer::kRaster};
   settings.raster.depth_of_field = raster::DepthOfFieldMethod::kPost;
 
-  Film lone(kSize, kSize);
-  FrameStats stats = render_frame(scene, scene.camera, settings, lone);
-  EXPECT_FALSE(stats.post_dof_depth);  // alone, render_frame applied it
+  const RenderedFrame lone = render_frame(scene, scene.camera, settings, false);
+  ASSERT_TRUE(lone.finish.depth_of_field);  // finished later, on the whole frame
+  ASSERT_EQ(lone.layers.size(), 1u);
 
-  Image sums(kSize, kSize, 4), depth(kSize, kSize, 1);
+  Image sums(kSize, kSize, 4), layer(kSize, kSize, 2);
   for (int part = 0; part < 2; ++part) {
     settings.share = {.part = part, .parts = 2, .settle = {}};
-    Film film(kSize, kSize);
-    stats = render_frame(scene, scene.camera, settings, film);
-    ASSERT_TRUE(stats.post_dof_depth);
+    const RenderedFrame frame = render_frame(scene, scene.camera, settings, false);
+    ASSERT_EQ(frame.layers.size(), 1u);
     const TileDeal raster_deal{
         .width = kSize, .height = kSize, .tile_size = tile_size(Renderer::kRaster), .parts = 2};
-    take_part(raster_deal, part, film.sums(), sums);
-    take_part(raster_deal, part, *stats.post_dof_depth, depth);
+    take_part(raster_deal, part, frame.film_sums, sums);
+    take_part(raster_deal, part, frame.layers[0].image, layer);
   }
-  Film assembled = Film::from_sums(sums);
-  raster::apply_depth_of_field_post(assembled, depth, scene.camera);
-  EXPECT_TRUE(same_bits(assembled.sums(), lone.sums()));
+  const Image assembled =
+      finish_frame(sums, {{std::string(kDepthOfFieldLayer), layer}}, lone.finish);
+  EXPECT_TRUE(same_bits(assembled, lone.finished()));
 
   // And the post-process did blur: the out-of-focus square's edge is no longer hard.
-  Film sharp(kSize, kSize);
   settings.share = {};
   settings.raster.depth_of_field = raster::DepthOfFieldMethod::kOff;
-  render_frame(scene, scene.camera, settings, sharp);
-  EXPECT_GT(rmse(lone.to_image(), sharp.to_image()), 0.01);
+  const RenderedFrame sharp = render_frame(scene, scene.camera, settings, false);
+  EXPECT_GT(rmse(lone.finished(), sharp.finished()), 0.01);
 }
 
 TEST(RenderFrame, BadSettingsAreErrorsNamingTheSetting) {

@@ -136,8 +136,26 @@ struct Gather {
 
 }  // namespace
 
+Image circle_of_confusion_image(const Image& view_depth, const Camera& camera) {
+  if (view_depth.channels != 1)
+    throw Error("circle_of_confusion_image.view_depth",
+                "must have one channel; got " + std::to_string(view_depth.channels));
+  Image coc(view_depth.width, view_depth.height, 1);
+  coc.channel_names = {"C"};
+  const PreparedCamera prepared = camera.prepare();
+  for (size_t i = 0; i < view_depth.data.size(); ++i)
+    coc.data[i] = float(prepared.circle_of_confusion_px(finite_depth(view_depth.data[i])));
+  return coc;
+}
+
 Image depth_of_field_post(const Image& color, const Image& view_depth, const Camera& camera,
                           const PostDepthOfFieldSettings& settings) {
+  return depth_of_field_post(color, view_depth, circle_of_confusion_image(view_depth, camera),
+                             camera.film.pixel_aspect, settings);
+}
+
+Image depth_of_field_post(const Image& color, const Image& view_depth, const Image& coc_px,
+                          double pixel_aspect, const PostDepthOfFieldSettings& settings) {
   if (color.channels < 3)
     throw Error("depth_of_field_post.color",
                 "needs at least 3 channels; got " + std::to_string(color.channels));
@@ -148,6 +166,11 @@ Image depth_of_field_post(const Image& color, const Image& view_depth, const Cam
                     std::to_string(color.height) + "; got " + std::to_string(view_depth.channels) +
                     " channel(s) of " + std::to_string(view_depth.width) + "x" +
                     std::to_string(view_depth.height));
+  if (coc_px.channels != 1 || coc_px.width != color.width || coc_px.height != color.height)
+    throw Error("depth_of_field_post.coc_px", "must be one channel of the colour's size");
+  if (!(pixel_aspect > 0) || !std::isfinite(pixel_aspect))
+    throw Error("depth_of_field_post.pixel_aspect",
+                "must be finite and positive; got " + std::to_string(pixel_aspect));
   if (!(settings.max_coc_px >= 0) || !std::isfinite(settings.max_coc_px))
     throw Error("depth_of_field_post.max_coc_px",
                 "must be finite and ≥ 0; got " + std::to_string(settings.max_coc_px));
@@ -162,20 +185,20 @@ Image depth_of_field_post(const Image& color, const Image& view_depth, const Cam
   // 1. Depth, blur radius and the disk's density (1 / area) per pixel, and the colour in planes,
   //    all in float for the gather's vector lanes. Radii are in horizontal pixels; with
   //    non-square pixels a disk is `aspect` times taller in pixel rows.
-  const float aspect = float(camera.film.pixel_aspect);
+  const float aspect = float(pixel_aspect);
   const float max_radius = float(0.5 * settings.max_coc_px);
   // Rows are padded by kLanes pixels so that a row's last lanes read memory that exists.
   const int stride = w + kLanes;
   const size_t n = size_t(stride) * h;
   std::vector<float> depth(n, 1.f), radius(n, 0.f), plane[3];
   for (auto& c : plane) c.resize(n, 0.f);
-  const PreparedCamera prepared = camera.prepare();
   for (int y = 0; y < h; ++y)
     for (int x = 0; x < w; ++x) {
       const size_t i = size_t(y) * w + x, j = size_t(y) * stride + x;
-      double z = finite_depth(view_depth.data[i]);
-      depth[j] = float(z);
-      radius[j] = std::min(float(0.5 * prepared.circle_of_confusion_px(z)), max_radius);
+      depth[j] = float(finite_depth(view_depth.data[i]));
+      // Halving is exact, so this is the radius of the camera's double-precision diameter
+      // rounded once, whether the diameter arrives in float (a frame's parts carry it) or not.
+      radius[j] = std::min(0.5f * coc_px.data[i], max_radius);
       for (int k = 0; k < 3; ++k) plane[k][j] = color.data[i * color.channels + k];
     }
 

@@ -51,4 +51,14 @@ struct PostDepthOfFieldSettings {
 Image depth_of_field_post(const Image& color, const Image& view_depth, const Camera& camera,
                           const PostDepthOfFieldSettings& settings = {});
 
+// Each pixel's circle of confusion through `camera` (diameter in pixels, one channel "C") for
+// the view depth (+∞: the limit at infinity): what the post-process blurs with.
+Image circle_of_confusion_image(const Image& view_depth, const Camera& camera);
+
+// The same post-process on circles of confusion given per pixel, so that it needs no camera:
+// the parts of a frame carry them to where the whole frame is finished (render/frame_finish.h).
+// `pixel_aspect`: the film's pixel width over height (FilmGeometry::pixel_aspect).
+Image depth_of_field_post(const Image& color, const Image& view_depth, const Image& coc_px,
+                          double pixel_aspect, const PostDepthOfFieldSettings& settings = {});
+
 }  // namespace obscura::raster

@@ -123,7 +123,11 @@ RenderStats render_effects(const Scene& scene, const Camera& camera, const Rende
   if (aovs) fill_aovs(*aovs, middle, camera);
   // The post-process blurs the accumulated (motion-blurred) colour with the depth of the frame
   // nearest mid-shutter; it needs the whole frame.
-  if (post) stats.post_dof_depth = middle.view_depth_image();
+  if (post) {
+    Image view_depth = middle.view_depth_image();
+    Image coc = circle_of_confusion_image(view_depth, camera);
+    stats.post_dof = {std::move(view_depth), std::move(coc), camera.film.pixel_aspect};
+  }
   return stats;
 }
 
@@ -206,10 +210,6 @@ RenderStats render(const Scene& scene, const Camera& camera, const RenderSetting
   const bool effects = wants_effects(scene, drawn, settings);
   RenderStats stats = effects ? render_effects(scene, drawn, settings, film, aovs, progress)
                               : render_sharp(scene, drawn, settings, film, aovs);
-  if (stats.post_dof_depth && settings.share.parts <= 1) {
-    apply_depth_of_field_post(film, *stats.post_dof_depth, drawn);
-    stats.post_dof_depth.reset();
-  }
   // Accumulated depth of field keeps or drops each lens point's frame per pixel at the barrel
   // (accumulate()): the cat-eye bokeh, and the barrel's light loss with it.
   const bool barrel_in_frames = effects && drawn.lens.depth_of_field &&
@@ -222,13 +222,6 @@ RenderStats render(const Scene& scene, const Camera& camera, const RenderSetting
   if (!unfitted.empty()) stats.warnings.push_back(unfitted);
   stats.seconds = seconds_since(start);
   return stats;
-}
-
-void apply_depth_of_field_post(Film& film, const Image& view_depth, const Camera& camera) {
-  Image blurred = depth_of_field_post(film.to_image(), view_depth, camera);
-  film = Film(film.width(), film.height());
-  for (int y = 0; y < film.height(); ++y)
-    for (int x = 0; x < film.width(); ++x) film.add_sample({x, y}, blurred.rgb(x, y));
 }
 
 }  // namespace obscura::raster

@@ -48,6 +48,13 @@ struct RenderSettings {
   WorkShare share = {};
 };
 
+// The view depth of the frame nearest mid-shutter and each pixel's circle of confusion through
+// the camera drawn (diameter, pixels), with its pixel aspect: all the post-process needs.
+struct PostDepthOfFieldInputs {
+  Image view_depth, coc_px;
+  double pixel_aspect = 1;
+};
+
 struct RenderStats {
   double seconds = 0;  // compiling the scene and drawing the frame(s)
   int frames = 0;      // frames drawn (accumulated)
@@ -55,9 +62,10 @@ struct RenderStats {
   bool cancelled = false;
   bool time_limited = false;
   std::vector<std::string> warnings;
-  // Post-process depth of field with a share of a frame: the view depth to blur the whole frame
-  // with once its parts are assembled (apply_depth_of_field_post). Alone, render applies it.
-  std::optional<Image> post_dof_depth;
+  // Post-process depth of field: what blurs the whole frame once it is assembled, which
+  // render/frame_finish.h does for every renderer and every way a frame is split (the film
+  // render leaves is sharp).
+  std::optional<PostDepthOfFieldInputs> post_dof;
 };
 
 // The SceneRasterizer's settings for `settings` (with AOV targets if `aovs`).
@@ -78,9 +86,5 @@ bool wants_effects(const Scene& scene, const Camera& camera, const RenderSetting
 // one. Throws obscura::Error for invalid settings or a film of another size.
 RenderStats render(const Scene& scene, const Camera& camera, const RenderSettings& settings,
                    Film& film, AovBuffers* aovs = nullptr, const ProgressCallback& progress = {});
-
-// The depth-of-field post-process on a whole frame: `film` blurred by the camera's lens with the
-// view depth of RenderStats::post_dof_depth.
-void apply_depth_of_field_post(Film& film, const Image& view_depth, const Camera& camera);
 
 }  // namespace obscura::raster

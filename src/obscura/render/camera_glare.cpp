@@ -33,6 +33,16 @@ DiffractionOptics diffraction_optics(const Camera& camera) {
   return optics;
 }
 
+GlareFinish glare_finish(const Camera& camera, const GlareSettings& settings) {
+  validate(settings);
+  const DiffractionOptics optics = diffraction_optics(camera);
+  return {.aperture = camera.lens.aperture,
+          .f_number = optics.f_number,
+          .pixel_width_mm = optics.pixel_width_mm,
+          .pixel_height_mm = optics.pixel_height_mm,
+          .settings = settings};
+}
+
 Image glare_psf(const Camera& camera, const GlareSettings& settings) {
   validate(settings);
   return scale_scattered_light(rgb_psf(diffraction_optics(camera), settings.radius_px),

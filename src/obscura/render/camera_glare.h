@@ -8,6 +8,7 @@
 #include "obscura/film/diffraction_psf.h"
 #include "obscura/film/glare.h"
 #include "obscura/film/image.h"
+#include "obscura/render/frame_finish.h"
 
 namespace obscura {
 
@@ -16,6 +17,10 @@ namespace obscura {
 // system's f-number); the pitch is the sensor area the image covers over its pixels. Throws
 // obscura::Error for other cameras (no sensor to measure the pixels on).
 DiffractionOptics diffraction_optics(const Camera& camera);
+
+// The glare as the numbers finishing needs (render/frame_finish.h): the camera's aperture and
+// diffraction_optics' f-number and pixel pitch, with the settings (validated).
+GlareFinish glare_finish(const Camera& camera, const GlareSettings& settings);
 
 // The camera's colour PSF with the settings' strength applied.
 Image glare_psf(const Camera& camera, const GlareSettings& settings);

@@ -4,6 +4,7 @@
 #include <string>
 
 #include "obscura/math/error.h"
+#include "obscura/render/camera_glare.h"
 #include "obscura/trace/direct_lighting.h"
 #include "obscura/trace/embree_scene.h"
 #include "obscura/trace/path_tracer.h"
@@ -78,7 +79,7 @@ FrameStats raster_frame(const Scene& scene, const Camera& camera, const FrameSet
   frame.cancelled = stats.cancelled;
   frame.time_limited = stats.time_limited;
   frame.warnings = std::move(stats.warnings);
-  frame.post_dof_depth = std::move(stats.post_dof_depth);
+  frame.post_dof = std::move(stats.post_dof);
   return frame;
 }
 
@@ -90,6 +91,40 @@ FrameStats render_frame(const Scene& scene, const Camera& camera, const FrameSet
     throw Error("spectral rendering", "only the path tracer (renderer 'path') renders spectrally");
   return is_tracer(settings.renderer) ? trace_frame(scene, camera, settings, film, aovs, progress)
                                       : raster_frame(scene, camera, settings, film, aovs, progress);
+}
+
+RenderedFrame render_frame(const Scene& scene, const Camera& camera, const FrameSettings& settings,
+                           bool aovs, const ProgressCallback& progress) {
+  RenderedFrame frame;
+  frame.renderer = settings.renderer;
+  // What depends on the camera alone is settled before rendering: a camera that cannot have
+  // glare or flare fails here, not after the render.
+  if (settings.glare) frame.finish.glare = glare_finish(camera, *settings.glare);
+  if (settings.flare) {
+    frame.layers.push_back({std::string(kFlareLayer),
+                            lens_flare_image(scene, camera, *settings.flare, &frame.flare_stats)});
+    frame.layers.back().image.channel_names = {"R", "G", "B"};
+    frame.finish.flare = true;
+  }
+  const Bounds2i crop = camera.film.crop_pixels();
+  Film film(crop.width(), crop.height());
+  if (aovs) frame.aovs.emplace(film.width(), film.height());
+  frame.stats =
+      render_frame(scene, camera, settings, film, frame.aovs ? &*frame.aovs : nullptr, progress);
+  frame.film_sums = film.sums();
+  if (std::optional<raster::PostDepthOfFieldInputs>& post = frame.stats.post_dof) {
+    Image inputs(post->view_depth.width, post->view_depth.height, 2);
+    inputs.channel_names = {"Z", "C"};
+    for (size_t p = 0; p < post->view_depth.data.size(); ++p) {
+      inputs.data[2 * p] = post->view_depth.data[p];
+      inputs.data[2 * p + 1] = post->coc_px.data[p];
+    }
+    frame.layers.insert(frame.layers.begin(), {std::string(kDepthOfFieldLayer), std::move(inputs)});
+    frame.finish.depth_of_field =
+        DepthOfFieldFinish{.pixel_aspect = post->pixel_aspect, .settings = {}};
+    post.reset();
+  }
+  return frame;
 }
 
 }  // namespace obscura

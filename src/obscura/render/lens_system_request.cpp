@@ -1,21 +1,21 @@
-#include "lens_system_options.h"
+#include "obscura/render/lens_system_request.h"
 
 #include <memory>
 #include <string>
 #include <vector>
 
-#include "number_list_option.h"
 #include "obscura/camera/builtin_lenses.h"
 #include "obscura/camera/lens_prescription_file.h"
 #include "obscura/math/error.h"
-#include "usage_error.h"
+#include "obscura/math/number_list.h"
+#include "obscura/math/request_error.h"
 
-namespace obscura::app {
+namespace obscura {
 
-bool apply_lens_system_overrides(Camera& camera, const CameraOverrides& o) {
-  if (o.lens && o.lens_file) throw UsageError("--lens and --lens-file: give one of them");
+bool apply_lens_system_overrides(Camera& camera, const CameraRequest& o) {
+  if (o.lens && o.lens_file) throw RequestError("--lens and --lens-file: give one of them");
   if ((o.lens || o.lens_file) && o.projection)
-    throw UsageError("--lens and --projection: a lens system is its own projection");
+    throw RequestError("--lens and --projection: a lens system is its own projection");
   if (o.lens || o.lens_file) {
     LensSystemProjection p;
     // A perspective camera's sensor carries over (its width; the height follows the image).
@@ -25,7 +25,7 @@ bool apply_lens_system_overrides(Camera& camera, const CameraOverrides& o) {
       try {
         p.lens = builtin_lens(*o.lens);
       } catch (const Error& e) {
-        throw UsageError(std::string("--lens: ") + e.what());
+        throw RequestError(std::string("--lens: ") + e.what());
       }
     } else {
       p.lens = std::make_shared<const LensSystem>(load_lens_prescription(*o.lens_file));
@@ -36,14 +36,14 @@ bool apply_lens_system_overrides(Camera& camera, const CameraOverrides& o) {
   auto* p = std::get_if<LensSystemProjection>(&camera.projection);
   if (!p) {
     if (o.lens_coating)
-      throw UsageError("--lens-coating applies to a lens-system camera (--lens or --lens-file)");
+      throw RequestError("--lens-coating applies to a lens-system camera (--lens or --lens-file)");
     return false;
   }
   if (o.lens_coating) {
     try {
       p->coating = parse_lens_coating(*o.lens_coating, "--lens-coating");
     } catch (const Error& e) {
-      throw UsageError(e.what());
+      throw RequestError(e.what());
     }
   }
   for (auto [given, option] : {std::pair{bool(o.fov_degrees), "--fov"},
@@ -53,8 +53,9 @@ bool apply_lens_system_overrides(Camera& camera, const CameraOverrides& o) {
                                {bool(o.view_height_m), "--view-height"},
                                {bool(o.focus_breathing), "--focus-breathing"}})
     if (given)
-      throw UsageError(std::string(option) +
-                       " does not apply to a lens-system camera (its lens sets the field of view)");
+      throw RequestError(
+          std::string(option) +
+          " does not apply to a lens-system camera (its lens sets the field of view)");
   if (o.sensor) {
     std::string text = *o.sensor;
     for (char& c : text)
@@ -69,4 +70,4 @@ bool apply_lens_system_overrides(Camera& camera, const CameraOverrides& o) {
   return true;
 }
 
-}  // namespace obscura::app
+}  // namespace obscura

@@ -1,15 +1,16 @@
-#include "number_list_option.h"
+#include "obscura/math/number_list.h"
 
 #include <cmath>
 #include <sstream>
 #include <stdexcept>
 
-#include "usage_error.h"
+#include "obscura/math/error.h"
+#include "obscura/math/request_error.h"
 
-namespace obscura::app {
+namespace obscura {
 
 double parse_number(const std::string& text, const std::string& option) {
-  auto fail = [&] { throw UsageError(option + " expects a number; got '" + text + "'"); };
+  auto fail = [&] { throw RequestError(option + " expects a number; got '" + text + "'"); };
   size_t slash = text.find('/');
   try {
     size_t used = 0;
@@ -42,7 +43,7 @@ std::vector<double> parse_list(const std::string& text, char separator, size_t m
   }
   if (values.size() < min_count || values.size() > max_count || std::getline(stream, item) ||
       (!text.empty() && text.back() == separator))
-    throw UsageError(option + " expects " + form + "; got '" + text + "'");
+    throw RequestError(option + " expects " + form + "; got '" + text + "'");
   return values;
 }
 
@@ -51,4 +52,4 @@ std::vector<double> parse_list(const std::string& text, char separator, size_t c
   return parse_list(text, separator, count, count, option, form);
 }
 
-}  // namespace obscura::app
+}  // namespace obscura

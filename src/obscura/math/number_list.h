@@ -1,12 +1,12 @@
-// Numbers and lists of numbers in option values ("1/60", "0:1/60", "800,800,320,240"), parsed
-// strictly: a malformed value throws UsageError naming the option, the expected form and the
-// value.
+// Numbers and lists of numbers in request values (command-line options, Python arguments) ("1/60",
+// "0:1/60", "800,800,320,240"), parsed strictly: a malformed value throws RequestError naming the
+// option, the expected form and the value.
 #pragma once
 
 #include <string>
 #include <vector>
 
-namespace obscura::app {
+namespace obscura {
 
 // A finite number, or a fraction "a/b" (shutter times are written 1/60).
 double parse_number(const std::string& text, const std::string& option);
@@ -21,4 +21,4 @@ std::vector<double> parse_list(const std::string& text, char separator, size_t m
                                size_t max_count, const std::string& option,
                                const std::string& form);
 
-}  // namespace obscura::app
+}  // namespace obscura
