@@ -125,7 +125,7 @@ def test_a_calibration_files_size_is_the_films(cli, tmp_path):
 
     exported = tmp_path / "export.yaml"
     cli("camera", "cornell-box", "--calibration", calibration, "--export", "opencv-yaml",
-        "-o", exported)
+        "--output", exported)
     text = exported.read_text()
     assert "image_width: 320" in text and "image_height: 240" in text
 
@@ -147,7 +147,7 @@ def test_camera_export_describes_the_scene_files_film(cli, source_dir, tmp_path)
     report = cli("camera", scene).stdout
     assert "960 x 540" in report
     exported = tmp_path / "export.yaml"
-    cli("camera", scene, "--export", "opencv-yaml", "-o", exported)
+    cli("camera", scene, "--export", "opencv-yaml", "--output", exported)
     assert "image_width: 960" in exported.read_text()
     camera = obscura.resolve_camera(obscura.load_scene(scene))
     assert (camera.width, camera.height) == (960, 540)
