@@ -108,8 +108,9 @@ void apply_environment(Scene& scene, const EnvironmentChoice& choice) {
     case EnvironmentSource::kStudio: {
       std::string map_path = find_scenes_file(kStudioMap);
       if (map_path.empty())
-        throw Error("studio environment", "the studio map " + std::string(kStudioMap) +
-                                              " was not found: " + scenes_search_report(kStudioMap));
+        throw Error("studio environment",
+                    "the studio map " + std::string(kStudioMap) +
+                        " was not found: " + scenes_search_report(kStudioMap));
       scene.environment = studio_environment(scene, map_path, choice.intensity);
       return;
     }

@@ -100,8 +100,8 @@ Scene load_scene(const std::string& name_or_path, const GltfLoadOptions& gltf) {
     }
     std::string path = find_scenes_file(b.file);
     if (path.empty())
-      throw Error(name, "the built-in scene's file " + b.file + " was not found: " +
-                            scenes_search_report(b.file));
+      throw Error(name, "the built-in scene's file " + b.file +
+                            " was not found: " + scenes_search_report(b.file));
     return load_scene_file(path, gltf);
   }
   std::error_code ec;
