@@ -43,12 +43,11 @@ Environment map_environment(Scene& scene, const std::string& file, float intensi
   return env;
 }
 
-std::string studio_map_path() {
-  return (std::filesystem::path(scenes_directory()) / "assets/envmaps/studio.exr").string();
-}
+// Inside the example scenes folder (io/scene_loader.h says where that is looked for).
+constexpr const char* kStudioMap = "assets/envmaps/studio.exr";
 
-Environment studio_environment(Scene& scene, float intensity) {
-  Environment env = map_environment(scene, studio_map_path(), intensity);
+Environment studio_environment(Scene& scene, const std::string& map_path, float intensity) {
+  Environment env = map_environment(scene, map_path, intensity);
   // Normalised so that a white diffuse surface in it averages what it would in a uniform white
   // environment: the map's own scale is arbitrary (its photographed exposure).
   double mean = mean_luminance(scene.textures[env.texture]);
@@ -90,26 +89,31 @@ void apply_environment(Scene& scene, const EnvironmentChoice& choice) {
   switch (choice.source) {
     case EnvironmentSource::kAuto: {
       if (scene_has_own_light(scene)) return;
-      std::error_code ec;
-      if (std::filesystem::is_regular_file(studio_map_path(), ec)) {
-        scene.environment = studio_environment(scene, choice.intensity);
+      if (std::string map_path = find_scenes_file(kStudioMap); !map_path.empty()) {
+        scene.environment = studio_environment(scene, map_path, choice.intensity);
         scene.warnings.push_back(
             "the scene has no light of its own; it is lit by the studio environment "
             "(--environment none|studio|white|FILE to choose)");
       } else {
         scene.environment = white_environment(choice.intensity);
-        scene.warnings.push_back("the scene has no light of its own and the studio map " +
-                                 studio_map_path() +
-                                 " is missing; it is lit by a uniform white environment");
+        scene.warnings.push_back(
+            "the scene has no light of its own and the studio map was not found (" +
+            scenes_search_report(kStudioMap) + "); it is lit by a uniform white environment");
       }
       return;
     }
     case EnvironmentSource::kNone:
       scene.environment.reset();
       return;
-    case EnvironmentSource::kStudio:
-      scene.environment = studio_environment(scene, choice.intensity);
+    case EnvironmentSource::kStudio: {
+      std::string map_path = find_scenes_file(kStudioMap);
+      if (map_path.empty())
+        throw Error("studio environment",
+                    "the studio map " + std::string(kStudioMap) +
+                        " was not found: " + scenes_search_report(kStudioMap));
+      scene.environment = studio_environment(scene, map_path, choice.intensity);
       return;
+    }
     case EnvironmentSource::kWhite:
       scene.environment = white_environment(choice.intensity);
       return;

@@ -33,8 +33,10 @@ bool scene_has_own_light(const Scene& scene);
 
 // Applies the choice to the scene. Under kAuto, a scene without its own light gets the studio
 // environment and a line in Scene::warnings saying so (and how to turn it off); when the studio
-// map cannot be found (an installation without the example scenes), the uniform white one.
-// Throws obscura::Error naming the file when a chosen map is missing or cannot be read.
+// map cannot be found (an installation without the example scenes), the uniform white one, and
+// the warning says where the map was looked for (io/scene_loader.h: scenes_search_dirs).
+// Throws obscura::Error naming the file when a chosen map is missing or cannot be read (for
+// kStudio, every place it was looked for).
 void apply_environment(Scene& scene, const EnvironmentChoice& choice);
 
 }  // namespace obscura

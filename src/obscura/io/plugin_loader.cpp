@@ -3,35 +3,15 @@
 #include <dlfcn.h>
 
 #include <algorithm>
-#include <cerrno>
 #include <cstdlib>
 #include <filesystem>
 
+#include "obscura/io/binary_location.h"
 #include "obscura/math/error.h"
 
 namespace obscura {
 
 namespace fs = std::filesystem;
-
-namespace {
-
-// The file this code was loaded from: the Python extension module, or the executable. (dladdr
-// names the main program by argv[0], which may be relative to another working directory, so the
-// executable is taken from /proc/self/exe instead.)
-fs::path binary_holding_this_library() {
-  Dl_info info{};
-  if (dladdr(reinterpret_cast<void*>(&plugin_search_dirs), &info) && info.dli_fname &&
-      info.dli_fname[0] != '\0' && std::string(info.dli_fname) != program_invocation_name) {
-    std::error_code ec;
-    fs::path resolved = fs::canonical(info.dli_fname, ec);
-    if (!ec) return resolved;
-  }
-  std::error_code ec;
-  fs::path self = fs::read_symlink("/proc/self/exe", ec);
-  return ec ? fs::path() : self;
-}
-
-}  // namespace
 
 std::vector<std::string> plugin_search_dirs() {
   // The override is the only place looked in: one that a plugin found elsewhere could silently

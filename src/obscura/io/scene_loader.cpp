@@ -1,10 +1,10 @@
 #include "obscura/io/scene_loader.h"
 
-#include <unistd.h>
-
+#include <algorithm>
 #include <cstdlib>
 #include <filesystem>
 
+#include "obscura/io/binary_location.h"
 #include "obscura/io/camera_mapping.h"
 #include "obscura/io/gltf_loader.h"
 #include "obscura/io/json_scene.h"
@@ -13,16 +13,6 @@
 #include "obscura/scene/builtin_scenes.h"
 
 namespace obscura {
-
-namespace {
-
-std::filesystem::path executable_directory() {
-  std::error_code ec;
-  std::filesystem::path exe = std::filesystem::read_symlink("/proc/self/exe", ec);
-  return ec ? std::filesystem::path() : exe.parent_path();
-}
-
-}  // namespace
 
 Scene load_scene_file(const std::string& path, const GltfLoadOptions& gltf) {
   Scene scene;
@@ -56,15 +46,45 @@ const std::vector<BuiltinScene>& builtin_scenes() {
   return scenes;
 }
 
-std::string scenes_directory() {
-  if (const char* env = std::getenv("OBSCURA_SCENES_DIR"); env && *env) return env;
-  std::filesystem::path exe = executable_directory();
-  std::error_code ec;
-  for (const char* relative : {"../share/obscura/scenes", "../scenes"}) {
-    std::filesystem::path candidate = (exe / relative).lexically_normal();
-    if (!exe.empty() && std::filesystem::is_directory(candidate, ec)) return candidate.string();
+std::vector<std::string> scenes_search_dirs() {
+  // The override is the only place looked in, as for plugins: scenes found elsewhere behind it
+  // would hide that it points at the wrong folder.
+  if (const char* override_dir = std::getenv("OBSCURA_SCENES_DIR"); override_dir && *override_dir)
+    return {override_dir};
+  std::vector<std::string> dirs;
+  std::filesystem::path binary = binary_holding_this_library();
+  if (!binary.empty()) {
+    std::filesystem::path dir = binary.parent_path();
+    dirs.push_back((dir / "../share/obscura/scenes").lexically_normal().string());
+    dirs.push_back((dir / "scenes").lexically_normal().string());
   }
-  return "scenes";
+#ifdef OBSCURA_SOURCE_SCENES_DIR
+  // Last: a build tree's programs and module are not installed, but the tree they were built
+  // from usually still exists.
+  std::string source_scenes =
+      std::filesystem::path(OBSCURA_SOURCE_SCENES_DIR).lexically_normal().string();
+  if (std::find(dirs.begin(), dirs.end(), source_scenes) == dirs.end())
+    dirs.push_back(source_scenes);
+#endif
+  return dirs;
+}
+
+std::string find_scenes_file(const std::string& relative) {
+  for (const std::string& dir : scenes_search_dirs()) {
+    std::filesystem::path path = std::filesystem::path(dir) / relative;
+    std::error_code ec;
+    if (std::filesystem::is_regular_file(path, ec)) return path.string();
+  }
+  return "";
+}
+
+std::string scenes_search_report(const std::string& relative) {
+  std::string looked;
+  for (const std::string& dir : scenes_search_dirs())
+    looked += (looked.empty() ? "" : ", ") + (std::filesystem::path(dir) / relative).string();
+  return "looked in " + looked +
+         "; set OBSCURA_SCENES_DIR to the folder of Obscura's example scenes (scenes/ in its "
+         "source tree)";
 }
 
 Scene load_scene(const std::string& name_or_path, const GltfLoadOptions& gltf) {
@@ -78,11 +98,10 @@ Scene load_scene(const std::string& name_or_path, const GltfLoadOptions& gltf) {
       scene.validate();
       return scene;
     }
-    std::string path = (std::filesystem::path(scenes_directory()) / b.file).string();
-    std::error_code ec;
-    if (!std::filesystem::is_regular_file(path, ec))
-      throw Error(path, "the built-in scene '" + name +
-                            "' is missing (set OBSCURA_SCENES_DIR to the scenes folder)");
+    std::string path = find_scenes_file(b.file);
+    if (path.empty())
+      throw Error(name, "the built-in scene's file " + b.file +
+                            " was not found: " + scenes_search_report(b.file));
     return load_scene_file(path, gltf);
   }
   std::error_code ec;

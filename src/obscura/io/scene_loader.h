@@ -25,9 +25,21 @@ struct BuiltinScene {
 // The built-in scenes; the first is the default.
 const std::vector<BuiltinScene>& builtin_scenes();
 
-// The folder holding the example scenes: $OBSCURA_SCENES_DIR, else `share/obscura/scenes` beside
-// an installed executable, else `scenes/` of the source tree the executable was built in.
-std::string scenes_directory();
+// The folders the example scenes (and the studio map, assets/envmaps/studio.exr) are looked for
+// in, whatever the working directory: $OBSCURA_SCENES_DIR alone when it is set; otherwise, in
+// order, beside the binary that holds this library (the executable, or the Python extension
+// module) its ../share/obscura/scenes (an installed CLI, bin/obscura) and its scenes/ (an
+// installed Python package, obscura/_obscura*.so), then scenes/ of the source tree the library
+// was built from.
+std::vector<std::string> scenes_search_dirs();
+
+// The path of `relative` (e.g. "bunny.json") in the first of scenes_search_dirs() that holds it;
+// empty when none does.
+std::string find_scenes_file(const std::string& relative);
+
+// Where find_scenes_file looked for `relative`, and how to point it elsewhere, for the message
+// that reports it missing: "looked in A/relative, B/relative; set OBSCURA_SCENES_DIR …".
+std::string scenes_search_report(const std::string& relative);
 
 // A built-in scene's name, or a path to a scene file; empty = the default built-in scene.
 // Throws obscura::Error listing the built-in names when `name_or_path` is neither.
