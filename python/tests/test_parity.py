@@ -1,5 +1,6 @@
 """One frame, every door: the same request gives the same frame, bit for bit, from the command
-line, from Python, as the first frame of a sequence, and from `--shard` parts merged (N = 2, 3).
+line, from Python, as the first frame of a sequence, from 2 MPI ranks (where the build has MPI)
+and from `--shard` parts merged (N = 2, 3).
 
 Each case is one request in both spellings: the command line's options, and Python's
 resolve_camera() / render() keywords (the options with dashes as underscores). The scenes
@@ -9,10 +10,14 @@ for on the command line, and by the scene file's render block), spectral transpo
 shutter, motion blur, and the rasterizer's post-process and accumulated depth of field.
 """
 
+import os
+import subprocess
+
 import numpy as np
 import pytest
 
 import obscura
+from conftest import cli_path
 
 SIZE = {"width": 64, "height": 48}
 
@@ -45,6 +50,21 @@ CASES = [
 ]
 
 
+def mpirun_prefix(session_dir):
+    """mpirun as this suite needs it (root allowed, more ranks than cores, its own session
+    folder), or None where the build has no MPI or a job cannot start here."""
+    mpiexec = os.environ.get("OBSCURA_MPIEXEC")
+    if not mpiexec:
+        return None
+    prefix = ["env", f"TMPDIR={session_dir}", "OMPI_ALLOW_RUN_AS_ROOT=1",
+              "OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=1", "OMPI_MCA_rmaps_base_oversubscribe=1", mpiexec]
+    try:
+        probe = subprocess.run(prefix + ["-np", "1", "true"], capture_output=True, timeout=60)
+    except subprocess.TimeoutExpired:
+        return None
+    return tuple(prefix) if probe.returncode == 0 else None
+
+
 def cli_arguments(options):
     args = []
     for name, value in options.items():
@@ -60,6 +80,13 @@ def python_render_keywords(options):
         key = name.replace("-", "_")
         keywords[key] = True if value is None else value
     return keywords
+
+
+def tmp_path_factory_dir(tmp_path):
+    """An empty folder of its own for MPI's session files, one per test."""
+    folder = tmp_path / "mpi-session"
+    folder.mkdir(exist_ok=True)
+    return folder
 
 
 def scene_argument(scene, source_dir):
@@ -93,6 +120,16 @@ def test_every_door_gives_the_same_frame(cli, tmp_path, source_dir, case):
     frame, _, _ = obscura.read_exr(str(tmp_path / "seq_0000.exr"))
     single, _, _ = obscura.read_exr(str(at_zero))
     assert np.array_equal(frame, single), f"{name}: the sequence's frame differs"
+
+    # MPI ranks, where this build and machine can run them.
+    session = tmp_path_factory_dir(tmp_path)
+    prefix = mpirun_prefix(str(session))
+    if prefix:
+        ranks = tmp_path / "ranks.exr"
+        subprocess.run([*prefix, "-np", "2", cli_path(), "render", *map(str, common), "-o",
+                        str(ranks)], check=True, capture_output=True, timeout=300)
+        from_ranks, _, _ = obscura.read_exr(str(ranks))
+        assert np.array_equal(from_ranks, from_cli), f"{name}: 2 MPI ranks differ"
 
     # Shards, merged in an order that is not their own.
     for parts in (2, 3):
