@@ -15,6 +15,7 @@
 #include "obscura/render/camera_glare.h"
 #include "obscura/render/frame_request.h"
 #include "obscura/render/lens_flare.h"
+#include "obscura/render/render_session.h"
 #include "obscura/scene/material_variants.h"
 #include "option_ranges.h"
 #include "usage_error.h"
@@ -75,12 +76,27 @@ bool flare_requested(const RenderOptions& options, const SceneRenderSettings& sc
       .flare.has_value();
 }
 
-Scene prepare_scene(RenderOptions& options, bool writes_output) {
+namespace {
+
+// Before rendering: the output can be written and replaces no input (the scene file, a model,
+// buffer or texture).
+void check_outputs(const RenderOptions& options, const Scene& scene) {
+  check_output_path(options.output);
+  check_not_an_input(options.output, scene.input_files);
+  if (options.tracer.aovs)
+    for (const std::string& aov :
+         aov_paths(options.output, renders_albedo(options.tracer.renderer)))
+      check_not_an_input(aov, scene.input_files);
+}
+
+}  // namespace
+
+Scene load_render_scene(RenderOptions& options, bool writes_output) {
   validate(options);
   validate(options.tracer);
   validate(options.raster, options.tracer.renderer);
   validate(options.raster_effects, options.tracer.renderer);
-  if (writes_output) check_output_path(options.output);  // fail before rendering, not after
+  if (writes_output) check_output_path(options.output);  // fail before loading, not after
 
   // Skins and morph targets are posed when the file is read, at the shutter's middle.
   const Shutter shutter = requested_shutter(options.camera);
@@ -89,25 +105,25 @@ Scene prepare_scene(RenderOptions& options, bool writes_output) {
   EnvironmentChoice environment = parse_environment_choice(options.environment);
   environment.intensity = float(options.environment_intensity);
   apply_environment(scene, environment);
-  // Before rendering: no output may replace the scene file, a model, buffer or texture.
-  if (writes_output) {
-    check_not_an_input(options.output, scene.input_files);
-    if (options.tracer.aovs)
-      for (const std::string& aov :
-           aov_paths(options.output, renders_albedo(options.tracer.renderer)))
-        check_not_an_input(aov, scene.input_files);
-  }
+  if (writes_output) check_outputs(options, scene);
   apply_scene_settings(scene.render, options);
-  scene.camera = resolve_camera(
-      scene, options.camera, options.width_given ? std::optional(options.width) : std::nullopt,
-      options.height_given ? std::optional(options.height) : std::nullopt, &scene.warnings);
-  options.width = scene.camera.film.width_px;
-  options.height = scene.camera.film.height_px;
+  return scene;
+}
+
+Camera resolve_render_camera(const Scene& scene, RenderOptions& options, bool writes_output,
+                             std::vector<std::string>* notes) {
+  if (writes_output) check_outputs(options, scene);
+  apply_scene_settings(scene.render, options);
+  CameraRequest camera_request = options.camera;
+  camera_request.time_s = options.choice.time_s;
+  Camera camera = resolve_camera(
+      scene, camera_request, options.width_given ? std::optional(options.width) : std::nullopt,
+      options.height_given ? std::optional(options.height) : std::nullopt, notes);
+  options.width = camera.film.width_px;
+  options.height = camera.film.height_px;
   check_image_size(options.width, options.height, options.width_given || options.height_given);
-  scene.camera.shutter = shutter_at_time(options.choice, scene.camera.shutter);
-  scene.validate();
   if (flare_requested(options, scene.render) &&
-      !std::holds_alternative<LensSystemProjection>(scene.camera.projection)) {
+      !std::holds_alternative<LensSystemProjection>(camera.projection)) {
     const std::string message =
         "ghost flares need a lens-system camera (--lens, --lens-file or a lens_system camera in "
         "the scene), whose surfaces reflect";
@@ -118,14 +134,22 @@ Scene prepare_scene(RenderOptions& options, bool writes_output) {
           resolve_frame_request(frame_request(options), scene.render, options.tracer.renderer)
               .glare) {
     validate(*glare);  // a camera without a sensor fails here, before rendering
-    diffraction_optics(scene.camera);
+    diffraction_optics(camera);
   }
   if (!options.ground_truth.path.empty() || options.ground_truth.flow_times) {
-    ground_truth_times(options.ground_truth, scene.camera);  // a bad value fails here, early
+    ground_truth_times(options.ground_truth, camera);  // a bad value fails here, early
     if (writes_output) check_ground_truth_output(options.ground_truth, options.output, scene);
     if (!options.ground_truth.path.empty() && options.tracer.renderer == Renderer::kRaster)
-      raster::check_ground_truth_camera(scene.camera);  // before rendering, not after
+      raster::check_ground_truth_camera(camera);  // before rendering, not after
   }
+  return camera;
+}
+
+Scene prepare_scene(RenderOptions& options, bool writes_output) {
+  Scene scene = load_render_scene(options, writes_output);
+  Camera camera = resolve_render_camera(scene, options, writes_output, &scene.warnings);
+  scene.camera = std::move(camera);
+  scene.validate();
   return scene;
 }
 
@@ -156,12 +180,13 @@ FrameSettings frame_settings(const RenderOptions& options, const SceneRenderSett
   return settings;
 }
 
-RenderedFrame render_frame(const Scene& scene, const RenderOptions& options, const WorkShare& share,
+RenderedFrame render_frame(RenderSession& session, const Camera& camera,
+                           const RenderOptions& options, const WorkShare& share,
                            const ProgressCallback& progress) {
-  const FrameSettings settings = frame_settings(options, scene.render, share);
+  const FrameSettings settings = frame_settings(options, session.scene().render, share);
   RenderedFrame frame;
   static_cast<obscura::RenderedFrame&>(frame) =
-      obscura::render_frame(scene, scene.camera, settings, options.tracer.aovs, progress);
+      session.render(camera, settings, options.tracer.aovs, progress);
   const FrameStats& stats = frame.stats;
   // Without --spp, a time limit asks the tracer for as many samples as fit: reaching it
   // completes the render.
@@ -177,6 +202,12 @@ RenderedFrame render_frame(const Scene& scene, const RenderOptions& options, con
   frame.seconds = stats.seconds;
   frame.rays = stats.rays;
   return frame;
+}
+
+RenderedFrame render_frame(const Scene& scene, const RenderOptions& options, const WorkShare& share,
+                           const ProgressCallback& progress) {
+  RenderSession session(scene);
+  return render_frame(session, scene.camera, options, share, progress);
 }
 
 void gather_frame(Team& team, RenderedFrame& frame) {

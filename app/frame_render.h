@@ -13,6 +13,7 @@
 #include "obscura/film/work_share.h"
 #include "obscura/render/lens_flare.h"
 #include "obscura/render/render_frame.h"
+#include "obscura/render/render_session.h"
 #include "obscura/scene/scene.h"
 #include "partial_render.h"
 #include "render_options.h"
@@ -36,6 +37,12 @@ struct RenderedFrame : obscura::RenderedFrame {
 // fill in what the command line did not give.
 Scene prepare_scene(RenderOptions& options, bool writes_output);
 
+// prepare_scene in two steps, for a sequence that loads its scene once: the scene as the options
+// load it (its own camera kept), then each frame's camera over it, with the checks that need it.
+Scene load_render_scene(RenderOptions& options, bool writes_output);
+Camera resolve_render_camera(const Scene& scene, RenderOptions& options, bool writes_output,
+                             std::vector<std::string>* notes);
+
 // Whether ghost flares are asked for: --flare, or the scene file's render.flare.
 bool flare_requested(const RenderOptions& options, const SceneRenderSettings& scene);
 
@@ -51,6 +58,10 @@ FrameSettings frame_settings(const RenderOptions& options, const SceneRenderSett
 // Renders the scene with its camera (resolved by the options), the tiles `share` owns, through
 // the library's render_frame.
 RenderedFrame render_frame(const Scene& scene, const RenderOptions& options, const WorkShare& share,
+                           const ProgressCallback& progress = {});
+// The same through a session that keeps what it compiled of its scene for the next frame.
+RenderedFrame render_frame(RenderSession& session, const Camera& camera,
+                           const RenderOptions& options, const WorkShare& share,
                            const ProgressCallback& progress = {});
 
 // Rank 0 receives every rank's pixels of the film, the auxiliary images and the finishing layers

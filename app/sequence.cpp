@@ -16,6 +16,7 @@
 #include "obscura/color/develop.h"
 #include "obscura/io/image_io.h"
 #include "obscura/io/image_reader.h"
+#include "obscura/io/scene_loader.h"
 #include "obscura/io/y4m_writer.h"
 #include "obscura/math/error.h"
 #include "progress_bar.h"
@@ -183,6 +184,14 @@ void run_sequence(RenderOptions options, Team& team) {
   RenderEnd worst = RenderEnd::kComplete;
   std::vector<int64_t> mine;
 
+  // A scene whose file reads the same at every moment — all but glTF, whose animations, skins
+  // and morph targets are posed at each frame's time — is loaded once, and compiled once for the
+  // whole sequence where nothing in it moves (render/render_session.h); a glTF file is read
+  // again for each frame.
+  const bool load_once = !scene_depends_on_time(options.scene);
+  std::optional<Scene> shared_scene;
+  std::unique_ptr<RenderSession> shared_session;
+
   team.open_counter();
   for (;;) {
     const int64_t ticket = team.take_ticket();
@@ -198,11 +207,26 @@ void run_sequence(RenderOptions options, Team& team) {
       continue;
     }
     frame_options.quiet = options.quiet || !team.leads();
-    Scene scene = prepare_scene(frame_options, !video);
-    // The first scene this rank loads tells the frame size (the same for every frame): only then
-    // is the check above still to be made.
+    std::optional<Scene> own_scene;
+    std::optional<RenderSession> own_session;
+    Camera camera;
+    if (load_once) {
+      if (!shared_scene) {
+        shared_scene = load_render_scene(frame_options, !video);
+        shared_scene->validate();
+        shared_session = std::make_unique<RenderSession>(*shared_scene);
+      }
+      camera = resolve_render_camera(*shared_scene, frame_options, !video, nullptr);
+    } else {
+      own_scene = prepare_scene(frame_options, !video);
+      own_session.emplace(*own_scene);
+      camera = own_scene->camera;
+    }
+    RenderSession& session = load_once ? *shared_session : *own_session;
+    // The first frame this rank prepares tells the frame size (the same for every frame): only
+    // then is the check above still to be made.
     const bool size_was_known = frame_size.has_value();
-    Bounds2i crop = scene.camera.film.crop_pixels();
+    Bounds2i crop = camera.film.crop_pixels();
     frame_size = {crop.width(), crop.height()};
     if (!video && !size_was_known &&
         finished_frame_exists(frame_options.output, crop.width(), crop.height())) {
@@ -210,7 +234,7 @@ void run_sequence(RenderOptions options, Team& team) {
       continue;
     }
     ProgressBar bar("frame " + std::to_string(n), !speaks);
-    RenderedFrame frame = render_frame(scene, frame_options, {},
+    RenderedFrame frame = render_frame(session, camera, frame_options, {},
                                        [&](int done, int total) { bar.update(done, total); });
     bar.finish();
     worst = std::max(worst, frame.progress.end);
@@ -277,10 +301,17 @@ void run_sequence(RenderOptions options, Team& team) {
       std::printf("%s\n", options.output.c_str());
     }
   }
-  if (speaks)
-    std::fprintf(stderr, "sequence: %zu frames, %d rendered here, %d already there%s\n",
-                 frames.size(), rendered, skipped,
+  if (speaks) {
+    std::string compiled;
+    if (!load_once)
+      compiled = "; the scene read for each frame";
+    else if (shared_session && is_tracer(options.tracer.renderer))
+      compiled = "; the scene read once, compiled " +
+                 std::to_string(shared_session->tracer_compilations()) + " time(s)";
+    std::fprintf(stderr, "sequence: %zu frames, %d rendered here, %d already there%s%s\n",
+                 frames.size(), rendered, skipped, compiled.c_str(),
                  end == RenderEnd::kInterrupted ? " [interrupted]" : "");
+  }
   set_exit_status(exit_status_for(end));
 }
 

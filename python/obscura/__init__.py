@@ -1,7 +1,8 @@
 """Obscura from Python: scenes, cameras, the path tracer and the rasterizer into numpy arrays,
 and the colour pipeline. See docs/python.md for a worked example.
 
-Everything lives in the C++ extension ``obscura._obscura``; this package re-exports it.
+Everything lives in the C++ extension ``obscura._obscura``; this package re-exports it, and adds
+``render_frames`` (a sequence, as ``obscura render --frames``) on top of it.
 """
 
 from ._obscura import (  # noqa: F401
@@ -29,6 +30,33 @@ from ._obscura import (  # noqa: F401
     write_image,
 )
 
+
+
+def render_frames(scene, frames, *, fps=24.0, camera=None, load=None, **render_options):
+    """Renders a sequence as ``obscura render SCENE --frames A:B --fps F`` does, yielding
+    ``(frame_number, RenderResult)`` one frame at a time.
+
+    ``scene``: a built-in scene's name or a scene file. ``frames``: the frame numbers (e.g.
+    ``range(0, 48)``); frame n is exposed around n / fps seconds. Each frame loads the scene at
+    its moment (skins and morph targets posed there, ``load_scene(..., time=, shutter=)`` with
+    ``load``'s other keywords: environment, gltf_scene, gltf_animation, variant) and resolves its
+    camera from ``camera``, a dict of ``resolve_camera`` keywords (``{"fstop": 2, "width": 320}``),
+    with the shutter centred on the frame's moment. ``render_options`` go to ``render()``. The
+    frames are the command line's, bit for bit.
+    """
+    camera = dict(camera or {})
+    load = dict(load or {})
+    if "time" in camera or "time" in load:
+        raise ValueError("render_frames: each frame's time is frame / fps; give no time")
+    if not fps > 0:
+        raise ValueError(f"render_frames: fps must be positive; got {fps}")
+    for n in frames:
+        time = n / fps
+        frame_scene = load_scene(scene, time=time, shutter=camera.get("shutter"), **load)
+        frame_camera = resolve_camera(frame_scene, time=time, **camera)
+        yield n, render(frame_scene, frame_camera, **render_options)
+
+
 __all__ = [
     "Camera",
     "Error",
@@ -47,6 +75,7 @@ __all__ = [
     "read_exr",
     "read_image",
     "render",
+    "render_frames",
     "resolve_camera",
     "wavelength_lms",
     "wavelength_xyz",

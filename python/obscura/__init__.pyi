@@ -2,7 +2,7 @@
 The docstrings on the module's functions say what each argument means; docs/python.md shows them
 in use."""
 
-from typing import Callable, Literal, Optional, Sequence, Tuple, Union
+from typing import Any, Callable, Iterable, Iterator, Literal, Optional, Sequence, Tuple, Union
 
 import numpy as np
 import numpy.typing as npt
@@ -168,7 +168,7 @@ def builtin_scenes() -> list[Tuple[str, str]]: ...
 def load_scene(name_or_path: str = "", environment: str = "auto",
                environment_intensity: float = 1.0, gltf_scene: str = "",
                gltf_animation: str = "", time: Optional[float] = None,
-               variant: str = "") -> Scene: ...
+               variant: str = "", shutter: Optional[str] = None) -> Scene: ...
 def render(scene: Scene, camera: Optional[Camera] = None, *,
            renderer: Literal["path", "whitted", "direct", "raster"] = "path",
            spp: Optional[int] = None,
@@ -201,7 +201,10 @@ def resolve_camera(scene: Scene, *, camera: Optional[str] = None, width: Optiona
                    max_field_angle: Optional[float] = None, calibration: Optional[str] = None,
                    calibration_image: Optional[str] = None, lens: Optional[str] = None,
                    lens_file: Optional[str] = None,
-                   lens_coating: Optional[str] = None) -> Camera: ...
+                   lens_coating: Optional[str] = None, time: Optional[float] = None) -> Camera: ...
+def render_frames(scene: str, frames: Iterable[int], *, fps: float = 24.0,
+                  camera: Optional[dict[str, Any]] = None, load: Optional[dict[str, Any]] = None,
+                  **render_options: Any) -> Iterator[Tuple[int, RenderResult]]: ...
 def ground_truth(scene: Scene, camera: Optional[Camera] = None, *,
                  renderer: Literal["path", "whitted", "direct", "raster"] = "path",
                  flow_times: Optional[Tuple[float, float]] = None

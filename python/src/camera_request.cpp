@@ -25,7 +25,7 @@ Camera resolve_camera_py(const Scene& scene, Text camera, std::optional<int> wid
                          Text crop, Text filter, Number filter_radius, Number near, Number far,
                          Text intrinsics, Text calibration_size, Text distortion,
                          Number max_field_angle, Text calibration, Text calibration_image,
-                         Text lens, Text lens_file, Text lens_coating) {
+                         Text lens, Text lens_file, Text lens_coating, Number time) {
   CameraRequest r;
   r.camera_name = camera;
   r.projection = projection;
@@ -61,6 +61,7 @@ Camera resolve_camera_py(const Scene& scene, Text camera, std::optional<int> wid
   r.lens = lens;
   r.lens_file = lens_file;
   r.lens_coating = lens_coating;
+  r.time_s = time;
   std::vector<std::string> notes;
   Camera resolved;
   {
@@ -96,7 +97,8 @@ void bind_camera_request(py::module_& m) {
         "as underscores and their values in the same units and forms (fstop=2.8, "
         "focus_distance=3, shutter='0:1/60', rolling_shutter='1/30000', sensor='36x24', "
         "lens='double-gauss-50mm', lens_file=PATH, lens_coating='none', calibration=PATH, "
-        "calibration_image=NAME, crop='0.25,0.25,0.75,0.75', …; docs/camera.md). The film's "
+        "calibration_image=NAME, crop='0.25,0.25,0.75,0.75', …; docs/camera.md); time= "
+        "centres the shutter on that moment, as --time does. The film's "
         "size is width/height when given, else a calibration file's image size, else the scene "
         "file's render.width/height, else 512 x 512. A film whose shape stretches a "
         "calibration's K gives a UserWarning. A malformed or out-of-range value raises "

@@ -283,12 +283,14 @@ void bind_scene(py::module_& m) {
       "load_scene",
       [](const std::string& name_or_path, const std::string& environment,
          double environment_intensity, const std::string& gltf_scene,
-         const std::string& gltf_animation, std::optional<double> time,
-         const std::string& variant) {
+         const std::string& gltf_animation, std::optional<double> time, const std::string& variant,
+         std::optional<std::string> shutter_text) {
         py::gil_scoped_release release;
-        // As `obscura render` loads it: skins and morphs posed across the default shutter,
-        // moved to be centred on `time` when one is given.
-        Shutter shutter;
+        // As `obscura render` loads it: skins and morphs posed across the shutter (`shutter`, as
+        // --shutter, else the default one), moved to be centred on `time` when one is given.
+        CameraRequest shutter_request;
+        shutter_request.shutter = shutter_text;
+        Shutter shutter = requested_shutter(shutter_request);
         if (time) {
           const double half = shutter.duration_s() / 2;
           shutter.open_s = *time - half;
@@ -316,6 +318,7 @@ void bind_scene(py::module_& m) {
       py::arg("name_or_path") = "", py::arg("environment") = "auto",
       py::arg("environment_intensity") = 1.0, py::arg("gltf_scene") = "",
       py::arg("gltf_animation") = "", py::arg("time") = py::none(), py::arg("variant") = "",
+      py::arg("shutter") = py::none(),
       "Loads a built-in scene by name (builtin_scenes(); empty: the default Cornell box) or a "
       "scene file: Obscura JSON, glTF (.gltf/.glb), OBJ, PLY, STL or any format Assimp reads. "
       "`environment` as `obscura render --environment`: 'auto' (the studio environment when "

@@ -227,3 +227,20 @@ def test_ground_truth_with_flow_is_the_clis(cli, tmp_path, renderer):
             compared += 1
     assert compared == len(names)
     assert np.isfinite(truth["flow.forward"]).any()  # the sphere moves: some flow is measured
+
+
+def test_a_python_sequence_is_the_clis(cli, tmp_path):
+    # Three frames of the moving sphere, camera options and all: render_frames gives the files
+    # `obscura render --frames` writes.
+    cli("render", "motion-blur", "-q", "--width", 40, "--height", 30, "--spp", 1, "--seed", 2,
+        "--fstop", 8, "--shutter", "0:1/100", "--frames", "0:4:2", "--fps", 30, "-o",
+        tmp_path / "f_%02d.exr")
+    numbers = []
+    for n, result in obscura.render_frames("motion-blur", range(0, 5, 2), fps=30,
+                                           camera={"width": 40, "height": 30, "fstop": 8,
+                                                   "shutter": "0:1/100"},
+                                           spp=1, seed=2):
+        from_cli, _, _ = obscura.read_exr(str(tmp_path / f"f_{n:02d}.exr"))
+        assert np.array_equal(result.image, from_cli), f"frame {n}"
+        numbers.append(n)
+    assert numbers == [0, 2, 4]

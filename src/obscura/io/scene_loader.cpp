@@ -87,6 +87,13 @@ std::string scenes_search_report(const std::string& relative) {
          "source tree)";
 }
 
+bool scene_depends_on_time(const std::string& name_or_path) {
+  for (const BuiltinScene& b : builtin_scenes())
+    if (b.name == name_or_path) return false;
+  const std::string extension = lower_extension(name_or_path);
+  return extension == ".gltf" || extension == ".glb";
+}
+
 Scene load_scene(const std::string& name_or_path, const GltfLoadOptions& gltf) {
   const std::vector<BuiltinScene>& builtins = builtin_scenes();
   std::string name = name_or_path.empty() ? builtins.front().name : name_or_path;

@@ -219,6 +219,14 @@ void apply_film_overrides(Camera& camera, const CameraRequest& o) {
   }
   if (o.near_m) camera.near_m = *o.near_m;
   if (o.far_m) camera.far_m = *o.far_m;
+  if (o.time_s) {
+    if (!std::isfinite(*o.time_s))
+      throw RequestError("--time expects a finite number of seconds; got " +
+                         number_text(*o.time_s));
+    const double half = camera.shutter.duration_s() / 2;  // the rolling readout stays
+    camera.shutter.open_s = *o.time_s - half;
+    camera.shutter.close_s = *o.time_s + half;
+  }
 }
 
 }  // namespace

@@ -50,6 +50,8 @@ struct CameraRequest {
   std::optional<std::string> lens;          // a built-in lens's name
   std::optional<std::string> lens_file;     // a prescription file
   std::optional<std::string> lens_coating;  // "none" | "quarter-wave[:INDEX[:NM]]"
+  // The moment shown (--time): the shutter, its length kept, is centred on it.
+  std::optional<double> time_s;
 };
 
 // The film's side when neither the request, a calibration file nor the scene file give it.

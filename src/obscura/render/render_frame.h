@@ -41,8 +41,8 @@ struct FrameSettings {
   raster::RenderSettings raster = {};
   // Finishing (render/frame_finish.h), by the RenderedFrame overload below: diffraction glare
   // (a perspective or lens-system camera) and ghost flares (a lens-system camera).
-  std::optional<GlareSettings> glare;
-  std::optional<FlareSettings> flare;
+  std::optional<GlareSettings> glare = std::nullopt;
+  std::optional<FlareSettings> flare = std::nullopt;
 };
 
 struct FrameStats {
