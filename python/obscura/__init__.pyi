@@ -169,7 +169,13 @@ def load_scene(name_or_path: str = "", environment: str = "auto",
                environment_intensity: float = 1.0, gltf_scene: str = "",
                gltf_animation: str = "", time: Optional[float] = None,
                variant: str = "", shutter: Optional[str] = None) -> Scene: ...
-def render(scene: Scene, camera: Optional[Camera] = None, *,
+class RenderSession:
+    def __init__(self, scene: Scene) -> None: ...
+    @property
+    def scene(self) -> Scene: ...
+    @property
+    def tracer_compilations(self) -> int: ...
+def render(scene: Union[Scene, RenderSession], camera: Optional[Camera] = None, *,
            renderer: Literal["path", "whitted", "direct", "raster"] = "path",
            spp: Optional[int] = None,
            aovs: Sequence[Literal["albedo", "normal", "depth", "id"]] = (), threads: int = 0,

@@ -16,7 +16,8 @@ void bind_camera_math(py::class_<Camera>& camera);  // project, unproject, K, ex
 void bind_scene(py::module_& m);   // Scene, load_scene, built-in scenes, scenes from arrays
 void bind_render(py::module_& m);  // render() and RenderResult
 void bind_camera_request(py::module_& m);
-void bind_ground_truth(py::module_& m);  // ground_truth(): the --ground-truth channels  //
+void bind_ground_truth(py::module_& m);
+void bind_session(py::module_& m);  // RenderSession: a scene compiled once for many frames  // ground_truth(): the --ground-truth channels  //
                                          // resolve_camera(): the command line's camera options
 
 }  // namespace obscura::python

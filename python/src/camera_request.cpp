@@ -91,7 +91,7 @@ void bind_camera_request(py::module_& m) {
         py::arg("calibration_size") = none, py::arg("distortion") = none,
         py::arg("max_field_angle") = none, py::arg("calibration") = none,
         py::arg("calibration_image") = none, py::arg("lens") = none, py::arg("lens_file") = none,
-        py::arg("lens_coating") = none,
+        py::arg("lens_coating") = none, py::arg("time") = none,
         "The camera `obscura render SCENE [camera options]` renders with: the scene's camera "
         "(by name: camera=) with the command line's camera options as keywords, their dashes "
         "as underscores and their values in the same units and forms (fstop=2.8, "

@@ -22,6 +22,7 @@
 #include "errors.h"
 #include "obscura/render/renderer.h"
 #include "render_call.h"
+#include "session.h"
 
 namespace obscura::python {
 
@@ -84,7 +85,7 @@ RenderResult result_of(RenderOutcome&& outcome, const std::vector<std::string>& 
   throw py::error_already_set();
 }
 
-RenderResult render_frame_py(const Scene& scene, std::optional<Camera> camera,
+RenderResult render_frame_py(const py::object& scene_or_session, std::optional<Camera> camera,
                              const std::string& renderer, std::optional<int> spp,
                              const std::vector<std::string>& aov_names, int threads,
                              std::optional<uint64_t> seed, const std::string& sampler,
@@ -134,16 +135,31 @@ RenderResult render_frame_py(const Scene& scene, std::optional<Camera> camera,
   if (threads > 0)
     thread_limit.emplace(tbb::global_control::max_allowed_parallelism, size_t(threads));
 
+  // A Scene renders alone; a RenderSession keeps what it compiled (one render at a time).
+  const Scene* scene = nullptr;
+  PythonSession* session = nullptr;
+  if (py::isinstance<PythonSession>(scene_or_session))
+    session = &scene_or_session.cast<PythonSession&>();
+  else if (py::isinstance<Scene>(scene_or_session))
+    scene = &scene_or_session.cast<const Scene&>();
+  else
+    throw py::type_error("render: expected a Scene or a RenderSession, got " +
+                         std::string(py::str(py::type::of(scene_or_session))));
+
   RenderJob job;
   const Camera* view = camera ? &*camera : nullptr;
   std::thread worker([&] {
     try {
+      const ProgressCallback report = [&](int done, int total) {
+        job.done = done;
+        job.total = total;
+        ++job.progress_calls;
+      };
+      std::optional<std::lock_guard<std::mutex>> one_at_a_time;
+      if (session) one_at_a_time.emplace(session->busy);
       RenderOutcome outcome =
-          render_request(scene, view, request, &job.cancel, [&](int done, int total) {
-            job.done = done;
-            job.total = total;
-            ++job.progress_calls;
-          });
+          session ? render_request(*session->session, view, request, &job.cancel, report)
+                  : render_request(*scene, view, request, &job.cancel, report);
       std::lock_guard lock(job.mutex);
       job.outcome = std::move(outcome);
     } catch (...) {
@@ -233,7 +249,8 @@ void bind_render(py::module_& m) {
         py::arg("raster_samples") = 32, py::arg("spectral") = py::none(), py::arg("glare") = false,
         py::arg("glare_strength") = py::none(), py::arg("glare_radius") = py::none(),
         py::arg("flare") = py::none(),
-        "Renders `camera` (default: the scene's camera) over `scene` and returns a "
+        "Renders `camera` (default: the scene's camera) over `scene` (a Scene, or a "
+        "RenderSession that keeps what it compiled for the next call) and returns a "
         "RenderResult whose .image is float32 (H, W, 3) linear RGB without a copy of the film. "
         "renderer: 'path', 'whitted', 'direct' or 'raster'; spp: samples per pixel (default: "
         "the scene file's render.spp, else 32, as `obscura render`); aovs: any "

@@ -61,16 +61,17 @@ FrameSettings frame_settings(const RenderRequest& r, const SceneRenderSettings& 
 
 }  // namespace
 
-RenderOutcome render_request(const Scene& scene, const Camera* camera, const RenderRequest& request,
-                             const std::atomic<bool>* cancel, const ProgressCallback& progress) {
+RenderOutcome render_request(RenderSession& session, const Camera* camera,
+                             const RenderRequest& request, const std::atomic<bool>* cancel,
+                             const ProgressCallback& progress) {
+  const Scene& scene = session.scene();
   const FrameSettings settings = frame_settings(request, scene.render, cancel);
   const Camera& view = camera ? *camera : scene.camera;
   view.validate();
-  scene.validate();
-  // render_frame renders `view` over the scene as it is: the tracer compiles object motion over
+  // The session renders `view` over its scene as it is: the tracer compiles object motion over
   // view's exposure, so another camera needs no copy of the scene.
 
-  RenderedFrame frame = render_frame(scene, view, settings, request.aovs, progress);
+  RenderedFrame frame = session.render(view, settings, request.aovs, progress);
   RenderOutcome outcome;
   outcome.image = frame.finished();
   outcome.aovs = std::move(frame.aovs);
@@ -84,6 +85,13 @@ RenderOutcome render_request(const Scene& scene, const Camera* camera, const Ren
   outcome.warnings = scene.warnings;
   outcome.warnings.insert(outcome.warnings.end(), stats.warnings.begin(), stats.warnings.end());
   return outcome;
+}
+
+RenderOutcome render_request(const Scene& scene, const Camera* camera, const RenderRequest& request,
+                             const std::atomic<bool>* cancel, const ProgressCallback& progress) {
+  scene.validate();
+  RenderSession session(scene);
+  return render_request(session, camera, request, cancel, progress);
 }
 
 }  // namespace obscura::python

@@ -10,6 +10,7 @@
 #include "obscura/film/image.h"
 #include "obscura/film/tiles.h"
 #include "obscura/render/frame_request.h"
+#include "obscura/render/render_session.h"
 #include "obscura/scene/scene.h"
 
 namespace obscura::python {
@@ -46,5 +47,9 @@ struct RenderOutcome {
 // stops the render early; the outcome then holds the image so far.
 RenderOutcome render_request(const Scene& scene, const Camera* camera, const RenderRequest& request,
                              const std::atomic<bool>* cancel, const ProgressCallback& progress);
+// The same through `session` (over its own scene), which keeps what it compiled for the next.
+RenderOutcome render_request(RenderSession& session, const Camera* camera,
+                             const RenderRequest& request, const std::atomic<bool>* cancel,
+                             const ProgressCallback& progress);
 
 }  // namespace obscura::python

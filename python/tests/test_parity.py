@@ -244,3 +244,42 @@ def test_a_python_sequence_is_the_clis(cli, tmp_path):
         assert np.array_equal(result.image, from_cli), f"frame {n}"
         numbers.append(n)
     assert numbers == [0, 2, 4]
+
+
+def test_a_session_compiles_once_and_renders_what_render_renders():
+    scene = obscura.load_scene("motion-blur")
+    session = obscura.RenderSession(scene)
+    for time in (0.0, 0.0, 0.5):
+        camera = obscura.resolve_camera(scene, width=32, height=24, time=time)
+        kept = obscura.render(session, camera, spp=1)
+        alone = obscura.render(scene, camera, spp=1)
+        assert np.array_equal(kept.image, alone.image), f"at {time} s"
+    assert session.tracer_compilations == 2  # the sphere moves: once per exposure interval
+
+    still = obscura.RenderSession(obscura.load_scene("cornell-box"))
+    for time in (0.0, 1.0):
+        camera = obscura.resolve_camera(still.scene, width=32, height=24, time=time)
+        obscura.render(still, camera, spp=1)
+    assert still.tracer_compilations == 1
+    with pytest.raises(TypeError, match="Scene or a RenderSession"):
+        obscura.render("cornell-box")
+
+
+def test_camera_export_is_the_camera_of_the_rendered_ground_truth(cli, source_dir, tmp_path):
+    # What `obscura camera --export` writes of a scene (its render block asks for 960 x 540) is
+    # the camera the rendered ground truth's header records: the same size and K.
+    import json
+
+    scene = str(source_dir / "scenes/night-street.json")
+    exported = tmp_path / "camera.json"
+    cli("camera", scene, "--export", "opencv-json", "--output", exported)
+    calibration = json.loads(exported.read_text())
+    gt = tmp_path / "gt.exr"
+    cli("render", scene, "-q", "--renderer", "raster", "--ground-truth", gt, "-o",
+        tmp_path / "img.exr")
+    _, _, header = obscura.read_exr(str(gt))
+    width, height = map(int, header["obscura:camera:resolution"].split())
+    assert (calibration["image_width"], calibration["image_height"]) == (width, height) == (960, 540)
+    fx, fy, cx, cy = map(float, header["obscura:camera:K"].split())
+    k = calibration["camera_matrix"]["data"]
+    assert np.allclose([k[0], k[4], k[2], k[5]], [fx, fy, cx, cy], rtol=1e-12, atol=1e-9)

@@ -1,0 +1,40 @@
+#include "session.h"
+
+#include "bindings.h"
+
+namespace obscura::python {
+
+void bind_session(py::module_& m) {
+  py::class_<PythonSession>(
+      m, "RenderSession",
+      "A scene compiled once for many frames: render(session, camera, ...) takes it wherever it "
+      "takes a Scene, and keeps the tracer's compiled scene for the next call — again only when "
+      "objects move and the camera's exposure interval changes. The session renders a copy of "
+      "the scene taken when it was made: later changes to the Scene do not reach it.")
+      .def(py::init([](const Scene& scene) {
+             auto s = std::make_unique<PythonSession>();
+             {
+               py::gil_scoped_release release;
+               scene.validate();
+               s->scene = std::make_shared<const Scene>(scene);
+             }
+             s->session = std::make_unique<RenderSession>(*s->scene);
+             return s;
+           }),
+           py::arg("scene"))
+      .def_property_readonly(
+          "scene", [](const PythonSession& s) { return *s.scene; },
+          "A copy of the scene the session renders.")
+      .def_property_readonly(
+          "tracer_compilations",
+          [](PythonSession& s) {
+            std::lock_guard lock(s.busy);
+            return s.session->tracer_compilations();
+          },
+          "How many times the tracer's scene has been compiled so far.")
+      .def("__repr__", [](const PythonSession& s) {
+        return "<obscura.RenderSession '" + s.scene->name + "'>";
+      });
+}
+
+}  // namespace obscura::python
