@@ -259,10 +259,10 @@ Camera resolve_camera(const Scene& scene, const CameraRequest& request, std::opt
   camera.validate();  // the scene's own mistakes are failures (exit 1), not usage errors
   // The film's size, side by side, from the first that gives it: --width/--height, a calibration
   // file's image size, the scene file's render.width/height, 512.
-  if (request.calibration) {
-    // A calibration file's mistakes are failures too.
-    apply_calibration_file(camera, request);
-  } else {
+  // A calibration file's mistakes are failures too (and calibration_image without one a
+  // request error).
+  apply_calibration_file(camera, request);
+  if (!request.calibration) {
     camera.film.width_px = scene.render.width.value_or(kDefaultFilmSidePx);
     camera.film.height_px = scene.render.height.value_or(kDefaultFilmSidePx);
   }
