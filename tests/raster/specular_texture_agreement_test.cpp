@@ -50,8 +50,8 @@ test_images::RasterImages rasterize(const Scene& scene, const Camera& camera) {
 // A 4 × 4 linear float texture, texel (x, y) from `texel`. Few texels over many pixels: both
 // renderers then read it bilinearly at full resolution (the rasterizer's mipmap is not used).
 template <class F>
-Texture texture_4x4(int channels, F texel) {
-  Texture t;
+obscura::Texture texture_4x4(int channels, F texel) {
+  obscura::Texture t;
   t.width = t.height = 4;
   t.channels = channels;
   t.encoding = TextureEncoding::kLinear;
