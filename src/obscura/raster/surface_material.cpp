@@ -58,14 +58,14 @@ SurfacePoint point_with(const SurfaceMaterial& m, Rgb vertex_color, const L& loo
       break;
     case SurfaceModel::kPhong:
     case SurfaceModel::kBlinnPhong:
-      p.base = shading::textured(m.base, m.base_texture, lookup) * vertex_color;
+      p.base = shading::base_color_at(m.base, m.base_texture, vertex_color, lookup);
       shading::conserve_energy(p.base, p.specular);
       p.lobe_normalization = m.model == SurfaceModel::kPhong
                                  ? shading::phong_lobe_normalization(p.shininess)
                                  : shading::blinn_phong_lobe_normalization(p.shininess);
       break;
     default:
-      p.base = shading::textured(m.base, m.base_texture, lookup) * vertex_color;
+      p.base = shading::base_color_at(m.base, m.base_texture, vertex_color, lookup);
       break;
   }
   return p;

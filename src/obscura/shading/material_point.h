@@ -9,8 +9,9 @@
 // two copies of it drifted apart before (the rasterizer ignored KHR_materials_specular's
 // textures).
 //
-// Products are formed in glTF's order, factor × texture × vertex colour, so the numbers are the
-// same in both renderers to the last bit.
+// A base colour is formed as factor × (texture × vertex colour), in both renderers alike. (The
+// grouping matters to the last bit: the rasterizer's vertex colour is interpolated, 1 only to
+// within a rounding where the mesh has none, and this is the grouping it has always used.)
 #pragma once
 
 #include <concepts>
@@ -39,17 +40,18 @@ struct NoTextures {
   OBSCURA_SHADING_INLINE float alpha(const TextureRef&) const { return 1; }
 };
 
-// A colour factor times its texture's RGB.
+// A colour factor times its texture's RGB (emission and its texture, for one).
 template <TextureLookup L>
 OBSCURA_SHADING_INLINE Rgb textured(Rgb factor, const TextureRef& texture, const L& lookup) {
   return factor * lookup.color(texture);
 }
 
-// Emitted radiance at the point (front face; who decides the face is the caller): the emission
-// factor times the emission texture.
+// A base colour (Lambert reflectance, Phong k_d, glTF base colour) at the point: the factor times
+// its texture's RGB times the vertex colour.
 template <TextureLookup L>
-OBSCURA_SHADING_INLINE Rgb emission_at(const Material& material, const L& lookup) {
-  return textured(material.emission, material.emission_texture, lookup);
+OBSCURA_SHADING_INLINE Rgb base_color_at(Rgb factor, const TextureRef& texture, Rgb vertex_color,
+                                         const L& lookup) {
+  return factor * (lookup.color(texture) * vertex_color);
 }
 
 // A tangent-space normal map's perturbation of the unit `normal` (tangent: xyz, w = handedness),
@@ -83,7 +85,7 @@ template <TextureLookup L>
 MetallicRoughnessPoint metallic_roughness_at(const MetallicRoughnessMaterial& m, Rgb vertex_color,
                                              const L& lookup) {
   MetallicRoughnessPoint p;
-  p.base_color = textured(m.base_color, m.base_color_texture, lookup) * vertex_color;
+  p.base_color = base_color_at(m.base_color, m.base_color_texture, vertex_color, lookup);
   p.metallic = m.metallic;
   p.roughness = m.roughness;
   if (m.metallic_roughness_texture.valid()) {

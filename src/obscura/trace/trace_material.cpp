@@ -75,8 +75,8 @@ Rgb TraceMaterial::emitted(const SurfaceHit& hit) const {
 Rgb TraceMaterial::emitted_towards(const SurfaceHit& hit, Vector3f wo) const {
   if (unlit_) {
     const auto& mr = std::get<MetallicRoughnessMaterial>(model_);
-    return shading::textured(mr.base_color, mr.base_color_texture, HitTextures(textures_, hit)) *
-           hit.vertex_color;
+    return shading::base_color_at(mr.base_color, mr.base_color_texture, hit.vertex_color,
+                                  HitTextures(textures_, hit));
   }
   return dot(hit.geometric_normal, wo) > 0 ? emitted(hit) : Rgb();
 }
@@ -127,12 +127,12 @@ AnyBsdf TraceMaterial::bsdf_at(const SurfaceHit& hit, const SampledWavelengths* 
     // A conductor's η and k: positive numbers, not reflectances.
     Rgb lift_index(Rgb rgb) const { return wavelengths ? lift_unbounded(rgb, *wavelengths) : rgb; }
     AnyBsdf operator()(const DiffuseMaterial& m) const {
-      return LambertianBsdf{lift(shading::textured(m.reflectance, m.reflectance_texture, textures) *
-                                 hit.vertex_color)};
+      return LambertianBsdf{lift(shading::base_color_at(m.reflectance, m.reflectance_texture,
+                                                        hit.vertex_color, textures))};
     }
     AnyBsdf operator()(const PhongMaterial& m) const {
       return PhongBsdf(
-          lift(shading::textured(m.diffuse, m.diffuse_texture, textures) * hit.vertex_color),
+          lift(shading::base_color_at(m.diffuse, m.diffuse_texture, hit.vertex_color, textures)),
           lift(m.specular), m.shininess, m.blinn);
     }
     AnyBsdf operator()(const ConductorMaterial& m) const {
@@ -148,8 +148,8 @@ AnyBsdf TraceMaterial::bsdf_at(const SurfaceHit& hit, const SampledWavelengths* 
       // KHR_materials_specular with a zero specular: no specular layer at all, so nothing of
       // the incoming light is held back for one (Blender exports its Diffuse BSDF this way).
       if (m.purely_diffuse())
-        return LambertianBsdf{lift(shading::textured(m.base_color, m.base_color_texture, textures) *
-                                   hit.vertex_color)};
+        return LambertianBsdf{lift(shading::base_color_at(m.base_color, m.base_color_texture,
+                                                          hit.vertex_color, textures))};
       const shading::MetallicRoughnessPoint at =
           shading::metallic_roughness_at(m, hit.vertex_color, textures);
       const MetallicRoughnessParameters p{.base_color = lift(at.base_color),
