@@ -14,11 +14,13 @@
 #include "obscura/math/shading_normal.h"
 #include "obscura/raster/clip_transform.h"
 #include "obscura/raster/environment_lighting.h"
+#include "obscura/raster/fragment_textures.h"
 #include "obscura/raster/lights.h"
 #include "obscura/raster/shaders.h"
 #include "obscura/raster/shadow_map.h"
 #include "obscura/raster/surface_material.h"
 #include "obscura/raster/varyings.h"
+#include "obscura/shading/material_point.h"
 #include "obscura/shading/normal_map.h"
 
 namespace obscura::raster {
@@ -171,21 +173,21 @@ struct ScenePixelProgram {
     geometric = g2 > 0 ? geometric / std::sqrt(g2) : interpolated / std::sqrt(std::max(i2, 1e-30f));
     geometric = face_towards(geometric, v);
     FragmentUvs uvs{{{a.u, a.v, dx.u, dx.v, dy.u, dy.v}, {a.u1, a.v1, dx.u1, dx.v1, dy.u1, dy.v1}}};
+    const FragmentTextures textures(m.textures, m.filter, uvs);
     Vector3f n = geometric, coat = geometric;
     if (!uniforms.flat && i2 > 0) {  // the tracer's convention (math/shading_normal.h)
       Vector3f shading = interpolated / std::sqrt(i2);
       // KHR_materials_clearcoat: the coat ignores the base's normal map; it has its own or none.
       if (m.model == SurfaceModel::kLayeredMetallicRoughness)
-        coat = visible_shading_normal(coat_normal(m, shading, geometric, a, uvs), geometric, v);
-      if (m.normal_texture) {
+        coat =
+            visible_shading_normal(coat_normal(m, shading, geometric, a, textures), geometric, v);
+      if (textures.has(m.normal_texture)) {
         // Perturbed in the frame of the unperturbed normal and kept above the surface on its
         // side, as the tracer does; a back face then flips the whole frame (glTF doubleSided).
         Vector3f side = dot(shading, geometric) < 0 ? -geometric : geometric;
-        Rgb texel =
-            sample_or_one(m.normal_texture, m.normal_transform, m.filter, uvs.set[m.normal_uv_set]);
         shading = shading::keep_above_surface(
-            shading::perturbed_normal(shading, {a.tangent.x, a.tangent.y, a.tangent.z, a.tangent_w},
-                                      {texel.r, texel.g, texel.b}, m.normal_scale),
+            shading::normal_mapped(m.normal_texture, m.normal_scale, shading,
+                                   {a.tangent.x, a.tangent.y, a.tangent.z, a.tangent_w}, textures),
             side);
       }
       n = visible_shading_normal(shading, geometric, v);
@@ -212,9 +214,7 @@ struct ScenePixelProgram {
     } else {
       c = shade_surface(s, *uniforms.lights, uniforms.shadows, a.position, n, geometric, v);
     }
-    if (info.front_facing)
-      c += m.emission * sample_or_one(m.emission_texture, m.emission_transform, m.filter,
-                                      uvs.set[m.emission_uv_set]);
+    if (info.front_facing) c += shading::textured(m.emission, m.emission_texture, textures);
     return c * uniforms.exposure;
   }
 
@@ -230,13 +230,13 @@ struct ScenePixelProgram {
   // perturbation of it, kept above the surface like the base's.
   OBSCURA_RASTER_INLINE static Vector3f coat_normal(const SurfaceMaterial& m, Vector3f unperturbed,
                                                     Vector3f geometric, const Varyings& a,
-                                                    const FragmentUvs& uvs) {
-    if (!m.clearcoat_normal_texture.texture) return unperturbed;
+                                                    const FragmentTextures& textures) {
+    const MetallicRoughnessMaterial& mr = m.metallic_roughness;
+    if (!mr.has_clearcoat() || !textures.has(mr.clearcoat_normal_texture)) return unperturbed;
     Vector3f side = dot(unperturbed, geometric) < 0 ? -geometric : geometric;
-    Rgb texel = sample_or_one(m.clearcoat_normal_texture, m.filter, uvs);
     return shading::keep_above_surface(
-        shading::perturbed_normal(unperturbed, {a.tangent.x, a.tangent.y, a.tangent.z, a.tangent_w},
-                                  {texel.r, texel.g, texel.b}, m.clearcoat_normal_scale),
+        shading::normal_mapped(mr.clearcoat_normal_texture, mr.clearcoat_normal_scale, unperturbed,
+                               {a.tangent.x, a.tangent.y, a.tangent.z, a.tangent_w}, textures),
         side);
   }
 };
@@ -274,12 +274,10 @@ struct SceneGouraudProgram {
   Rgb fragment(const Varyings& a, const Varyings& dx, const Varyings& dy, FragmentInfo info) const {
     const SurfaceMaterial& m = *uniforms.material;
     FragmentUvs uvs{{{a.u, a.v, dx.u, dx.v, dy.u, dy.v}, {a.u1, a.v1, dx.u1, dx.v1, dy.u1, dy.v1}}};
+    const FragmentTextures textures(m.textures, m.filter, uvs);
     // Modulate, as fixed-function GL. (Lit at the vertices: normal maps do not apply.)
-    Rgb c =
-        a.lit * sample_or_one(m.base_texture, m.base_transform, m.filter, uvs.set[m.base_uv_set]);
-    if (info.front_facing)
-      c += m.emission * sample_or_one(m.emission_texture, m.emission_transform, m.filter,
-                                      uvs.set[m.emission_uv_set]);
+    Rgb c = a.lit * textures.color(m.base_texture);
+    if (info.front_facing) c += shading::textured(m.emission, m.emission_texture, textures);
     return c * uniforms.exposure;
   }
 

@@ -104,17 +104,20 @@ std::optional<Texture> compile_alpha_texture(const obscura::Texture& t) {
 }
 
 // The scene textures whose alpha some material uses: for its coverage (glTF base colour textures
-// of materials with alphaMode MASK or BLEND), or its sheen roughness.
-std::vector<bool> coverage_textures(const Scene& scene) {
+// of materials with alphaMode MASK or BLEND), its specular strength or its sheen roughness.
+std::vector<bool> alpha_channel_textures(const Scene& scene) {
   std::vector<bool> used(scene.textures.size(), false);
   for (const Material& m : scene.materials)
     if (const auto* mr = std::get_if<MetallicRoughnessMaterial>(&m.model);
         mr && m.alpha_mode != AlphaMode::kOpaque)
       mark_used(mr->base_color_texture, used);
-  // KHR_materials_sheen keeps its roughness in the alpha channel.
+  // KHR_materials_specular keeps its strength, KHR_materials_sheen its roughness in the alpha
+  // channel.
   for (const Material& m : scene.materials)
-    if (const auto* mr = std::get_if<MetallicRoughnessMaterial>(&m.model); mr && mr->has_sheen())
-      mark_used(mr->sheen_roughness_texture, used);
+    if (const auto* mr = std::get_if<MetallicRoughnessMaterial>(&m.model)) {
+      mark_used(mr->specular_texture, used);
+      if (mr->has_sheen()) mark_used(mr->sheen_roughness_texture, used);
+    }
   return used;
 }
 
@@ -134,6 +137,7 @@ std::vector<bool> used_textures(const Scene& scene) {
             mark_used(model.base_color_texture, used);
             mark_used(model.metallic_roughness_texture, used);
             mark_used(model.occlusion_texture, used);
+            mark_used(model.specular_color_texture, used);
             for (const TextureRef* r :
                  {&model.clearcoat_texture, &model.clearcoat_roughness_texture,
                   &model.clearcoat_normal_texture, &model.sheen_color_texture,
@@ -254,7 +258,9 @@ SceneRasterizer::SceneRasterizer(const Scene& scene, RasterSettings settings)
   }
 
   std::vector<bool> used = used_textures(scene);
-  std::vector<const Texture*> texture_of(scene.textures.size(), nullptr);
+  auto table = std::make_shared<TextureTable>();
+  std::vector<const Texture*>& texture_of = table->color;
+  texture_of.assign(scene.textures.size(), nullptr);
   textures_.reserve(scene.textures.size());
   for (size_t t = 0; t < scene.textures.size(); ++t)
     if (used[t] && scene.textures[t].width > 0 && scene.textures[t].height > 0)
@@ -263,8 +269,9 @@ SceneRasterizer::SceneRasterizer(const Scene& scene, RasterSettings settings)
     if (used[t] && scene.textures[t].width > 0 && scene.textures[t].height > 0)
       texture_of[t] = &textures_[k++];
   // Coverage textures, built first and pointed to after: the vector no longer reallocates.
-  std::vector<bool> coverage = coverage_textures(scene);
-  std::vector<const Texture*> alpha_of(scene.textures.size(), nullptr);
+  std::vector<bool> coverage = alpha_channel_textures(scene);
+  std::vector<const Texture*>& alpha_of = table->alpha;
+  alpha_of.assign(scene.textures.size(), nullptr);
   std::vector<int> alpha_index(scene.textures.size(), -1);
   for (size_t t = 0; t < scene.textures.size(); ++t)
     if (coverage[t] && scene.textures[t].width > 0 && scene.textures[t].height > 0)
@@ -274,8 +281,9 @@ SceneRasterizer::SceneRasterizer(const Scene& scene, RasterSettings settings)
       }
   for (size_t t = 0; t < scene.textures.size(); ++t)
     if (alpha_index[t] >= 0) alpha_of[t] = &alpha_textures_[size_t(alpha_index[t])];
+  texture_table_ = std::move(table);
   for (const Material& m : scene.materials)
-    materials_.push_back(compile_material(m, texture_of, alpha_of));
+    materials_.push_back(compile_material(m, texture_table_.get()));
 
   compile_lights(scene, lights_);
   for (const Instance& instance : scene.instances) {
@@ -471,7 +479,7 @@ void SceneRasterizer::render_frame(const Camera& camera, const RasterFrame& fram
     const SurfaceMaterial& m = materials_[instances_[i].material];
     if (m.alpha_mode == AlphaMode::kBlend) {
       blended.push_back(i);
-    } else if (m.transmission > 0) {
+    } else if (m.transmits()) {
       transmissive.push_back(i);
     } else {
       draw_instance(target, base, clip_from_world, i, frame.time_s);

@@ -117,7 +117,9 @@ class SceneRasterizer {
   std::map<uint32_t, Mesh> deforming_;             // meshes posed per frame, by index
   std::vector<int> normal_map_uv_set_;             // per mesh: its normal map's UV set, or −1
   std::vector<Texture> textures_;                  // the used scene textures
-  std::vector<Texture> alpha_textures_;            // the alpha channels of those that give coverage
+  std::vector<Texture> alpha_textures_;            // the alpha channels some material reads
+  // Both by scene texture index, which materials_ point to (shared: copies keep it).
+  std::shared_ptr<const TextureTable> texture_table_;
   std::vector<SurfaceMaterial> materials_;
   std::vector<CompiledInstance> instances_;
   LightSet lights_;

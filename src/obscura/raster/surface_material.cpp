@@ -3,21 +3,11 @@
 #include <algorithm>
 #include <variant>
 
+#include "obscura/shading/material_point.h"
+
 namespace obscura::raster {
 
 namespace {
-
-const Texture* texture_of(const TextureRef& ref, const std::vector<const Texture*>& textures) {
-  return ref.valid() && size_t(ref.texture) < textures.size() ? textures[ref.texture] : nullptr;
-}
-
-uint8_t uv_set_of(const TextureRef& ref) {
-  return ref.uv_set == 1 ? 1 : 0;  // sets past 1 are not kept (the loader warns)
-}
-
-TextureSlot slot_of(const TextureRef& ref, const std::vector<const Texture*>& textures) {
-  return {texture_of(ref, textures), ref.transform, uv_set_of(ref)};
-}
 
 float ggx_alpha(float roughness) {
   float r = std::clamp(roughness, 0.f, 1.f);
@@ -28,39 +18,82 @@ Rgb min(Rgb a, float b) {
   return {std::min(a.r, b), std::min(a.g, b), std::min(a.b, b)};
 }
 
+// The glTF models' parameters at a point, as the reflection formulas take them.
+void set_metallic_roughness(SurfacePoint& p, const shading::MetallicRoughnessPoint& mr,
+                            bool layered) {
+  p.base = mr.base_color;
+  p.metallic = mr.metallic;
+  // The tracer's floor on α (twice its mirror threshold) keeps D finite in float.
+  p.alpha = std::max(ggx_alpha(mr.roughness), 2e-3f);
+  p.specular_strength = mr.specular;
+  p.ior = mr.ior;
+  const float f0 = ((mr.ior - 1) / (mr.ior + 1)) * ((mr.ior - 1) / (mr.ior + 1));
+  p.specular = min(mr.specular_color * f0, 1.f);
+  p.transmission = std::clamp(mr.transmission, 0.f, 1.f);
+  // Layers only where the model has them (not over transmission, as in the tracer).
+  p.clearcoat = layered ? std::clamp(mr.clearcoat, 0.f, 1.f) : 0.f;
+  p.coat_alpha = std::max(ggx_alpha(layered ? mr.clearcoat_roughness : 0.f), 2e-3f);
+  p.sheen = layered ? mr.sheen_color : Rgb();
+  p.sheen_alpha = shading::sheen_alpha(layered ? mr.sheen_roughness : 0.f);
+}
+
+// The material at a point whose textures `lookup` reads (shading::TextureLookup).
+template <shading::TextureLookup L>
+SurfacePoint point_with(const SurfaceMaterial& m, Rgb vertex_color, const L& lookup) {
+  SurfacePoint p{};
+  p.model = m.model;
+  p.specular = m.specular;
+  p.shininess = m.shininess;
+  p.alpha = m.alpha;
+  p.ior = m.ior;
+  p.eta = m.eta, p.k = m.k, p.transmittance = m.transmittance;
+  p.multiple_scattering = m.multiple_scattering;
+  p.occlusion = lookup.color(m.occlusion_texture).r;
+  switch (m.model) {
+    case SurfaceModel::kMetallicRoughness:
+    case SurfaceModel::kLayeredMetallicRoughness:
+      set_metallic_roughness(
+          p, shading::metallic_roughness_at(m.metallic_roughness, vertex_color, lookup),
+          m.model == SurfaceModel::kLayeredMetallicRoughness);
+      break;
+    case SurfaceModel::kPhong:
+    case SurfaceModel::kBlinnPhong:
+      p.base = shading::base_color_at(m.base, m.base_texture, vertex_color, lookup);
+      shading::conserve_energy(p.base, p.specular);
+      p.lobe_normalization = m.model == SurfaceModel::kPhong
+                                 ? shading::phong_lobe_normalization(p.shininess)
+                                 : shading::blinn_phong_lobe_normalization(p.shininess);
+      break;
+    default:
+      p.base = shading::base_color_at(m.base, m.base_texture, vertex_color, lookup);
+      break;
+  }
+  return p;
+}
+
 }  // namespace
 
-SurfaceMaterial compile_material(const Material& material,
-                                 const std::vector<const Texture*>& textures,
-                                 const std::vector<const Texture*>& alpha_textures) {
+SurfaceMaterial compile_material(const Material& material, const TextureTable* textures) {
   SurfaceMaterial s;
+  s.textures = textures;
   s.emission = material.emission;
-  s.emission_texture = texture_of(material.emission_texture, textures);
-  s.emission_transform = material.emission_texture.transform;
-  s.emission_uv_set = uv_set_of(material.emission_texture);
-  s.normal_texture = texture_of(material.normal_texture, textures);
-  s.normal_transform = material.normal_texture.transform;
-  s.normal_uv_set = uv_set_of(material.normal_texture);
+  s.emission_texture = material.emission_texture;
+  s.normal_texture = material.normal_texture;
   s.normal_scale = material.normal_scale;
   s.double_sided = material.double_sided;
   struct Visitor {
     SurfaceMaterial& s;
-    const std::vector<const Texture*>& textures;
     void operator()(const DiffuseMaterial& m) const {
       s.model = SurfaceModel::kLambert;
       s.base = m.reflectance;
-      s.base_texture = texture_of(m.reflectance_texture, textures);
-      s.base_transform = m.reflectance_texture.transform;
-      s.base_uv_set = uv_set_of(m.reflectance_texture);
+      s.base_texture = m.reflectance_texture;
     }
     void operator()(const obscura::PhongMaterial& m) const {
       s.model = m.blinn ? SurfaceModel::kBlinnPhong : SurfaceModel::kPhong;
       s.base = m.diffuse;
       s.specular = m.specular;
       s.shininess = std::max(0.f, m.shininess);
-      s.base_texture = texture_of(m.diffuse_texture, textures);
-      s.base_transform = m.diffuse_texture.transform;
-      s.base_uv_set = uv_set_of(m.diffuse_texture);
+      s.base_texture = m.diffuse_texture;
     }
     void operator()(const ConductorMaterial& m) const {
       s.model = SurfaceModel::kConductor;
@@ -80,138 +113,38 @@ SurfaceMaterial compile_material(const Material& material,
     }
     void operator()(const MetallicRoughnessMaterial& m) const {
       s.base = m.base_color;
-      s.base_texture = texture_of(m.base_color_texture, textures);
-      s.base_transform = m.base_color_texture.transform;
-      s.base_uv_set = uv_set_of(m.base_color_texture);
-      s.occlusion_texture = texture_of(m.occlusion_texture, textures);
-      s.occlusion_transform = m.occlusion_texture.transform;
-      s.occlusion_uv_set = uv_set_of(m.occlusion_texture);
+      s.base_texture = m.base_color_texture;
+      s.occlusion_texture = m.occlusion_texture;
+      s.metallic_roughness = m;
       if (m.unlit) {
         s.model = SurfaceModel::kUnlit;
         return;
       }
       // KHR_materials_specular with a zero specular: a plain Lambertian surface (as the tracer).
-      if (m.purely_diffuse()) {
-        s.model = SurfaceModel::kLambert;
-        return;
-      }
-      s.model = SurfaceModel::kMetallicRoughness;
-      s.metallic = m.metallic, s.roughness = m.roughness;
-      s.specular_strength = m.specular, s.specular = m.specular_color, s.ior = m.ior;
-      s.metallic_roughness_texture = texture_of(m.metallic_roughness_texture, textures);
-      s.metallic_roughness_transform = m.metallic_roughness_texture.transform;
-      s.metallic_roughness_uv_set = uv_set_of(m.metallic_roughness_texture);
-      s.transmission = std::clamp(m.transmission, 0.f, 1.f);
-      if (s.transmission > 0) {
-        s.transmission_texture = texture_of(m.transmission_texture, textures);
-        s.transmission_transform = m.transmission_texture.transform;
-        s.transmission_uv_set = uv_set_of(m.transmission_texture);
-      }
+      s.model = m.purely_diffuse() ? SurfaceModel::kLambert : SurfaceModel::kMetallicRoughness;
+      // KHR_materials_clearcoat and _sheen (as the tracer: not over transmission).
+      if (s.model == SurfaceModel::kMetallicRoughness && m.transmission == 0 &&
+          (m.has_clearcoat() || m.has_sheen()))
+        s.model = SurfaceModel::kLayeredMetallicRoughness;
     }
     void operator()(const EmissiveMaterial&) const { s.model = SurfaceModel::kBlack; }
   };
-  std::visit(Visitor{s, textures}, material.model);
+  std::visit(Visitor{s}, material.model);
   if (const auto* mr = std::get_if<MetallicRoughnessMaterial>(&material.model)) {
     s.alpha_mode = material.alpha_mode;
     s.alpha_cutoff = material.alpha_cutoff;
     s.base_alpha = mr->alpha;
-    s.alpha_texture = texture_of(mr->base_color_texture, alpha_textures);
-    // KHR_materials_clearcoat and _sheen (as the tracer: not over transmission).
-    if (s.model == SurfaceModel::kMetallicRoughness && mr->transmission == 0 &&
-        (mr->has_clearcoat() || mr->has_sheen())) {
-      s.model = SurfaceModel::kLayeredMetallicRoughness;
-      if (mr->has_clearcoat()) {
-        s.clearcoat = mr->clearcoat;
-        s.clearcoat_roughness = mr->clearcoat_roughness;
-        s.clearcoat_normal_scale = mr->clearcoat_normal_scale;
-        s.clearcoat_texture = slot_of(mr->clearcoat_texture, textures);
-        s.clearcoat_roughness_texture = slot_of(mr->clearcoat_roughness_texture, textures);
-        s.clearcoat_normal_texture = slot_of(mr->clearcoat_normal_texture, textures);
-      }
-      if (mr->has_sheen()) {
-        s.sheen_color = mr->sheen_color;
-        s.sheen_roughness = mr->sheen_roughness;
-        s.sheen_color_texture = slot_of(mr->sheen_color_texture, textures);
-        s.sheen_roughness_texture = slot_of(mr->sheen_roughness_texture, alpha_textures);
-      }
-    }
+    s.alpha_texture = mr->base_color_texture;
   }
   return s;
 }
 
 SurfacePoint surface_point_untextured(const SurfaceMaterial& m, Rgb vertex_color) {
-  SurfacePoint p{};
-  p.model = m.model;
-  p.base = m.base * vertex_color;
-  p.specular = m.specular;
-  p.shininess = m.shininess;
-  p.metallic = m.metallic;
-  p.specular_strength = m.specular_strength;
-  p.alpha = m.alpha;
-  p.ior = m.ior;
-  p.eta = m.eta, p.k = m.k, p.transmittance = m.transmittance;
-  p.multiple_scattering = m.multiple_scattering;
-  p.occlusion = 1;
-  p.transmission = m.transmission;
-  switch (m.model) {
-    case SurfaceModel::kPhong:
-    case SurfaceModel::kBlinnPhong:
-      shading::conserve_energy(p.base, p.specular);
-      p.lobe_normalization = m.model == SurfaceModel::kPhong
-                                 ? shading::phong_lobe_normalization(p.shininess)
-                                 : shading::blinn_phong_lobe_normalization(p.shininess);
-      break;
-    case SurfaceModel::kMetallicRoughness:
-    case SurfaceModel::kLayeredMetallicRoughness:
-      // The tracer's floor on α (twice its mirror threshold) keeps D finite in float.
-      p.alpha = std::max(ggx_alpha(m.roughness), 2e-3f);
-      p.specular =
-          min(m.specular * (((m.ior - 1) / (m.ior + 1)) * ((m.ior - 1) / (m.ior + 1))), 1.f);
-      p.clearcoat = std::clamp(m.clearcoat, 0.f, 1.f);
-      p.coat_alpha = std::max(ggx_alpha(m.clearcoat_roughness), 2e-3f);
-      p.sheen = m.sheen_color;
-      p.sheen_alpha = shading::sheen_alpha(m.sheen_roughness);
-      break;
-    default:
-      break;
-  }
-  return p;
+  return point_with(m, vertex_color, shading::NoTextures{});
 }
 
 SurfacePoint surface_point(const SurfaceMaterial& m, const FragmentUvs& uvs, Rgb vertex_color) {
-  Rgb color = vertex_color *
-              sample_or_one(m.base_texture, m.base_transform, m.filter, uvs.set[m.base_uv_set]);
-  SurfacePoint p;
-  if (m.model == SurfaceModel::kLayeredMetallicRoughness) {
-    SurfaceMaterial textured = m;
-    Rgb mr = sample_or_one(m.metallic_roughness_texture, m.metallic_roughness_transform, m.filter,
-                           uvs.set[m.metallic_roughness_uv_set]);
-    textured.roughness *= mr.g;
-    textured.metallic *= mr.b;
-    textured.clearcoat *= sample_or_one(m.clearcoat_texture, m.filter, uvs).r;
-    textured.clearcoat_roughness *= sample_or_one(m.clearcoat_roughness_texture, m.filter, uvs).g;
-    textured.sheen_color *= sample_or_one(m.sheen_color_texture, m.filter, uvs);
-    textured.sheen_roughness *= sample_or_one(m.sheen_roughness_texture, m.filter, uvs).r;
-    p = surface_point_untextured(textured, color);
-  } else if (m.model == SurfaceModel::kMetallicRoughness && m.metallic_roughness_texture) {
-    Rgb mr = sample_or_one(m.metallic_roughness_texture, m.metallic_roughness_transform, m.filter,
-                           uvs.set[m.metallic_roughness_uv_set]);
-    SurfaceMaterial textured = m;
-    textured.roughness *= mr.g;
-    textured.metallic *= mr.b;
-    p = surface_point_untextured(textured, color);
-  } else {
-    p = surface_point_untextured(m, color);
-  }
-  if (m.occlusion_texture)
-    p.occlusion = sample_or_one(m.occlusion_texture, m.occlusion_transform, m.filter,
-                                uvs.set[m.occlusion_uv_set])
-                      .r;
-  if (m.transmission_texture)
-    p.transmission *= sample_or_one(m.transmission_texture, m.transmission_transform, m.filter,
-                                    uvs.set[m.transmission_uv_set])
-                          .r;
-  return p;
+  return point_with(m, vertex_color, FragmentTextures(m.textures, m.filter, uvs));
 }
 
 namespace {

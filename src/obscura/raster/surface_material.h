@@ -1,11 +1,13 @@
-// A scene material as the rasterizer shades it: one flat struct for every model, its textures
-// resolved to mipmapped raster textures, evaluated per fragment (or per vertex for Gouraud).
+// A scene material as the rasterizer shades it: one flat struct for every model, evaluated per
+// fragment (or per vertex for Gouraud). Its textures are read through the mipmapped raster
+// textures (fragment_textures.h), and which texture multiplies which factor is decided where the
+// tracer's is, in shading/material_point.h.
 //
 // The mapping (docs/rasterizer.md has the reasoning):
 //   diffuse             Lambert, reflectance × texture
 //   phong               energy-conserving Phong / Blinn-Phong, the tracer's PhongBsdf
-//   metallic-roughness  glTF's model as the tracer evaluates it (GGX, Smith, Schlick); metallic
-//                       and roughness textures (B, G), occlusion (R) darkens the ambient term
+//   metallic-roughness  glTF's model as the tracer evaluates it (GGX, Smith, Schlick), with
+//                       KHR_materials_specular and _ior; occlusion (R) darkens the ambient term
 //   conductor           GGX with the exact conductor Fresnel; a mirror's lobe is widened to
 //                       α = kMinHighlightAlpha so lights show as small highlights
 //   dielectric          its GGX reflection lobe with the dielectric Fresnel (widened likewise);
@@ -23,10 +25,10 @@
 #pragma once
 
 #include <cstdint>
-#include <vector>
 
 #include "obscura/color/rgb.h"
 #include "obscura/raster/brdf.h"
+#include "obscura/raster/fragment_textures.h"
 #include "obscura/raster/texture.h"
 #include "obscura/raster/varyings.h"
 #include "obscura/scene/material.h"
@@ -51,73 +53,46 @@ enum class SurfaceModel : uint8_t {
 // rasterizer shades them with at least this GGX width (a highlight a few pixels across).
 inline constexpr float kMinHighlightAlpha = 0.02f;
 
-// A texture, its KHR_texture_transform map and its UV set (0 or 1), for the layers' textures.
-struct TextureSlot {
-  const Texture* texture = nullptr;
-  UvTransform transform;
-  uint8_t uv_set = 0;
-};
-
 struct SurfaceMaterial {
   SurfaceModel model = SurfaceModel::kLambert;
-  Rgb base{0.8f, 0.8f, 0.8f};  // Lambert reflectance, Phong k_d, glTF base colour
-  Rgb specular;                // Phong k_s; glTF KHR_materials_specular colour
+  Rgb base{0.8f, 0.8f, 0.8f};  // Lambert reflectance, Phong k_d, an unlit glTF base colour
+  Rgb specular;                // Phong k_s
   float shininess = 0;         // Phong exponent
-  float metallic = 0, roughness = 1, specular_strength = 1, ior = 1.5f;  // glTF
-  float alpha = 1;          // conductor, dielectric: GGX width
-  Rgb eta, k;               // conductor
-  Rgb multiple_scattering;  // conductor: the colour of its multiple-scattering lobe
-  Rgb transmittance{1.f};   // dielectric
+  float alpha = 1;             // conductor, dielectric: GGX width
+  float ior = 1.5f;            // dielectric
+  Rgb eta, k;                  // conductor
+  Rgb multiple_scattering;     // conductor: the colour of its multiple-scattering lobe
+  Rgb transmittance{1.f};      // dielectric
+  // kMetallicRoughness, kLayeredMetallicRoughness: the scene's factors and textures, read at
+  // each point as the tracer reads them (shading/material_point.h). Its clear coat and sheen
+  // are dropped where the model is not layered (under transmission, as in the tracer).
+  MetallicRoughnessMaterial metallic_roughness;
   Rgb emission;
-  // Textures (null: none). Base multiplies `base`; metallic-roughness: G roughness, B metallic.
-  const Texture* base_texture = nullptr;
-  const Texture* metallic_roughness_texture = nullptr;
-  const Texture* occlusion_texture = nullptr;
-  const Texture* emission_texture = nullptr;
-  const Texture* normal_texture = nullptr;  // tangent-space normal map (shading/normal_map.h)
-  // Their KHR_texture_transform maps.
-  UvTransform base_transform, metallic_roughness_transform, occlusion_transform, emission_transform,
-      normal_transform;
-  // Their UV sets (TextureRef::uv_set: 0 or 1, an index into FragmentUvs::set).
-  uint8_t base_uv_set = 0, metallic_roughness_uv_set = 0, occlusion_uv_set = 0, emission_uv_set = 0,
-          normal_uv_set = 0;
-  float normal_scale = 1;  // glTF normalTexture.scale
-  // KHR_materials_transmission (metallic-roughness): factor × texture (R); 0 for other models.
-  float transmission = 0;
-  const Texture* transmission_texture = nullptr;
-  UvTransform transmission_transform;
-  uint8_t transmission_uv_set = 0;
+  // The textures below are references into `textures` (null: none at all). `base_texture`
+  // multiplies `base` (the glTF base colour texture for metallic-roughness: Gouraud shading
+  // modulates with it); occlusion (R) darkens the ambient term; the normal map is tangent-space
+  // (shading/normal_map.h) with glTF's normalTexture.scale.
+  const TextureTable* textures = nullptr;
+  TextureRef base_texture, occlusion_texture, emission_texture, normal_texture;
+  float normal_scale = 1;
   TextureFilter filter = TextureFilter::kTrilinear;
   bool double_sided = true;
   // glTF alpha coverage, for metallic-roughness materials as in the tracer: the base colour
-  // factor's alpha × the base colour texture's alpha (`alpha_texture` holds it as grey; null
-  // where the texture has no alpha) × the vertex colour's alpha.
+  // factor's alpha × the A of `alpha_texture` (the base colour texture, read through the table's
+  // alpha column) × the vertex colour's alpha.
   AlphaMode alpha_mode = AlphaMode::kOpaque;
   float base_alpha = 1, alpha_cutoff = 0.5f;
-  const Texture* alpha_texture = nullptr;
-  // KHR_materials_clearcoat (R, G of its textures) and KHR_materials_sheen (RGB; the roughness
-  // from the alpha channel, held as grey like alpha_texture), for kLayeredMetallicRoughness.
-  float clearcoat = 0, clearcoat_roughness = 0, clearcoat_normal_scale = 1;
-  Rgb sheen_color;
-  float sheen_roughness = 0;
-  TextureSlot clearcoat_texture, clearcoat_roughness_texture, clearcoat_normal_texture,
-      sheen_color_texture, sheen_roughness_texture;
+  TextureRef alpha_texture;
+
+  // KHR_materials_transmission: drawn after the opaque surfaces, over what they left behind.
+  bool transmits() const {
+    return model == SurfaceModel::kMetallicRoughness && metallic_roughness.transmission > 0;
+  }
 };
 
-// `textures[i]` is the raster form of Scene::textures[i] (null where unused); `alpha_textures[i]`
-// its alpha channel as grey (null where unused or without alpha).
-SurfaceMaterial compile_material(const Material& material,
-                                 const std::vector<const Texture*>& textures,
-                                 const std::vector<const Texture*>& alpha_textures = {});
-
-// Texture coordinates and their screen-space derivatives at a fragment.
-struct TextureCoordinates {
-  float u = 0, v = 0, du_dx = 0, dv_dx = 0, du_dy = 0, dv_dy = 0;
-};
-// Both texture coordinate sets a fragment has (TEXCOORD_0 and TEXCOORD_1).
-struct FragmentUvs {
-  TextureCoordinates set[2];
-};
+// `textures` is the raster form of the scene's textures (null: draw without textures); it must
+// outlive the material.
+SurfaceMaterial compile_material(const Material& material, const TextureTable* textures);
 
 // The material at one point: textures applied, vertex colour multiplied into the base colour.
 // Per point the fields mean what they mean in SurfaceMaterial, except: Phong's k_d/k_s are
@@ -140,15 +115,6 @@ struct SurfacePoint {
   Vector3f coat_normal;
 };
 
-OBSCURA_RASTER_INLINE Rgb sample_or_one(const Texture* t, const UvTransform& m,
-                                        TextureFilter filter, const TextureCoordinates& c) {
-  if (!t) return Rgb(1.f);
-  // The derivatives go through the map's linear part, so mip selection sees the scaled texture.
-  return t->sample(filter, m.m00 * c.u + m.m01 * c.v + m.m02, m.m10 * c.u + m.m11 * c.v + m.m12,
-                   m.m00 * c.du_dx + m.m01 * c.dv_dx, m.m10 * c.du_dx + m.m11 * c.dv_dx,
-                   m.m00 * c.du_dy + m.m01 * c.dv_dy, m.m10 * c.du_dy + m.m11 * c.dv_dy);
-}
-
 // The coverage α at a point, for the cut-out test (see SurfaceMaterial::alpha_mode). Read from
 // the full-resolution texture, bilinearly, as the tracer reads it: a cut-out is a threshold, and
 // a threshold of MIP-averaged alpha moves the cut-out's edge (thin parts vanish or swell with
@@ -156,23 +122,15 @@ OBSCURA_RASTER_INLINE Rgb sample_or_one(const Texture* t, const UvTransform& m,
 // antialiases the edge by testing each sample.
 OBSCURA_RASTER_INLINE float coverage_alpha(const SurfaceMaterial& m, const FragmentUvs& uvs,
                                            float vertex_alpha) {
-  float a = m.base_alpha * vertex_alpha;
-  if (m.alpha_texture)
-    a *= sample_or_one(m.alpha_texture, m.base_transform,
-                       m.filter == TextureFilter::kNearest ? m.filter : TextureFilter::kBilinear,
-                       uvs.set[m.base_uv_set])
-             .r;
-  return a;
+  const TextureFilter full_resolution =
+      m.filter == TextureFilter::kNearest ? m.filter : TextureFilter::kBilinear;
+  return m.base_alpha * vertex_alpha *
+         FragmentTextures(m.textures, full_resolution, uvs).alpha(m.alpha_texture);
 }
 
 SurfacePoint surface_point(const SurfaceMaterial& m, const FragmentUvs& uvs, Rgb vertex_color);
 // The same without textures (Gouraud shading at vertices).
 SurfacePoint surface_point_untextured(const SurfaceMaterial& m, Rgb vertex_color);
-
-OBSCURA_RASTER_INLINE Rgb sample_or_one(const TextureSlot& slot, TextureFilter filter,
-                                        const FragmentUvs& uvs) {
-  return sample_or_one(slot.texture, slot.transform, filter, uvs.set[slot.uv_set]);
-}
 
 // The sheen and the clear coat over a metallic-roughness point's f·cos θ_l (`base`), term for
 // term as trace/layered_metallic_roughness_bsdf.h has them.

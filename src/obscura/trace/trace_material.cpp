@@ -6,7 +6,8 @@
 
 #include "obscura/color/rgb_to_spectrum.h"
 #include "obscura/math/error.h"
-#include "obscura/shading/normal_map.h"
+#include "obscura/shading/material_point.h"
+#include "obscura/trace/hit_textures.h"
 
 namespace obscura {
 
@@ -67,10 +68,15 @@ bool TraceMaterial::disperses() const {
   return !fixed_ && d && d->disperses();
 }
 
+Rgb TraceMaterial::emitted(const SurfaceHit& hit) const {
+  return shading::textured(emission, emission_texture_, HitTextures(textures_, hit));
+}
+
 Rgb TraceMaterial::emitted_towards(const SurfaceHit& hit, Vector3f wo) const {
   if (unlit_) {
     const auto& mr = std::get<MetallicRoughnessMaterial>(model_);
-    return mr.base_color * texture_rgb(mr.base_color_texture, hit) * hit.vertex_color;
+    return shading::base_color_at(mr.base_color, mr.base_color_texture, hit.vertex_color,
+                                  HitTextures(textures_, hit));
   }
   return dot(hit.geometric_normal, wo) > 0 ? emitted(hit) : Rgb();
 }
@@ -79,39 +85,24 @@ bool TraceMaterial::passes_through(const SurfaceHit& hit, float u) const {
   if (alpha_mode_ == AlphaMode::kOpaque) return false;
   float alpha = alpha_ * hit.vertex_alpha;
   if (alpha_texture_.valid() && textures_)
-    alpha *= sample_texture((*textures_)[alpha_texture_.texture],
-                            alpha_texture_.transform(texture_uv(hit, alpha_texture_.uv_set)))
-                 .w;
+    alpha *= HitTextures(textures_, hit).alpha(alpha_texture_);
   if (alpha_mode_ == AlphaMode::kMask) return alpha < alpha_cutoff_;
   return u >= alpha;
-}
-
-Rgb TraceMaterial::texture_rgb(const TextureRef& ref, const SurfaceHit& hit) const {
-  if (!ref.valid() || !textures_) return Rgb(1.f);
-  Vector4f v =
-      sample_texture((*textures_)[ref.texture], ref.transform(texture_uv(hit, ref.uv_set)));
-  return {v.x, v.y, v.z};
-}
-
-float TraceMaterial::texture_alpha(const TextureRef& ref, const SurfaceHit& hit) const {
-  if (!ref.valid() || !textures_) return 1;
-  return sample_texture((*textures_)[ref.texture], ref.transform(texture_uv(hit, ref.uv_set))).w;
 }
 
 Vector3f TraceMaterial::normal_mapped(const SurfaceHit& hit, Vector3f normal,
                                       Vector4f tangent) const {
   if (!has_normal_map()) return normal;
-  Rgb texel = texture_rgb(normal_texture_, hit);
-  return shading::perturbed_normal(normal, tangent, {texel.r, texel.g, texel.b}, normal_scale_);
+  return shading::normal_mapped(normal_texture_, normal_scale_, normal, tangent,
+                                HitTextures(textures_, hit));
 }
 
 Vector3f TraceMaterial::coat_normal_mapped(const SurfaceHit& hit, Vector3f normal,
                                            Vector4f tangent) const {
   const auto* mr = std::get_if<MetallicRoughnessMaterial>(&model_);
-  if (!mr || !mr->clearcoat_normal_texture.valid() || !textures_) return normal;
-  Rgb texel = texture_rgb(mr->clearcoat_normal_texture, hit);
-  return shading::perturbed_normal(normal, tangent, {texel.r, texel.g, texel.b},
-                                   mr->clearcoat_normal_scale);
+  if (!mr || !textures_) return normal;
+  return shading::normal_mapped(mr->clearcoat_normal_texture, mr->clearcoat_normal_scale, normal,
+                                tangent, HitTextures(textures_, hit));
 }
 
 AnyBsdf TraceMaterial::bsdf_at(const SurfaceHit& hit, const SampledWavelengths* wavelengths) const {
@@ -123,7 +114,7 @@ AnyBsdf TraceMaterial::bsdf_at(const SurfaceHit& hit, const SampledWavelengths* 
     return *fixed_;
   }
   struct Visitor {
-    const TraceMaterial& self;
+    const HitTextures textures;
     const SurfaceHit& hit;
     const SampledWavelengths* wavelengths;
     // A colour input at the path's wavelengths (RGB mode: as it is). Reflectances stay bounded;
@@ -136,12 +127,12 @@ AnyBsdf TraceMaterial::bsdf_at(const SurfaceHit& hit, const SampledWavelengths* 
     // A conductor's η and k: positive numbers, not reflectances.
     Rgb lift_index(Rgb rgb) const { return wavelengths ? lift_unbounded(rgb, *wavelengths) : rgb; }
     AnyBsdf operator()(const DiffuseMaterial& m) const {
-      return LambertianBsdf{
-          lift(m.reflectance * self.texture_rgb(m.reflectance_texture, hit) * hit.vertex_color)};
+      return LambertianBsdf{lift(shading::base_color_at(m.reflectance, m.reflectance_texture,
+                                                        hit.vertex_color, textures))};
     }
     AnyBsdf operator()(const PhongMaterial& m) const {
       return PhongBsdf(
-          lift(m.diffuse * self.texture_rgb(m.diffuse_texture, hit) * hit.vertex_color),
+          lift(shading::base_color_at(m.diffuse, m.diffuse_texture, hit.vertex_color, textures)),
           lift(m.specular), m.shininess, m.blinn);
     }
     AnyBsdf operator()(const ConductorMaterial& m) const {
@@ -157,42 +148,23 @@ AnyBsdf TraceMaterial::bsdf_at(const SurfaceHit& hit, const SampledWavelengths* 
       // KHR_materials_specular with a zero specular: no specular layer at all, so nothing of
       // the incoming light is held back for one (Blender exports its Diffuse BSDF this way).
       if (m.purely_diffuse())
-        return LambertianBsdf{
-            lift(m.base_color * self.texture_rgb(m.base_color_texture, hit) * hit.vertex_color)};
-      MetallicRoughnessParameters p{.base_color = m.base_color,
-                                    .metallic = m.metallic,
-                                    .roughness = m.roughness,
-                                    .specular = m.specular,
-                                    .specular_color = m.specular_color,
-                                    .ior = m.ior};
-      p.base_color = p.base_color * self.texture_rgb(m.base_color_texture, hit) * hit.vertex_color;
-      // KHR_materials_specular's textures: strength in A, colour in RGB.
-      if (m.specular_texture.valid()) p.specular *= self.texture_alpha(m.specular_texture, hit);
-      if (m.specular_color_texture.valid())
-        p.specular_color = p.specular_color * self.texture_rgb(m.specular_color_texture, hit);
-      if (m.metallic_roughness_texture.valid()) {
-        Rgb mr = self.texture_rgb(m.metallic_roughness_texture, hit);  // G roughness, B metal
-        p.roughness *= mr.g;
-        p.metallic *= mr.b;
-      }
-      p.base_color = lift(p.base_color);
-      p.specular_color = lift(p.specular_color);
-      if (m.transmission > 0) {
-        float t = m.transmission * self.texture_rgb(m.transmission_texture, hit).r;
-        if (t > 0) return TransmissiveMetallicRoughnessBsdf(p, t, m.has_volume());
-      }
+        return LambertianBsdf{lift(shading::base_color_at(m.base_color, m.base_color_texture,
+                                                          hit.vertex_color, textures))};
+      const shading::MetallicRoughnessPoint at =
+          shading::metallic_roughness_at(m, hit.vertex_color, textures);
+      const MetallicRoughnessParameters p{.base_color = lift(at.base_color),
+                                          .metallic = at.metallic,
+                                          .roughness = at.roughness,
+                                          .specular = at.specular,
+                                          .specular_color = lift(at.specular_color),
+                                          .ior = at.ior};
+      if (at.transmission > 0)
+        return TransmissiveMetallicRoughnessBsdf(p, at.transmission, m.has_volume());
       // KHR_materials_clearcoat and _sheen (not over transmission: docs/scene-format.md).
-      LayerParameters layers;
-      if (m.has_clearcoat()) {
-        layers.clearcoat = m.clearcoat * self.texture_rgb(m.clearcoat_texture, hit).r;
-        layers.clearcoat_roughness =
-            m.clearcoat_roughness * self.texture_rgb(m.clearcoat_roughness_texture, hit).g;
-      }
-      if (m.has_sheen()) {
-        layers.sheen_color = lift(m.sheen_color * self.texture_rgb(m.sheen_color_texture, hit));
-        layers.sheen_roughness =
-            m.sheen_roughness * self.texture_alpha(m.sheen_roughness_texture, hit);
-      }
+      const LayerParameters layers{.clearcoat = at.clearcoat,
+                                   .clearcoat_roughness = at.clearcoat_roughness,
+                                   .sheen_color = m.has_sheen() ? lift(at.sheen_color) : Rgb(),
+                                   .sheen_roughness = at.sheen_roughness};
       if (layers.clearcoat <= 0 && layers.sheen_color.is_black()) return MetallicRoughnessBsdf(p);
       LayeredMetallicRoughnessBsdf layered(p, layers);
       if (layers.clearcoat > 0 && hit.coat_normal != Vector3f())
@@ -201,7 +173,7 @@ AnyBsdf TraceMaterial::bsdf_at(const SurfaceHit& hit, const SampledWavelengths* 
     }
     AnyBsdf operator()(const EmissiveMaterial&) const { return LambertianBsdf{Rgb(0.f)}; }
   };
-  return std::visit(Visitor{*this, hit, wavelengths}, model_);
+  return std::visit(Visitor{HitTextures(textures_, hit), hit, wavelengths}, model_);
 }
 
 }  // namespace obscura

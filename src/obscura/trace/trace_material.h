@@ -36,9 +36,7 @@ class TraceMaterial {
   // keeps only its hero wavelength.
   bool disperses() const;
   // Emitted radiance at `hit`, from the front face only: `emission` times the emission texture.
-  Rgb emitted(const SurfaceHit& hit) const {
-    return emission_texture_.valid() ? emission * texture_rgb(emission_texture_, hit) : emission;
-  }
+  Rgb emitted(const SurfaceHit& hit) const;
   // Whether any light leaves the surface by itself (emission, or an unlit surface's colour).
   bool emits() const { return unlit_ || !emission.is_black(); }
   // Light leaving the surface by itself towards wo (unit, world, away from the surface): the
@@ -81,9 +79,6 @@ class TraceMaterial {
   Vector3f coat_normal_mapped(const SurfaceHit& hit, Vector3f normal, Vector4f tangent) const;
 
  private:
-  Rgb texture_rgb(const TextureRef& ref, const SurfaceHit& hit) const;
-  float texture_alpha(const TextureRef& ref, const SurfaceHit& hit) const;
-
   TextureRef emission_texture_;
   bool unlit_ = false;
   Rgb absorption_;  // σ_a per metre: −ln(attenuation_color) / attenuation_distance
