@@ -50,7 +50,7 @@ std::vector<MergeCase> merge_cases() {
           {"raster_aovs", raster + " --aovs", {"normal", "depth", "id"}},
           {"path_flare_glare", lens + " --spp 2 --flare --glare", {}},
           {"raster_flare_glare", lens + " --renderer raster --flare --glare", {}},
-          {"raster_post_dof", "depth-of-field --renderer raster --raster-dof post " + raster, {}},
+          {"raster_post_dof", "depth-of-field --raster-dof post " + raster, {}},
           {"scene_file_glare_flare",
            test::source_path("scenes/night-street-flare.json") +
                " --width 96 --height 54 --spp 1 --renderer raster",
