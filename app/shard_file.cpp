@@ -241,23 +241,21 @@ ShardFile read_shard(const std::string& path) {
   frame.film_sums = Image(data.width, data.height, 4);
   frame.film_sums.channel_names = {"R", "G", "B", "W"};
   copy_channels(frame.film_sums.channel_names, frame.film_sums);
-  std::vector<AovImage> images;
-  for (const auto& [name, names] : aov_entries) {
-    AovImage aov{name, Image(data.width, data.height, int(names.size()))};
-    aov.image.channel_names = names;
-    std::vector<std::string> stored;
-    for (const std::string& channel : names) stored.push_back(name + "." + channel);
-    copy_channels(stored, aov.image);
-    images.push_back(std::move(aov));
-  }
-  for (const auto& [name, names] : layer_entries) {
-    AovImage layer{name, Image(data.width, data.height, int(names.size()))};
-    layer.image.channel_names = names;
-    std::vector<std::string> stored;
-    for (const std::string& channel : names) stored.push_back(name + "." + channel);
-    copy_channels(stored, layer.image);
-    frame.layers.push_back(std::move(layer));
-  }
+  // Each listed image from its channels "name.channel".
+  auto read_images = [&](const auto& entries) {
+    std::vector<AovImage> read;
+    for (const auto& [name, names] : entries) {
+      AovImage image{name, Image(data.width, data.height, int(names.size()))};
+      image.image.channel_names = names;
+      std::vector<std::string> stored;
+      for (const std::string& channel : names) stored.push_back(name + "." + channel);
+      copy_channels(stored, image.image);
+      read.push_back(std::move(image));
+    }
+    return read;
+  };
+  const std::vector<AovImage> images = read_images(aov_entries);
+  frame.layers = read_images(layer_entries);
   if (!images.empty()) {
     try {
       frame.aovs = AovBuffers::from_images(images);
