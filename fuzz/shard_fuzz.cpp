@@ -1,9 +1,9 @@
 // libFuzzer target for `obscura merge`'s reader: the bytes are a partial film (an OpenEXR data file
 // written by `render --shard`), read as merge reads each part — the EXR through CheckedImageInput,
-// then the header attributes (part, renderer, tile size, channel layout, progress) and the
-// channels they name — and merged as the only part of a one-part frame. An obscura::Error is the
-// expected outcome for bad input; anything else escaping, a crash, a sanitizer report, a leak or
-// > 2 GB is a finding.
+// then the header attributes (part, renderer, tile size, channel layout, progress, finishing) and
+// the channels they name — merged as the only part of a one-part frame, and finished. An
+// obscura::Error is the expected outcome for bad input; anything else escaping, a crash, a
+// sanitizer report, a leak or > 2 GB is a finding.
 #include <unistd.h>
 #include <cstdint>
 #include <fstream>
@@ -25,7 +25,10 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
       .write(reinterpret_cast<const char*>(data), std::streamsize(size));
   try {
     obscura::app::ShardFile shard = obscura::app::read_shard(path);
-    obscura::app::merge_shards({shard});
+    obscura::app::RenderedFrame frame = obscura::app::merge_shards({shard});
+    // Finished as merge finishes it (its layers and recipe, render/frame_finish.h), where the
+    // glare's PSF stays small: a radius of thousands of pixels is legal and merely slow.
+    if (!frame.finish.glare || frame.finish.glare->settings.radius_px <= 16) frame.finished();
   } catch (const obscura::Error&) {
     // a clear error for bad input: the expected outcome
   }

@@ -168,15 +168,17 @@ Image depth_of_field_post(const Image& color, const Image& view_depth, const Ima
                     std::to_string(view_depth.height));
   if (coc_px.channels != 1 || coc_px.width != color.width || coc_px.height != color.height)
     throw Error("depth_of_field_post.coc_px", "must be one channel of the colour's size");
-  if (!(pixel_aspect > 0) || !std::isfinite(pixel_aspect))
+  // Bounded so that the gather's reach in rows (radius × aspect) and its offset table stay
+  // small: a disk can only be that many pixels across.
+  if (!(pixel_aspect >= 1.0 / 1024 && pixel_aspect <= 1024))
     throw Error("depth_of_field_post.pixel_aspect",
-                "must be finite and positive; got " + std::to_string(pixel_aspect));
-  if (!(settings.max_coc_px >= 0) || !std::isfinite(settings.max_coc_px))
+                "must be in [1/1024, 1024]; got " + std::to_string(pixel_aspect));
+  if (!(settings.max_coc_px >= 0 && settings.max_coc_px <= 4096))
     throw Error("depth_of_field_post.max_coc_px",
-                "must be finite and ≥ 0; got " + std::to_string(settings.max_coc_px));
-  if (!(settings.depth_tolerance > 0))
+                "must be in [0, 4096] pixels; got " + std::to_string(settings.max_coc_px));
+  if (!(settings.depth_tolerance >= 1e-6 && settings.depth_tolerance <= 1e6))
     throw Error("depth_of_field_post.depth_tolerance",
-                "must be positive; got " + std::to_string(settings.depth_tolerance));
+                "must be in [1e-6, 1e6]; got " + std::to_string(settings.depth_tolerance));
 
   const int w = color.width, h = color.height;
   Image out(w, h, 3);
