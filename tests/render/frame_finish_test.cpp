@@ -9,6 +9,7 @@
 #include <cstring>
 #include <string>
 
+#include "obscura/camera/perspective.h"
 #include "obscura/film/film.h"
 #include "obscura/math/error.h"
 #include "obscura/render/camera_glare.h"
@@ -98,6 +99,10 @@ TEST(FrameFinish, GlareFromTheRecipeIsTheCamerasGlare) {
   // The numbers the recipe carries give the PSF the camera gives: a shard's merge glares its
   // frame as the process that rendered it would have.
   Camera camera;
+  // 6 µm pixels, as a real sensor's: the PSF's grid stays small (1 mm pixels need a huge one).
+  auto& sensor = std::get<Perspective>(camera.projection);
+  sensor.sensor_width_mm = 33 * 0.006;
+  sensor.sensor_height_mm = 21 * 0.006;
   camera.film.width_px = 33;
   camera.film.height_px = 21;
   camera.lens.f_number = 11;
