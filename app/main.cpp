@@ -72,6 +72,24 @@ int run(int argc, char** argv) {
   obscura::app::add_merge_command(app);
   obscura::app::add_raster_clip_command(app);
 
+  // A first word that is neither an option nor a command is named as such (CLI11 would only
+  // say that a command is required).
+  if (argc > 1 && argv[1][0] != '-') {
+    std::string commands;
+    bool known = false;
+    for (const CLI::App* command : app.get_subcommands({})) {
+      commands += (commands.empty() ? "" : ", ") + command->get_name();
+      known = known || command->check_name(argv[1]);
+    }
+    if (!known) {
+      if (obscura::app::team().leads())
+        std::fprintf(stderr,
+                     "obscura: error: unknown command '%s'; the commands are %s\nRun 'obscura "
+                     "--help' for usage.\n",
+                     argv[1], commands.c_str());
+      return 2;
+    }
+  }
   try {
     app.parse(argc, argv);
   } catch (const CLI::CallForHelp& e) {

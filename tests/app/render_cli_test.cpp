@@ -101,10 +101,22 @@ INSTANTIATE_TEST_SUITE_P(
                       BadCall{"render -o DIR", 1, "is a directory"},
                       BadCall{"render -o DIR/x.bmp", 1, "unsupported image extension '.bmp'"},
                       BadCall{"render no-such-scene -o DIR/x.png", 1, "no-such-scene"},
-                      BadCall{"", 2, "subcommand"}),
+                      BadCall{"", 2, "subcommand"},
+                      BadCall{"view", 2, "unknown command 'view'; the commands are render"}),
     [](const ::testing::TestParamInfo<BadCall>& info) {
       return "case" + std::to_string(info.index);
     });
+
+TEST_F(RenderCli, AWebPageSavedAsGlbIsNamedForWhatItIsNot) {
+  // What a download of a model's web page leaves: HTML under a .glb name.
+  std::ofstream(path("model.glb")) << "<!DOCTYPE html>\n<html><head><title>Model</title>";
+  auto result = test::run_cli("render " + path("model.glb") + " -q -o " + path("x.png"));
+  EXPECT_EQ(result.exit_code, 1) << result.output;
+  EXPECT_NE(result.output.find("not a glTF file"), std::string::npos) << result.output;
+  EXPECT_NE(result.output.find("starts with \"<!DOCTYPE html>"), std::string::npos)
+      << result.output;
+  EXPECT_FALSE(fs::exists(path("x.png")));
+}
 
 TEST_F(RenderCli, UnwritableOutputIsReportedAndLeavesNothing) {
   // /proc takes no new files, even from root (who may write to any chmod-protected directory).

@@ -3,6 +3,7 @@
 #include <tiny_gltf.h>
 
 #include <algorithm>
+#include <cctype>
 #include <cmath>
 #include <cstring>
 #include <filesystem>
@@ -323,6 +324,22 @@ Scene load_gltf_bytes(std::span<const uint8_t> bytes, const std::string& name,
     ok = loader.LoadBinaryFromMemory(&model, &err, &warn, bytes.data(), unsigned(bytes.size()),
                                      base_dir);
   } else {
+    // Neither container: say what the file is not, and how it starts (a web page saved as .glb,
+    // an empty download), rather than a JSON parser's complaint about its first byte.
+    size_t first = 0;
+    if (bytes.size() >= 3 && bytes[0] == 0xEF && bytes[1] == 0xBB && bytes[2] == 0xBF)
+      first = 3;  // a UTF-8 byte order mark, which JSON files may carry
+    while (first < bytes.size() && std::isspace(bytes[first])) ++first;
+    if (first == bytes.size() || bytes[first] != '{') {
+      std::string start;
+      for (size_t i = first; i < bytes.size() && start.size() < 24; ++i)
+        start += std::isprint(bytes[i]) ? char(bytes[i]) : '.';
+      throw Error(name,
+                  "not a glTF file: binary glTF (.glb) starts with the bytes 'glTF' and "
+                  "glTF JSON (.gltf) with '{'; " +
+                      (start.empty() ? std::string("this file is empty")
+                                     : "this one starts with \"" + start + "\""));
+    }
     ok = loader.LoadASCIIFromString(
         &model, &err, &warn, reinterpret_cast<const char*>(bytes.data()),
         unsigned(std::min<size_t>(bytes.size(), kMaxGltfFileBytes)), base_dir);
