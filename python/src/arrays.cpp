@@ -104,4 +104,23 @@ Image array_to_image(const py::handle& value, const char* what) {
   return image;
 }
 
+py::array_t<double> matrix_to_array(const Matrix4& m) {
+  py::array_t<double> out({4, 4});
+  auto a = out.mutable_unchecked<2>();
+  for (int i = 0; i < 4; ++i)
+    for (int j = 0; j < 4; ++j) a(i, j) = m[i][j];
+  return out;
+}
+
+Matrix4 array_to_matrix(const py::handle& value, const char* what) {
+  py::array a = checked_float_array(value, what, 4);
+  if (a.ndim() != 2 || a.shape(0) != 4)
+    throw py::value_error(std::string(what) + ": expected a 4x4 matrix");
+  std::vector<double> v = as_doubles(a);
+  Matrix4 m;
+  for (int i = 0; i < 4; ++i)
+    for (int j = 0; j < 4; ++j) m[i][j] = v[size_t(4 * i + j)];
+  return m;
+}
+
 }  // namespace obscura::python

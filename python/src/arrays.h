@@ -9,6 +9,7 @@
 #include <vector>
 
 #include "obscura/film/image.h"
+#include "obscura/math/matrix4.h"
 
 namespace obscura::python {
 
@@ -42,5 +43,9 @@ std::vector<double> as_doubles(const py::array& array);
 
 // A (height, width, channels) or (height, width) float array as an Image (a copy).
 Image array_to_image(const py::handle& value, const char* what);
+
+// A 4x4 matrix as a float64 (4, 4) array, and back (ValueError naming `what` for another shape).
+py::array_t<double> matrix_to_array(const Matrix4& m);
+Matrix4 array_to_matrix(const py::handle& value, const char* what);
 
 }  // namespace obscura::python

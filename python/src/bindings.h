@@ -17,7 +17,10 @@ void bind_scene(py::module_& m);   // Scene, load_scene, built-in scenes, scenes
 void bind_render(py::module_& m);  // render() and RenderResult
 void bind_camera_request(py::module_& m);
 void bind_ground_truth(py::module_& m);
-void bind_session(py::module_& m);  // RenderSession: a scene compiled once for many frames  // ground_truth(): the --ground-truth channels  //
-                                         // resolve_camera(): the command line's camera options
+void bind_session(py::module_& m);
+void bind_motion(
+    py::module_& m);  // motion keys of cameras and instances  // RenderSession: a scene compiled
+                      // once for many frames  // ground_truth(): the --ground-truth channels  //
+                      // resolve_camera(): the command line's camera options
 
 }  // namespace obscura::python

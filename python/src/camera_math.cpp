@@ -10,35 +10,16 @@
 #include "arrays.h"
 #include "bindings.h"
 #include "obscura/camera/intrinsics.h"
+#include "obscura/camera/point_projection.h"
 #include "obscura/io/atomic_file.h"
 #include "obscura/io/calibration_file.h"
 #include "obscura/io/camera_calibration.h"
 #include "obscura/io/colmap_model.h"
 #include "obscura/math/error.h"
-#include "obscura/camera/point_projection.h"
 
 namespace obscura::python {
 
 namespace {
-
-py::array_t<double> matrix_array(const Matrix4& m) {
-  py::array_t<double> out({4, 4});
-  auto a = out.mutable_unchecked<2>();
-  for (int i = 0; i < 4; ++i)
-    for (int j = 0; j < 4; ++j) a(i, j) = m[i][j];
-  return out;
-}
-
-Matrix4 matrix_from(const py::handle& value) {
-  py::array a = checked_float_array(value, "world_from_camera", 4);
-  if (a.ndim() != 2 || a.shape(0) != 4)
-    throw py::value_error("world_from_camera: expected a 4x4 matrix");
-  std::vector<double> v = as_doubles(a);
-  Matrix4 m;
-  for (int i = 0; i < 4; ++i)
-    for (int j = 0; j < 4; ++j) m[i][j] = v[size_t(4 * i + j)];
-  return m;
-}
 
 void write_text(const std::string& path, const std::string& text) {
   AtomicFile file(path);
@@ -130,9 +111,11 @@ void bind_camera_math(py::class_<Camera>& camera) {
   camera.def_property(
       "world_from_camera",
       [](const Camera& c) {
-        return matrix_array(c.world_from_camera.at(c.shutter.open_s).matrix());
+        return matrix_to_array(c.world_from_camera.at(c.shutter.open_s).matrix());
       },
-      [](Camera& c, const py::handle& m) { c.world_from_camera = Transform(matrix_from(m)); },
+      [](Camera& c, const py::handle& m) {
+        c.world_from_camera = Transform(array_to_matrix(m, "world_from_camera"));
+      },
       "The pose (4x4, camera -> world; camera space: X right, Y up, looking down -Z) at the "
       "shutter's open time. Assigning one makes the camera still.");
 

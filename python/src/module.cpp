@@ -15,6 +15,7 @@ PYBIND11_MODULE(_obscura, m) {
   bind_color(m);
   bind_camera(m);
   bind_scene(m);
+  bind_motion(m);
   bind_session(m);
   bind_render(m);
   bind_camera_request(m);

@@ -67,13 +67,7 @@ std::vector<T> attribute(const py::handle& value, const char* what, size_t count
 }
 
 Transform transform_from(const py::handle& value) {
-  py::array a = checked_float_array(value, "transform", 4);
-  if (a.ndim() != 2 || a.shape(0) != 4) throw py::value_error("transform: expected a 4x4 matrix");
-  std::vector<double> v = as_doubles(a);
-  Matrix4 m;
-  for (int i = 0; i < 4; ++i)
-    for (int j = 0; j < 4; ++j) m[i][j] = v[size_t(4 * i + j)];
-  return Transform(m);
+  return Transform(array_to_matrix(value, "transform"));
 }
 
 uint32_t add_material(Scene& scene, const std::string& kind, const Vec3& color,
