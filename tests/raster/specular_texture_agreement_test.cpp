@@ -10,6 +10,7 @@
 #include <cstdio>
 #include <memory>
 
+#include "direct_light_reference.h"
 #include "obscura/camera/frames.h"
 #include "obscura/raster/scene_rasterizer.h"
 #include "obscura/scene/shapes.h"
@@ -21,25 +22,8 @@
 namespace obscura::raster {
 namespace {
 
-struct Images {
-  Image color, id;
-};
-
-Camera with_film(Camera camera, int width, int height) {
-  camera.film.width_px = width;
-  camera.film.height_px = height;
-  camera.film.filter = BoxFilter{1e-6};  // every tracer sample at its pixel centre
-  return camera;
-}
-
-Images trace(const Scene& scene, const Camera& camera) {
-  TraceScene trace_scene(scene, std::make_shared<EmbreeDevice>());
-  Film film(camera.film.width_px, camera.film.height_px);
-  AovBuffers aovs(camera.film.width_px, camera.film.height_px);
-  render(trace_scene, camera, DirectLightingIntegrator(), {.samples_per_pixel = 1, .seed = 1}, film,
-         {}, &aovs);
-  return {film.to_image(), aovs.id()};
-}
+using test_images::trace_direct;
+using test_images::with_film;
 
 test_images::RasterImages rasterize(const Scene& scene, const Camera& camera) {
   RasterSettings settings;
@@ -98,7 +82,7 @@ Scene specular_floor() {
 TEST(SpecularTextureAgreement, RasterizerReadsSpecularTexturesAsTheTracer) {
   const Scene scene = specular_floor();
   const Camera camera = with_film(scene.camera, 160, 120);
-  const Images traced = trace(scene, camera);
+  const test_images::TracedImages traced = trace_direct(scene, camera);
   const test_images::RasterImages raster = rasterize(scene, camera);
   const test_images::ColourAgreement a =
       test_images::compare_colours(traced.color, traced.id, raster.color, raster.id);
