@@ -16,6 +16,7 @@
 #include "obscura/render/frame_request.h"
 #include "obscura/render/lens_flare.h"
 #include "obscura/render/render_session.h"
+#include "obscura/render/renderer_backend.h"
 #include "obscura/scene/material_variants.h"
 #include "option_ranges.h"
 #include "usage_error.h"
@@ -85,7 +86,7 @@ void check_outputs(const RenderOptions& options, const Scene& scene) {
   check_not_an_input(options.output, scene.input_files);
   if (options.tracer.aovs)
     for (const std::string& aov :
-         aov_paths(options.output, renders_albedo(options.tracer.renderer)))
+         aov_paths(options.output, options.tracer.renderer.capabilities().albedo))
       check_not_an_input(aov, scene.input_files);
 }
 
@@ -139,8 +140,8 @@ Camera resolve_render_camera(const Scene& scene, RenderOptions& options, bool wr
   if (!options.ground_truth.path.empty() || options.ground_truth.flow_times) {
     ground_truth_times(options.ground_truth, camera);  // a bad value fails here, early
     if (writes_output) check_ground_truth_output(options.ground_truth, options.output, scene);
-    if (!options.ground_truth.path.empty() && options.tracer.renderer == Renderer::kRaster)
-      raster::check_ground_truth_camera(camera);  // before rendering, not after
+    if (!options.ground_truth.path.empty())  // before rendering, not after
+      options.tracer.renderer.backend().check_ground_truth_camera(camera);
   }
   return camera;
 }
@@ -154,7 +155,10 @@ Scene prepare_scene(RenderOptions& options, bool writes_output) {
 }
 
 TileDeal tile_deal(Renderer renderer, int width, int height, int parts) {
-  return {.width = width, .height = height, .tile_size = tile_size(renderer), .parts = parts};
+  return {.width = width,
+          .height = height,
+          .tile_size = renderer.capabilities().tile_size,
+          .parts = parts};
 }
 
 FrameSettings frame_settings(const RenderOptions& options, const SceneRenderSettings& scene,
@@ -190,13 +194,15 @@ RenderedFrame render_frame(RenderSession& session, const Camera& camera,
   const FrameStats& stats = frame.stats;
   // Without --spp, a time limit asks the tracer for as many samples as fit: reaching it
   // completes the render.
-  const bool open_ended = is_tracer(settings.renderer) && settings.samples_per_pixel != options.spp;
+  const RendererCapabilities& renderer = settings.renderer.capabilities();
+  const bool open_ended =
+      renderer.takes_samples_per_pixel && settings.samples_per_pixel != options.spp;
   frame.progress = {.end = stats.cancelled                     ? RenderEnd::kInterrupted
                            : stats.time_limited && !open_ended ? RenderEnd::kTimeLimit
                                                                : RenderEnd::kComplete,
                     .done = stats.done,
                     .requested = stats.requested,
-                    .unit = is_tracer(settings.renderer) ? "samples per pixel" : "frames"};
+                    .unit = renderer.progress_unit};
   frame.time_limit_reached = open_ended && stats.time_limited;
   frame.warnings = stats.warnings;
   frame.seconds = stats.seconds;

@@ -52,10 +52,9 @@ std::string write_ground_truth_file(const GroundTruthOptions& options, Renderer 
                                     const RasterOptions& raster, const Scene& scene) {
   const Camera& camera = scene.camera;
   const GroundTruthTimes times = ground_truth_times(options, camera);
-  raster::RenderSettings raster_settings;
-  apply_raster_options(raster, raster_settings);
-  const GroundTruthBuffer buffer =
-      render_ground_truth_frame(scene, camera, renderer, raster_settings, times);
+  FrameSettings settings{.renderer = renderer};
+  apply_raster_options(raster, settings.raster);
+  const GroundTruthBuffer buffer = render_ground_truth_frame(scene, camera, settings, times);
   write_ground_truth(options.path, buffer, camera, times);
   return options.path;
 }

@@ -1,5 +1,6 @@
 #include "raster_effects_options.h"
 
+#include "obscura/render/renderer_backend.h"
 #include "option_ranges.h"
 #include "raster_options.h"
 #include "usage_error.h"
@@ -21,7 +22,7 @@ void add_raster_effects_options(CLI::App& render, RasterEffectsOptions& o) {
 
 void validate(const RasterEffectsOptions& o, Renderer renderer) {
   reject_unless_raster(o.registered, renderer);
-  if (renderer != Renderer::kRaster) return;
+  if (!renderer.capabilities().raster_settings) return;
   if (!raster::parse_depth_of_field_method(o.dof))
     throw UsageError("--raster-dof must be off, accumulate or post; got '" + o.dof + "'");
   if (o.samples < 1)

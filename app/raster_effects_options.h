@@ -8,7 +8,7 @@
 
 #include <CLI/CLI.hpp>
 
-#include "obscura/raster/render.h"
+#include "obscura/raster/render_settings.h"
 #include "obscura/render/renderer.h"
 
 namespace obscura::app {

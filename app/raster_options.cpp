@@ -1,5 +1,6 @@
 #include "raster_options.h"
 
+#include "obscura/render/renderer_backend.h"
 #include "option_ranges.h"
 #include "usage_error.h"
 
@@ -22,17 +23,17 @@ void add_raster_options(CLI::App& render, RasterOptions& o) {
 }
 
 void reject_unless_raster(const std::vector<CLI::Option*>& registered, Renderer renderer) {
-  if (renderer == Renderer::kRaster) return;
+  if (renderer.capabilities().raster_settings) return;
   for (const CLI::Option* option : registered)
     if (option && option->count() > 0)
       throw UsageError(option->get_name() +
-                       " applies to --renderer raster only (the renderer is '" +
-                       renderer_name(renderer) + "')");
+                       " applies to --renderer raster only (the renderer is '" + renderer.name() +
+                       "')");
 }
 
 void validate(const RasterOptions& o, Renderer renderer) {
   reject_unless_raster(o.registered, renderer);
-  if (renderer != Renderer::kRaster) return;
+  if (!renderer.capabilities().raster_settings) return;
   if (o.msaa != 1 && o.msaa != 4 && o.msaa != 8)
     throw UsageError("--msaa must be 1, 4 or 8 samples; got " + std::to_string(o.msaa));
   if (o.shadow_map_size < 0 || o.shadow_map_size > 16384)

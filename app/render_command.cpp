@@ -15,6 +15,8 @@
 #include "obscura/io/image_io.h"
 #include "obscura/io/scene_loader.h"
 #include "obscura/math/error.h"
+#include "obscura/raster/render.h"
+#include "obscura/render/renderer_backend.h"
 #include "obscura/scene/material_variants.h"
 #include "option_ranges.h"
 #include "partial_render.h"
@@ -63,14 +65,14 @@ std::string job_key(const CLI::App& render) {
 // `ranks`: "" alone, else " on N ranks, X MB to rank 0".
 void print_summary(const RenderOptions& options, const Scene& scene, const RenderedFrame& frame,
                    const std::string& ranks, double rays, double seconds) {
-  if (frame.renderer == Renderer::kRaster) {
+  if (!frame.renderer.capabilities().takes_samples_per_pixel) {
     std::fprintf(stderr, "rendered %s: %dx%d (raster%s) in %s%s\n", scene.name.c_str(),
                  options.width, options.height, ranks.c_str(), format_seconds(seconds).c_str(),
                  partial_note(frame.progress).c_str());
   } else {
     std::fprintf(stderr, "rendered %s: %dx%d, %lld spp (%s%s) in %s (%.2f Mrays/s)%s\n",
                  scene.name.c_str(), options.width, options.height, frame.progress.done,
-                 renderer_name(frame.renderer), ranks.c_str(), format_seconds(seconds).c_str(),
+                 frame.renderer.name(), ranks.c_str(), format_seconds(seconds).c_str(),
                  seconds > 0 ? rays / seconds * 1e-6 : 0.0,
                  frame.progress.partial()   ? partial_note(frame.progress).c_str()
                  : frame.time_limit_reached ? " [time limit reached]"
@@ -139,7 +141,7 @@ void run_render(RenderOptions options, const std::string& job) {
   }
   // The tracer always shows progress; the rasterizer only when it accumulates several frames.
   const bool bar_wanted =
-      is_tracer(options.tracer.renderer) ||
+      options.tracer.renderer.capabilities().takes_samples_per_pixel ||
       raster::wants_effects(scene, scene.camera,
                             frame_settings(options, scene.render, share).raster);
   ProgressBar bar("render", !speaks || !bar_wanted);

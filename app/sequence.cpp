@@ -305,9 +305,9 @@ void run_sequence(RenderOptions options, Team& team) {
     std::string compiled;
     if (!load_once)
       compiled = "; the scene read for each frame";
-    else if (shared_session && is_tracer(options.tracer.renderer))
+    else if (shared_session)
       compiled = "; the scene read once, compiled " +
-                 std::to_string(shared_session->tracer_compilations()) + " time(s)";
+                 std::to_string(shared_session->compilations()) + " time(s)";
     std::fprintf(stderr, "sequence: %zu frames, %d rendered here, %d already there%s%s\n",
                  frames.size(), rendered, skipped, compiled.c_str(),
                  end == RenderEnd::kInterrupted ? " [interrupted]" : "");

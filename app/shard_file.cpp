@@ -141,7 +141,7 @@ void write_shard(const std::string& path, const RenderedFrame& frame, ShardSpec 
       {"obscura:format", kFormat},
       {"obscura:shard", std::to_string(spec.part) + "/" + std::to_string(spec.parts)},
       {"obscura:tile_size", std::to_string(deal.tile_size)},
-      {"obscura:renderer", renderer_name(frame.renderer)},
+      {"obscura:renderer", frame.renderer.name()},
       {"obscura:job", job},
       {"obscura:aovs", aovs.empty() ? kNoAovs : aov_layout(aovs)},
       {"obscura:layers", frame.layers.empty() ? kNoAovs : aov_layout(frame.layers)},

@@ -5,6 +5,7 @@
 #include <optional>
 
 #include "obscura/io/image_io.h"
+#include "obscura/render/renderer_backend.h"
 #include "option_ranges.h"
 #include "usage_error.h"
 
@@ -19,13 +20,26 @@ extern "C" void on_interrupt(int signal) {
   std::signal(signal, SIG_DFL);  // a second Ctrl-C ends the process at once
 }
 
+// "path (physically based path tracer), …": the renderer table's rows.
+std::string renderer_help() {
+  std::string help;
+  for (const Renderer& r : renderers())
+    help += (help.empty() ? "" : ", ") + std::string(r.name()) + " (" + r.backend().summary() + ")";
+  return help;
+}
+
+// The renderers with spectral light transport, for messages: "path".
+std::string spectral_renderers() {
+  std::string names;
+  for (const Renderer& r : renderers())
+    if (r.capabilities().spectral) names += (names.empty() ? "" : ", ") + std::string(r.name());
+  return names;
+}
+
 }  // namespace
 
 void add_tracer_options(CLI::App& render, TracerOptions& o) {
-  render
-      .add_option("--renderer", o.renderer_text,
-                  "path (physically based), whitted, direct, or raster (the rasterizer)")
-      ->capture_default_str();
+  render.add_option("--renderer", o.renderer_text, renderer_help())->capture_default_str();
   render.add_option("--sampler", o.sampler, "sobol (Owen-scrambled) or independent")
       ->capture_default_str();
   o.max_depth_option =
@@ -51,16 +65,13 @@ void add_tracer_options(CLI::App& render, TracerOptions& o) {
 void validate(TracerOptions& o) {
   std::optional<Renderer> renderer = parse_renderer(o.renderer_text);
   if (!renderer)
-    throw UsageError("--renderer must be path, whitted, direct or raster; got '" + o.renderer_text +
-                     "'");
+    throw UsageError("--renderer must be " + renderer_names() + "; got '" + o.renderer_text + "'");
   o.renderer = *renderer;
   if (!parse_sampler_type(o.sampler))
     throw UsageError("--sampler must be sobol or independent; got '" + o.sampler + "'");
-  if (o.spectral && o.renderer != Renderer::kPath)
-    throw UsageError(
-        "--spectral needs --renderer path (whitted, direct and raster render RGB "
-        "only); got '" +
-        o.renderer_text + "'");
+  if (o.spectral && !o.renderer.capabilities().spectral)
+    throw UsageError("--spectral needs a renderer with spectral light transport (" +
+                     spectral_renderers() + "); '" + o.renderer_text + "' renders RGB only");
   bool depth_given = o.max_depth_option && o.max_depth_option->count() > 0;
   if (depth_given && o.max_depth < 1)
     throw UsageError("--max-depth must be at least 1; got " + std::to_string(o.max_depth));

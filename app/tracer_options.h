@@ -15,13 +15,13 @@
 namespace obscura::app {
 
 struct TracerOptions {
-  std::string renderer_text = "path";   // --renderer as given: path | whitted | direct | raster
-  Renderer renderer = Renderer::kPath;  // renderer_text, parsed by validate
-  std::string sampler = "sobol";        // sobol | independent
-  int max_depth = 65;       // path: scattering events per path; whitted: recursion depth
-  double time_limit_s = 0;  // 0 = none
-  bool aovs = false;        // also write <output>.albedo/.normal/.depth/.id.exr
-  bool spectral = false;    // spectral light transport (path tracer only)
+  std::string renderer_text = "path";  // --renderer as given: path | whitted | direct | raster
+  Renderer renderer = {};              // renderer_text, parsed by validate
+  std::string sampler = "sobol";       // sobol | independent
+  int max_depth = 65;                  // path: scattering events per path; whitted: recursion depth
+  double time_limit_s = 0;             // 0 = none
+  bool aovs = false;                   // also write <output>.albedo/.normal/.depth/.id.exr
+  bool spectral = false;               // spectral light transport (path tracer only)
   CLI::Option* spectral_option = nullptr;   // to know whether --spectral/--no-spectral was given
   CLI::Option* spp_option = nullptr;        // to know whether --spp was given
   CLI::Option* max_depth_option = nullptr;  // and --max-depth

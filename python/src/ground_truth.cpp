@@ -28,8 +28,7 @@ py::dict ground_truth_py(const Scene& scene, std::optional<Camera> camera,
                          std::optional<std::pair<double, double>> flow_times) {
   const std::optional<Renderer> kind = parse_renderer(renderer);
   if (!kind)
-    throw py::value_error("renderer: expected 'path', 'whitted', 'direct' or 'raster', got '" +
-                          renderer + "'");
+    throw py::value_error("renderer: expected " + renderer_names() + ", got '" + renderer + "'");
   const Camera& view = camera ? *camera : scene.camera;
   const GroundTruthTimes times = flow_times
                                      ? GroundTruthTimes{flow_times->first, flow_times->second}
@@ -38,7 +37,7 @@ py::dict ground_truth_py(const Scene& scene, std::optional<Camera> camera,
   {
     py::gil_scoped_release release;
     view.validate();
-    image = render_ground_truth_frame(scene, view, *kind, raster::RenderSettings{}, times).image();
+    image = render_ground_truth_frame(scene, view, {.renderer = *kind}, times).image();
   }
   // Channels grouped by layer, in the file's order: one (H, W, C) array each.
   std::vector<std::string> layers;

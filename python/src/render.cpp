@@ -21,6 +21,7 @@
 #include "bindings.h"
 #include "errors.h"
 #include "obscura/render/renderer.h"
+#include "obscura/render/renderer_backend.h"
 #include "render_call.h"
 #include "session.h"
 
@@ -101,10 +102,10 @@ RenderResult render_frame_py(const py::object& scene_or_session, std::optional<C
       throw py::value_error("aovs: unknown AOV '" + name +
                             "'; expected 'albedo', 'normal', 'depth' or 'id'");
   const std::optional<Renderer> kind = parse_renderer(renderer);  // unknown: render_call says so
-  if (kind && !renders_albedo(*kind) && std::count(aov_names.begin(), aov_names.end(), "albedo"))
-    throw py::value_error(
-        "aovs: the rasterizer has no 'albedo' AOV (it has 'normal', 'depth' "
-        "and 'id'); the tracer's renderers have all four");
+  if (kind && !kind->capabilities().albedo &&
+      std::count(aov_names.begin(), aov_names.end(), "albedo"))
+    throw py::value_error("aovs: the renderer '" + std::string(kind->name()) +
+                          "' has no 'albedo' AOV (it has 'normal', 'depth' and 'id')");
   if (threads < 0)
     throw py::value_error("threads: expected 0 (all cores) or a positive count, got " +
                           std::to_string(threads));

@@ -29,8 +29,7 @@ FrameSettings frame_settings(const RenderRequest& r, const SceneRenderSettings& 
                              const std::atomic<bool>* cancel) {
   std::optional<Renderer> renderer = parse_renderer(r.renderer);
   if (!renderer)
-    throw Error("renderer",
-                "expected 'path', 'whitted', 'direct' or 'raster', got '" + r.renderer + "'");
+    throw Error("renderer", "expected " + renderer_names() + ", got '" + r.renderer + "'");
   const ResolvedFrameRequest frame = resolve_frame_request(r.frame, scene, *renderer);
   if (frame.samples_per_pixel <= 0 || frame.samples_per_pixel > kMaxSamplesPerPixel)
     throw Error("spp", "expected 1 to " + std::to_string(kMaxSamplesPerPixel) + ", got " +

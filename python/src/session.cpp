@@ -26,12 +26,13 @@ void bind_session(py::module_& m) {
           "scene", [](const PythonSession& s) { return *s.scene; },
           "A copy of the scene the session renders.")
       .def_property_readonly(
-          "tracer_compilations",
+          "compilations",
           [](PythonSession& s) {
             std::lock_guard lock(s.busy);
-            return s.session->tracer_compilations();
+            return s.session->compilations();
           },
-          "How many times the tracer's scene has been compiled so far.")
+          "How many times a renderer has compiled the scene so far (the tracer's integrators share "
+          "one compilation; the rasterizer's is the scene as it is).")
       .def("__repr__", [](const PythonSession& s) {
         return "<obscura.RenderSession '" + s.scene->name + "'>";
       });

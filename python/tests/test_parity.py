@@ -254,13 +254,13 @@ def test_a_session_compiles_once_and_renders_what_render_renders():
         kept = obscura.render(session, camera, spp=1)
         alone = obscura.render(scene, camera, spp=1)
         assert np.array_equal(kept.image, alone.image), f"at {time} s"
-    assert session.tracer_compilations == 2  # the sphere moves: once per exposure interval
+    assert session.compilations == 2  # the sphere moves: once per exposure interval
 
     still = obscura.RenderSession(obscura.load_scene("cornell-box"))
     for time in (0.0, 1.0):
         camera = obscura.resolve_camera(still.scene, width=32, height=24, time=time)
         obscura.render(still, camera, spp=1)
-    assert still.tracer_compilations == 1
+    assert still.compilations == 1
     with pytest.raises(TypeError, match="Scene or a RenderSession"):
         obscura.render("cornell-box")
 

@@ -12,9 +12,14 @@
 
 #include <cmath>
 #include <numbers>
+#include <string>
+#include <vector>
 
 #include "obscura/film/image_metrics.h"
 #include "obscura/film/work_share.h"
+#include "obscura/math/error.h"
+#include "obscura/raster/render.h"
+#include "obscura/render/renderer_backend.h"
 #include "obscura/trace/path_tracer.h"
 #include "obscura/trace/render.h"
 #include "obscura/trace/trace_scene.h"
@@ -65,18 +70,26 @@ double mean_green(const Image& image) {
 }
 
 TEST(RenderFrame, RenderersAreParsedByName) {
-  for (Renderer r : {Renderer::kPath, Renderer::kWhitted, Renderer::kDirect, Renderer::kRaster})
-    EXPECT_EQ(parse_renderer(renderer_name(r)), r);
-  EXPECT_EQ(parse_renderer("raster"), Renderer::kRaster);
+  std::vector<std::string> names;
+  for (Renderer r : renderers()) {
+    EXPECT_EQ(parse_renderer(r.name()), r);
+    names.push_back(r.name());
+  }
+  EXPECT_EQ(names, (std::vector<std::string>{"path", "whitted", "direct", "raster"}));
+  EXPECT_EQ(Renderer(), renderer_named("path"));  // the default
+  EXPECT_EQ(renderer_names(), "path, whitted, direct or raster");
   EXPECT_FALSE(parse_renderer("Path"));
   EXPECT_FALSE(parse_renderer(""));
-  EXPECT_EQ(tile_size(Renderer::kPath), 16);
-  EXPECT_EQ(tile_size(Renderer::kRaster), 64);
+  EXPECT_THROW(renderer_named("reyes"), Error);
+  EXPECT_EQ(renderer_named("path").capabilities().tile_size, 16);
+  EXPECT_EQ(renderer_named("raster").capabilities().tile_size, 64);
+  EXPECT_TRUE(renderer_named("path").capabilities().spectral);
+  EXPECT_FALSE(renderer_named("whitted").capabilities().spectral);
 }
 
 TEST(RenderFrame, TracerIsObscuraRenderBitForBit) {
   const Scene scene = plane_scene();
-  FrameSettings settings{.renderer = Renderer::kPath, .samples_per_pixel = 4, .seed = 7};
+  FrameSettings settings{.renderer = renderer_named("path"), .samples_per_pixel = 4, .seed = 7};
   Film film(kSize, kSize);
   AovBuffers aovs(kSize, kSize);
   FrameStats stats = render_frame(scene, scene.camera, settings, film, &aovs);
@@ -97,7 +110,7 @@ TEST(RenderFrame, TracerIsObscuraRenderBitForBit) {
 
 TEST(RenderFrame, RasterIsRasterRenderBitForBit) {
   const Scene scene = plane_scene();
-  FrameSettings settings{.renderer = Renderer::kRaster, .seed = 5};
+  FrameSettings settings{.renderer = renderer_named("raster"), .seed = 5};
   settings.raster.msaa_samples = 4;
   Film film(kSize, kSize);
   AovBuffers aovs(kSize, kSize);
@@ -118,13 +131,13 @@ TEST(RenderFrame, RasterIsRasterRenderBitForBit) {
 
 TEST(RenderFrame, BothRenderersFillTheAovsWithThePlanesDistanceNormalAndId) {
   const Scene scene = plane_scene();
-  for (Renderer renderer : {Renderer::kPath, Renderer::kRaster}) {
-    SCOPED_TRACE(renderer_name(renderer));
+  for (Renderer renderer : {renderer_named("path"), renderer_named("raster")}) {
+    SCOPED_TRACE(renderer.name());
     FrameSettings settings{.renderer = renderer, .samples_per_pixel = 2};
     Film film(kSize, kSize);
     AovBuffers aovs(kSize, kSize);
     render_frame(scene, scene.camera, settings, film, &aovs);
-    EXPECT_EQ(aovs.has_albedo(), renderer != Renderer::kRaster);
+    EXPECT_EQ(aovs.has_albedo(), renderer != renderer_named("raster"));
     const Image depth = aovs.depth(), normal = aovs.normal(), id = aovs.id(),
                 albedo = aovs.albedo();
     for (int y = 0; y < kSize; ++y)
@@ -145,7 +158,7 @@ TEST(RenderFrame, TracerAndRasterizerAgreeOnADiffusePlaneUnderAUniformSky) {
   const Scene scene = plane_scene();
   double means[2];
   int i = 0;
-  for (Renderer renderer : {Renderer::kPath, Renderer::kRaster}) {
+  for (Renderer renderer : {renderer_named("path"), renderer_named("raster")}) {
     Film film(kSize, kSize);
     render_frame(scene, scene.camera, {.renderer = renderer, .samples_per_pixel = 64, .seed = 1},
                  film);
@@ -249,7 +262,7 @@ void take_part(const TileDeal& deal, int part, const Image& from, Image& whole) 
 TEST(RenderFrame, PostProcessDepthOfFieldInPartsIsTheLoneFrameOnceAssembled) {
   Scene scene = square_scene();
   open_lens(scene.camera);
-  FrameSettings settings{.renderer = Renderer::kRaster};
+  FrameSettings settings{.renderer = renderer_named("raster")};
   settings.raster.depth_of_field = raster::DepthOfFieldMethod::kPost;
 
   const RenderedFrame lone = render_frame(scene, scene.camera, settings, false);
@@ -261,8 +274,10 @@ TEST(RenderFrame, PostProcessDepthOfFieldInPartsIsTheLoneFrameOnceAssembled) {
     settings.share = {.part = part, .parts = 2, .settle = {}};
     const RenderedFrame frame = render_frame(scene, scene.camera, settings, false);
     ASSERT_EQ(frame.layers.size(), 1u);
-    const TileDeal raster_deal{
-        .width = kSize, .height = kSize, .tile_size = tile_size(Renderer::kRaster), .parts = 2};
+    const TileDeal raster_deal{.width = kSize,
+                               .height = kSize,
+                               .tile_size = renderer_named("raster").capabilities().tile_size,
+                               .parts = 2};
     take_part(raster_deal, part, frame.film_sums, sums);
     take_part(raster_deal, part, frame.layers[0].image, layer);
   }
@@ -281,12 +296,12 @@ TEST(RenderFrame, BadSettingsAreErrorsNamingTheSetting) {
   const Scene scene = plane_scene();
   Film film(kSize, kSize);
   EXPECT_THROW(render_frame(scene, scene.camera, {.samples_per_pixel = 0}, film), Error);
-  FrameSettings raster{.renderer = Renderer::kRaster};
+  FrameSettings raster{.renderer = renderer_named("raster")};
   raster.raster.effect_samples = 0;
   EXPECT_THROW(render_frame(scene, scene.camera, raster, film), Error);
   Film wrong(kSize + 1, kSize);
   try {
-    render_frame(scene, scene.camera, {.renderer = Renderer::kRaster}, wrong);
+    render_frame(scene, scene.camera, {.renderer = renderer_named("raster")}, wrong);
     FAIL() << "a film of another size was accepted";
   } catch (const Error& e) {
     EXPECT_NE(std::string(e.what()).find("crop size"), std::string::npos) << e.what();

@@ -8,6 +8,7 @@
 #include <cstring>
 
 #include "obscura/io/scene_loader.h"
+#include "obscura/render/ground_truth_frame.h"
 
 namespace obscura {
 namespace {
@@ -38,7 +39,7 @@ TEST(RenderSession, AStillSceneCompilesOnceForEveryExposure) {
     EXPECT_TRUE(same_bits(kept.finished(), alone.finished())) << "at " << time << " s";
     EXPECT_TRUE(same_bits(kept.aovs->depth(), alone.aovs->depth()));
   }
-  EXPECT_EQ(session.tracer_compilations(), 1);
+  EXPECT_EQ(session.compilations(), 1);
 }
 
 TEST(RenderSession, AMovingSceneCompilesAgainOnlyWhenTheExposureChanges) {
@@ -52,12 +53,30 @@ TEST(RenderSession, AMovingSceneCompilesAgainOnlyWhenTheExposureChanges) {
                           render_frame(scene, camera, settings, false).finished()))
         << "at " << time << " s";
   }
-  EXPECT_EQ(session.tracer_compilations(), 3);
+  EXPECT_EQ(session.compilations(), 3);
 
-  // The rasterizer compiles nothing the session keeps.
+  // The rasterizer's compilation is the scene as it is: it serves every exposure.
   RenderSession raster(scene);
-  raster.render(camera_at(scene, 0), {.renderer = Renderer::kRaster}, false);
-  EXPECT_EQ(raster.tracer_compilations(), 0);
+  for (double time : times)
+    raster.render(camera_at(scene, time), {.renderer = renderer_named("raster")}, false);
+  EXPECT_EQ(raster.compilations(), 1);
+}
+
+TEST(RenderSession, TheTracersIntegratorsShareOneCompilation) {
+  const Scene scene = load_scene("cornell-box");
+  RenderSession session(scene);
+  const Camera camera = camera_at(scene, 0);
+  for (const char* name : {"path", "whitted", "direct"}) {
+    const FrameSettings settings{.renderer = renderer_named(name), .samples_per_pixel = 1};
+    EXPECT_TRUE(same_bits(session.render(camera, settings, false).finished(),
+                          render_frame(scene, camera, settings, false).finished()))
+        << name;
+  }
+  // Ground truth of a still scene reuses it too, and equals a lone ground-truth render.
+  const GroundTruthTimes times = default_ground_truth_times(camera);
+  const GroundTruthBuffer kept = session.ground_truth(camera, {}, times);
+  EXPECT_EQ(session.compilations(), 1);
+  EXPECT_TRUE(same_bits(kept.image(), render_ground_truth_frame(scene, camera, {}, times).image()));
 }
 
 }  // namespace

@@ -26,6 +26,7 @@
 #include "obscura/math/matrix4.h"
 #include "obscura/raster/environment_lighting.h"
 #include "obscura/raster/lights.h"
+#include "obscura/raster/render_settings.h"
 #include "obscura/raster/render_target.h"
 #include "obscura/raster/shaders.h"
 #include "obscura/raster/shadow_map.h"
@@ -37,16 +38,6 @@
 namespace obscura::raster {
 
 struct InstanceUniforms;  // scene_program.h
-
-enum class ShadingMode {
-  kFlat,        // per-pixel lighting with each triangle's own (face) normal
-  kGouraud,     // lighting at the vertices, interpolated
-  kPhong,       // per-pixel lighting with interpolated normals; materials keep their lobes
-  kBlinnPhong,  // as kPhong, and Phong materials use the half-vector lobe
-};
-// "flat", "gouraud", "phong", "blinn-phong" (as the command line and Python name them); nothing
-// for any other name.
-std::optional<ShadingMode> parse_shading_mode(std::string_view name);
 
 struct RasterSettings {
   int msaa_samples = 1;  // 1, 4 or 8

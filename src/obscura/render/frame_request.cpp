@@ -1,4 +1,5 @@
 #include "obscura/render/frame_request.h"
+#include "obscura/render/renderer_backend.h"
 
 namespace obscura {
 
@@ -10,7 +11,7 @@ ResolvedFrameRequest resolve_frame_request(const FrameRequest& request,
   r.seed = request.seed.value_or(scene.seed.value_or(0));
   if (request.spectral)
     r.spectral = *request.spectral;
-  else if (scene.spectral && renderer == Renderer::kPath)
+  else if (scene.spectral && renderer.capabilities().spectral)
     r.spectral = *scene.spectral;
   if (request.glare || request.glare_strength || scene.glare_strength) {
     GlareSettings glare;

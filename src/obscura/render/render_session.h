@@ -1,15 +1,22 @@
-// A scene held for many frames: what a renderer compiles of it (the tracer's Embree scene, its
-// lights and materials) is built once and kept while the frames it serves need nothing else —
-// the frames of a sequence, the parts of a frame, a Python loop, later a live view. A scene whose
-// objects do not move over the shutter compiles once for any exposure; one whose objects move is
-// compiled again when a frame's exposure interval differs from the last one's.
+// A scene held for many frames: what a renderer's back end compiles of it (render/
+// renderer_backend.h: the tracer's Embree scene, its lights and materials) is built once and kept
+// while it serves the frames asked for — the frames of a sequence, the parts of a frame, a
+// Python loop, later a live view. A scene whose objects do not move over the shutter compiles
+// once for any exposure; one whose objects move is compiled again when a frame's exposure
+// interval differs from the last one's. Renderers whose back ends compile alike (the tracer's
+// integrators) share one compilation.
 #pragma once
 
 #include <memory>
+#include <vector>
 
 #include "obscura/render/render_frame.h"
 
 namespace obscura {
+
+class CompiledScene;
+class GroundTruthBuffer;
+struct GroundTruthTimes;
 
 class RenderSession {
  public:
@@ -26,15 +33,22 @@ class RenderSession {
                     AovBuffers* aovs = nullptr, const ProgressCallback& progress = {});
   RenderedFrame render(const Camera& camera, const FrameSettings& settings, bool aovs,
                        const ProgressCallback& progress = {});
+  // The ground truth of `camera` by settings.renderer's visibility (render/
+  // ground_truth_frame.h).
+  GroundTruthBuffer ground_truth(const Camera& camera, const FrameSettings& settings,
+                                 const GroundTruthTimes& times);
 
-  // How many times the tracer's scene was compiled (benchmarks and tests).
-  int tracer_compilations() const { return tracer_compilations_; }
+  // How many times a back end compiled the scene (benchmarks and tests).
+  int compilations() const { return compilations_; }
 
  private:
-  struct CompiledTracer;  // trace/'s scene and its device, with the interval it serves
+  struct Compiled;  // one back end's compilation, by its compiled form
+  // A compilation of settings.renderer's back end serving `interval`: kept or made.
+  const CompiledScene& compiled(Renderer renderer, const Shutter& interval);
+
   const Scene& scene_;
-  std::unique_ptr<CompiledTracer> tracer_;
-  int tracer_compilations_ = 0;
+  std::vector<Compiled> compiled_;
+  int compilations_ = 0;
 };
 
 }  // namespace obscura

@@ -1,28 +1,40 @@
-// The renderers Obscura offers, by the names the command line and files use.
+// The renderers Obscura offers: one table (render/renderer.cpp), a row per back end
+// (render/renderer_backend.h). A Renderer is a row, held by value; the command line, scene
+// files and Python name them as the table does.
 #pragma once
 
 #include <optional>
+#include <span>
+#include <string>
 #include <string_view>
 
 namespace obscura {
 
-enum class Renderer {
-  kPath,     // path tracer (trace/path_tracer.h)
-  kWhitted,  // Whitted-style recursive ray tracer (trace/whitted.h)
-  kDirect,   // direct lighting only (trace/direct_lighting.h)
-  kRaster,   // the software rasterizer (raster/render.h)
+class RendererBackend;
+struct RendererCapabilities;
+
+class Renderer {
+ public:
+  Renderer();  // the table's first row: the path tracer
+  explicit Renderer(const RendererBackend& backend) : backend_(&backend) {}
+
+  const RendererBackend& backend() const { return *backend_; }
+  const char* name() const;
+  const RendererCapabilities& capabilities() const;
+
+  bool operator==(const Renderer& other) const = default;
+
+ private:
+  const RendererBackend* backend_;
 };
 
-// "path", "whitted", "direct", "raster"; nothing for any other name.
+// Every renderer, in the order help texts list them.
+std::span<const Renderer> renderers();
+// The table's row named `name` ("path", "whitted", "direct", "raster"); nothing for another name.
 std::optional<Renderer> parse_renderer(std::string_view name);
-const char* renderer_name(Renderer renderer);
-
-// Whether it traces rays (the tracer's integrators) rather than rasterizing.
-bool is_tracer(Renderer renderer);
-// Whether its AOVs include an albedo (the rasterizer keeps none).
-bool renders_albedo(Renderer renderer);
-// The side of the square tiles it renders, and so deals to the parts of a frame rendered
-// together (film/work_share.h): the tracer's 16-pixel tiles, the rasterizer's 64-pixel bins.
-int tile_size(Renderer renderer);
+// As parse_renderer, for names known to be in the table: throws obscura::Error otherwise.
+Renderer renderer_named(std::string_view name);
+// "path, whitted, direct or raster": the names, for messages.
+std::string renderer_names();
 
 }  // namespace obscura
