@@ -30,6 +30,7 @@ from ._obscura import (  # noqa: F401
     wavelength_xyz,
     write_image,
 )
+from ._obscura import _scene_depends_on_time
 
 
 
@@ -43,7 +44,8 @@ def render_frames(scene, frames, *, fps=24.0, camera=None, load=None, **render_o
     ``load``'s other keywords: environment, gltf_scene, gltf_animation, variant) and resolves its
     camera from ``camera``, a dict of ``resolve_camera`` keywords (``{"fstop": 2, "width": 320}``),
     with the shutter centred on the frame's moment. ``render_options`` go to ``render()``. The
-    frames are the command line's, bit for bit.
+    frames are the command line's, bit for bit. As on the command line, a scene that reads the
+    same at every moment (all but glTF) is loaded once and rendered through one RenderSession.
     """
     camera = dict(camera or {})
     load = dict(load or {})
@@ -51,11 +53,17 @@ def render_frames(scene, frames, *, fps=24.0, camera=None, load=None, **render_o
         raise ValueError("render_frames: each frame's time is frame / fps; give no time")
     if not fps > 0:
         raise ValueError(f"render_frames: fps must be positive; got {fps}")
+    # A scene that reads the same at every moment (all but glTF) is loaded once and rendered
+    # through one session, which compiles it once where nothing moves, as the command line does.
+    still = not _scene_depends_on_time(scene)
+    frame_scene = session = None
     for n in frames:
         time = n / fps
-        frame_scene = load_scene(scene, time=time, shutter=camera.get("shutter"), **load)
+        if session is None or not still:
+            frame_scene = load_scene(scene, time=time, shutter=camera.get("shutter"), **load)
+            session = RenderSession(frame_scene)
         frame_camera = resolve_camera(frame_scene, time=time, **camera)
-        yield n, render(frame_scene, frame_camera, **render_options)
+        yield n, render(session, frame_camera, **render_options)
 
 
 __all__ = [

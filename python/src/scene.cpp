@@ -273,6 +273,10 @@ void bind_scene(py::module_& m) {
       "The built-in scenes as (name, description), the default first (`obscura render "
       "--scene-list`).");
 
+  m.def("_scene_depends_on_time", &scene_depends_on_time, py::arg("name_or_path"),
+        "Whether load_scene reads the scene differently at different times (a glTF file's "
+        "animations, skins and morph targets): a sequence of any other scene loads it once.");
+
   m.def(
       "load_scene",
       [](const std::string& name_or_path, const std::string& environment,

@@ -1,11 +1,11 @@
 #include "obscura/raster/accumulation.h"
 
-#include <chrono>
 #include <cmath>
 #include <limits>
 #include <string>
 
 #include "obscura/camera/vignetting.h"
+#include "obscura/film/pass_schedule.h"
 #include "obscura/math/error.h"
 #include "obscura/math/rng.h"
 #include "obscura/math/sobol.h"
@@ -52,15 +52,16 @@ AccumulationStats accumulate(const Camera& camera, const AccumulationSettings& s
       accumulation_samples(camera, settings.samples, settings.seed);
   if (!settings.depth_of_field)
     for (LensTimeSample& s : samples) s.lens_sample = {0.5, 0.5};
+  // Frames are the rasterizer's samples: one per pass, paced and stopped as every renderer's
+  // passes are (film/pass_schedule.h).
+  PassSchedule passes(
+      settings.samples, 1, OnCancel::kCompletePass,
+      {.time_limit_s = settings.time_limit_s, .cancel = settings.cancel, .share = &settings.share});
   // The frame kept: the one nearest mid-shutter (the first of equals) among those drawn, so a
   // render stopped early still has one.
   const double middle = camera.shutter.time_at(0.5);
   double kept_distance = std::numeric_limits<double>::infinity();
 
-  const auto start = std::chrono::steady_clock::now();
-  auto elapsed = [&] {
-    return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-  };
   // A lens barrel (mechanical vignetting) stops some lens points' rays to some pixels: each
   // frame's pixels are kept or dropped as the tracer keeps or stops its ray through that lens
   // point (the cat-eye of off-axis bokeh), so the light it loses is in the frames already.
@@ -81,23 +82,9 @@ AccumulationStats accumulate(const Camera& camera, const AccumulationSettings& s
   AccumulationStats stats;
   RenderTarget target(film.width(), film.height(), settings.msaa_samples, settings.aovs);
   target.set_share(settings.share.part, settings.share.parts);
-  for (int i = 0; i < settings.samples; ++i) {
-    if (i > 0) {
-      // Stop before this frame? This process's verdict, then the team's.
-      StopVerdict own = StopVerdict::kGoOn;
-      if (settings.cancel && settings.cancel->load()) {
-        own = StopVerdict::kCancelled;
-      } else if (settings.time_limit_s > 0) {
-        double now = elapsed();
-        if (now + now / i > settings.time_limit_s) own = StopVerdict::kTimeLimit;
-      }
-      const StopVerdict verdict = settings.share.agree(own);
-      if (verdict != StopVerdict::kGoOn) {
-        stats.cancelled = verdict == StopVerdict::kCancelled;
-        stats.time_limited = verdict == StopVerdict::kTimeLimit;
-        break;
-      }
-    }
+  Pass pass;
+  while (passes.next(pass)) {
+    const int i = pass.first;
     FrameParameters frame;
     frame.index = i;
     frame.sample = samples[size_t(i)];
@@ -119,9 +106,12 @@ AccumulationStats accumulate(const Camera& camera, const AccumulationSettings& s
       *middle_frame = target;
       kept_distance = distance;
     }
-    stats.frames = i + 1;
-    if (progress) progress(i + 1, settings.samples);
+    passes.finish(pass);
+    stats.frames = passes.done();
+    if (progress) progress(stats.frames, settings.samples);
   }
+  stats.cancelled = passes.cancelled();
+  stats.time_limited = passes.time_limited();
   return stats;
 }
 

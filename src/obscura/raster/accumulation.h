@@ -53,7 +53,8 @@ struct AccumulationSettings {
   // post-process), with the camera's framing unchanged.
   bool depth_of_field = true;
   // Stopping early (after at least one frame): when *cancel becomes true (Ctrl-C), or before a
-  // frame that would end past time_limit_s seconds (0 = none), predicted from the mean frame time.
+  // frame that would end past time_limit_s seconds (0 = none), by the rule every renderer's
+  // passes follow (film/pass_schedule.h: each frame is a pass).
   const std::atomic<bool>* cancel = nullptr;
   double time_limit_s = 0;
   // Several processes drawing the frames together: each rasterizes its share's tiles of every

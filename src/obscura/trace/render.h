@@ -43,18 +43,17 @@ struct RenderStats {
 };
 
 // Renders the camera's crop window (the full image by default) into `film` (and `aovs`, if
-// given), which must have the crop's size. Each sample draws, in order, a filter offset (2D), a
-// lens point (2D), a time in the shutter interval (1D) and, in spectral mode only, its
-// wavelengths (1D) before the integrator's numbers; its radiance is scaled by the camera's
-// exposure.
+// given), which must have the crop's size. Each sample draws the camera's numbers in the order
+// every renderer draws them (camera/camera_sample.h) before the integrator's; its radiance is
+// scaled by the camera's exposure.
 //
-// Samples are rendered in passes (1, 1, 2, 4, … samples per pixel) so that a time limit or a
-// cancellation leaves an evenly sampled image. Deterministic: every random number is a function
-// of (seed, pixel, sample, dimension) and each pixel sums its own samples in order, so the image
-// is bit-identical for any thread count (for time-limited renders: for the same pass count).
-// With a share of the work, only the share's tiles are rendered (the others stay empty) and each
-// of them is bit-identical to the same tile of a lone render; every part calls share.settle once
-// per pass.
+// Samples are rendered in passes over every tile, paced and stopped as every renderer's are
+// (film/pass_schedule.h), so that a time limit or a cancellation leaves an evenly sampled image.
+// Deterministic: every random number is a function of (seed, pixel, sample, dimension) and each
+// pixel sums its own samples in order, so the image is bit-identical for any thread count (for
+// time-limited renders: for the same pass count). With a share of the work, only the share's
+// tiles are rendered (the others stay empty) and each of them is bit-identical to the same tile
+// of a lone render; every part calls share.settle once per pass.
 RenderStats render(const TraceScene& scene, const Camera& camera, const Integrator& integrator,
                    const RenderSettings& settings, Film& film,
                    const ProgressCallback& progress = {}, AovBuffers* aovs = nullptr);
