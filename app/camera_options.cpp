@@ -92,8 +92,8 @@ void add_camera_options(CLI::App& command, CameraOverrides& o) {
   command.add_option("--near", o.near_m, "Near clipping plane in m")
       ->check(number_in(0, 1e12))
       ->group(group);
-  command.add_option("--far", o.far_m, "Far clipping plane in m")
-      ->check(number_in(0, 1e15))
+  command.add_option("--far", o.far_m, "Far clipping plane in m (inf: none)")
+      ->check(number_in_or_infinity(0, 1e15))
       ->group(group);
   command
       .add_option("--lens", o.lens,

@@ -53,6 +53,18 @@ CLI::Validator unsigned_64() {
       "UINT64");
 }
 
+CLI::Validator number_in_or_infinity(double lo, double hi) {
+  std::string range = "a number from " + limit_text(lo) + " to " + limit_text(hi) + ", or inf";
+  return CLI::Validator(
+      [lo, hi, range](std::string& text) -> std::string {
+        double v = 0;
+        if (!parse_whole(text, v) || std::isnan(v) || v < lo || (std::isfinite(v) && v > hi))
+          return "expected " + range + "; got '" + text + "'";
+        return {};
+      },
+      "NUMBER in [" + limit_text(lo) + ", " + limit_text(hi) + "] or inf");
+}
+
 CLI::Validator number_in(double lo, double hi) {
   std::string range = "a number from " + limit_text(lo) + " to " + limit_text(hi);
   return CLI::Validator(

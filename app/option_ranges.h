@@ -31,6 +31,8 @@ CLI::Validator integer_in(int64_t lo, int64_t hi);
 CLI::Validator unsigned_64();
 // A finite decimal number in [lo, hi] (fractions and exponents allowed; nan and inf are not).
 CLI::Validator number_in(double lo, double hi);
+// The same, or "inf" (a far plane at infinity, as scene files default to).
+CLI::Validator number_in_or_infinity(double lo, double hi);
 
 // Throws UsageError (when `from_command_line`) or obscura::Error unless width × height is within
 // the limits above.

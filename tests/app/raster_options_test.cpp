@@ -75,5 +75,35 @@ TEST_F(RasterCli, BadOptionsAreUsageErrors) {
   }
 }
 
+// An orthographic camera with its far plane at infinity (what scene files default to, and
+// `--far inf`): the rasterizer fits a finite far plane to the scene (glOrtho's own limit is
+// singular) and draws every still built-in scene; its silhouettes are the tracer's.
+TEST_F(RasterCli, OrthographicCamerasWithAFarPlaneAtInfinityDraw) {
+  for (const char* scene : {"cornell-box", "cornell-box-obj", "spheres-and-lights",
+                            "depth-of-field", "bunny", "gltf-spheres"}) {
+    SCOPED_TRACE(scene);
+    const std::string common = std::string("render ") + scene +
+                               " -q --projection orthographic --far inf --width 48 --height 48 ";
+    auto drawn = test::run_cli(common + "--renderer raster --aovs -o " + path("r.exr"));
+    ASSERT_EQ(drawn.exit_code, 0) << drawn.output;
+    // One sample at each pixel's centre, where the rasterizer takes its ids.
+    auto traced = test::run_cli(common + "--renderer direct --spp 1 --filter box --filter-radius " +
+                                "0.01 --aovs -o " + path("t.exr"));
+    ASSERT_EQ(traced.exit_code, 0) << traced.output;
+    const Image raster_id = read_image(path("r.id.exr")), trace_id = read_image(path("t.id.exr"));
+    ASSERT_EQ(raster_id.data.size(), trace_id.data.size());
+    size_t same = 0, covered = 0;
+    for (size_t p = 0; p < raster_id.data.size(); ++p) {
+      same += raster_id.data[p] == trace_id.data[p];
+      covered += trace_id.data[p] >= 0;
+    }
+    EXPECT_GT(covered, 0u);  // something is in view
+    // A pixel whose centre lies on an edge may go either way.
+    EXPECT_GE(double(same) / double(raster_id.data.size()), 0.99);
+  }
+  auto bad = test::run_cli("render -q --far nan -o " + path("x.png"));
+  EXPECT_EQ(bad.exit_code, 2) << bad.output;
+}
+
 }  // namespace
 }  // namespace obscura

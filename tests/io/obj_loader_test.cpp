@@ -3,6 +3,8 @@
 #include "obscura/io/obj_loader.h"
 
 #include <filesystem>
+#include <stdexcept>
+#include <string>
 #include <variant>
 
 #include "mesh_test_files.h"
@@ -256,15 +258,49 @@ TEST_F(ObjLoader, MalformedStatementsNameFileAndLine) {
                     {"neg.mtl:2", "non-negative"});
 }
 
-TEST_F(ObjLoader, MissingTextureNamesMaterialAndFile) {
-  write("m.mtl", "newmtl paint\nKd 1 1 1\nmap_Kd missing.png\n");
-  expect_load_error(
-      [&] {
-        load_obj(write("tex.obj",
-                       "mtllib m.mtl\nv 0 0 0\nv 1 0 0\nv 0 1 0\nusemtl paint\n"
-                       "f 1 2 3\n"));
-      },
-      {"tex.obj", "paint", "missing.png", "does not exist"});
+// Downloaded OBJs often name textures that are not there, name them by a path on the author's
+// machine, or use formats we do not read (DDS): as in glTF, each warns once, naming the material
+// and the file; a diffuse map shows the magenta/black checker, an emission map is left out, and
+// a file found next to the model under its base name is used.
+TEST_F(ObjLoader, UnusableTexturesWarnAndShowTheChecker) {
+  std::filesystem::copy_file(test::data_path("meshes/teapot/default.png"), dir_ + "/near.png");
+  write("fake.dds", "DDS |not really an image");
+  write("m.mtl",
+        "newmtl paint\nKd 1 1 1\nmap_Kd missing.png\n"
+        "newmtl glow\nKe 1 1 1\nmap_Ke fake.dds\nmap_Kd fake.dds\n"
+        "newmtl wood\nmap_Kd C:\\Users\\someone\\textures\\near.png\n");
+  const Scene s = load_obj(write("tex.obj",
+                                 "mtllib m.mtl\nv 0 0 0\nv 1 0 0\nv 0 1 0\nvt 0 0\n"
+                                 "usemtl paint\nf 1/1 2/1 3/1\nusemtl glow\nf 1/1 2/1 3/1\n"
+                                 "usemtl wood\nf 1/1 2/1 3/1\n"));
+  auto material = [&](const std::string& name) -> const Material& {
+    for (const Material& m : s.materials)
+      if (m.name == name) return m;
+    throw std::runtime_error("no material " + name);
+  };
+  auto texture_name = [&](TextureRef ref) {
+    return ref.valid() ? s.textures[size_t(ref.texture)].name : std::string("(none)");
+  };
+  EXPECT_EQ(texture_name(phong(material("paint")).diffuse_texture), "missing-image placeholder");
+  EXPECT_EQ(texture_name(phong(material("glow")).diffuse_texture), "missing-image placeholder");
+  EXPECT_FALSE(material("glow").emission_texture.valid());
+  const TextureRef wood = phong(material("wood")).diffuse_texture;
+  ASSERT_TRUE(wood.valid());
+  EXPECT_EQ(s.textures[size_t(wood.texture)].width, 128);  // the real image, found next to it
+  // One warning per unusable file, naming the material and the file; one for the file found.
+  auto warnings_naming = [&](const std::string& a, const std::string& b) {
+    int n = 0;
+    for (const std::string& w : s.warnings)
+      if (w.find(a) != std::string::npos && w.find(b) != std::string::npos) ++n;
+    return n;
+  };
+  EXPECT_EQ(warnings_naming("'paint'", "missing.png"), 1);
+  EXPECT_EQ(warnings_naming("'glow'", "fake.dds"), 1);
+  EXPECT_EQ(warnings_naming("'wood'", "found next to the model"), 1);
+  // The checker is made once, whatever number of materials need it.
+  int checkers = 0;
+  for (const Texture& t : s.textures) checkers += t.name == "missing-image placeholder";
+  EXPECT_EQ(checkers, 1);
 }
 
 TEST_F(ObjLoader, NotARegularFile) {

@@ -5,7 +5,9 @@
 // Each key is decomposed into translation, rotation and per-axis scale (M = T·R·S);
 // translation and scale interpolate linearly and rotation by quaternion slerp along the shorter
 // arc, so a spinning camera turns at a constant rate instead of shrinking mid-way as a
-// matrix lerp would. Keys with shear cannot be decomposed this way and are rejected.
+// matrix lerp would. A key with shear (a node hierarchy's non-uniform scale under a rotation,
+// or an exporter's float noise) is taken apart by the polar decomposition M = T · R · S, S the
+// full stretch matrix, interpolated entry by entry.
 #pragma once
 
 #include <vector>
@@ -23,8 +25,8 @@ class AnimatedTransform {
     double time_s;
     Transform transform;
   };
-  // Precondition: at least one key, times strictly increasing, finite; every key a translation,
-  // rotation and scale without shear. Throws obscura::Error naming the key otherwise.
+  // Precondition: at least one key, times strictly increasing, finite; every key affine and
+  // invertible. Throws obscura::Error naming the key otherwise.
   explicit AnimatedTransform(std::vector<Key> keys);
 
   Transform at(double time_s) const;
@@ -37,6 +39,8 @@ class AnimatedTransform {
     Vector3d translation;
     double rotation[4];  // unit quaternion (w, x, y, z)
     Vector3d scale;
+    bool sheared;          // the key has shear: `stretch` is its full stretch matrix
+    double stretch[3][3];  // S, row-major (diag(scale) for a key without shear)
   };
   std::vector<Key> keys_;
   std::vector<Parts> parts_;  // one per key when animated

@@ -577,11 +577,12 @@ Matrix4 Camera::projection_matrix() const {
   double ox = (w.x_max + w.x_min) / (w.x_max - w.x_min);
   double oy = (w.y_max + w.y_min) / (w.y_max - w.y_min);
   double n = near_m, f = far_m;
-  if (std::holds_alternative<Orthographic>(projection))  // glOrtho
-    return Matrix4::from_rows({{{sx, 0, 0, -ox},
-                                {0, sy, 0, -oy},
-                                {0, 0, -2 / (f - n), -(f + n) / (f - n)},
-                                {0, 0, 0, 1}}});
+  if (std::holds_alternative<Orthographic>(projection)) {  // glOrtho
+    // A far plane at infinity is glOrtho's limit, every depth at the near plane: a renderer
+    // that keeps depth fits a finite far plane to its scene (raster/depth_range.h).
+    const double a = std::isinf(f) ? 0 : -2 / (f - n), b = std::isinf(f) ? -1 : -(f + n) / (f - n);
+    return Matrix4::from_rows({{{sx, 0, 0, -ox}, {0, sy, 0, -oy}, {0, 0, a, b}, {0, 0, 0, 1}}});
+  }
   // glFrustum with (left, right, bottom, top) = near × the window on z = −1.
   double a = std::isinf(f) ? -1 : -(f + n) / (f - n);
   double b = std::isinf(f) ? -2 * n : -2 * f * n / (f - n);

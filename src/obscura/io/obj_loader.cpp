@@ -6,12 +6,14 @@
 #include <filesystem>
 #include <map>
 #include <memory>
+#include <optional>
 
 #include <tbb/parallel_pipeline.h>
 #include <tbb/task_arena.h>
 
 #include "obscura/io/first_index_table.h"
 #include "obscura/io/flat_index_map.h"
+#include "obscura/io/gltf_missing_image.h"
 #include "obscura/io/mesh_file.h"
 #include "obscura/io/mtl_reader.h"
 #include "obscura/io/obj_statements.h"
@@ -281,22 +283,63 @@ class ObjReader {
     libraries_loaded_ = true;
   }
 
-  TextureRef texture(const std::string& relative_path, const std::string& where) {
+  // An MTL texture: read where the MTL says, else under its base name next to the model (paths
+  // from another machine, "C:\\Users\\…\\wood.png", are common in downloaded OBJs). One that
+  // still cannot be used (missing, or a format we do not read, such as DDS) warns, as the glTF
+  // loader does: a diffuse map shows the magenta/black checker, an emission map is left out.
+  TextureRef texture(const std::string& relative_path, const std::string& where,
+                     bool placeholder_if_unusable) {
     if (relative_path.empty()) return {};
     std::string relative = relative_path;
     std::replace(relative.begin(), relative.end(), '\\', '/');
-    std::filesystem::path full = std::filesystem::path(base_dir_) / relative;
-    auto found = textures_.find(full.string());
-    if (found != textures_.end()) return {found->second, 0};
+    const std::filesystem::path full = std::filesystem::path(base_dir_) / relative;
+    int32_t index = -1;
+    if (auto found = textures_.find(full.string()); found != textures_.end()) {
+      index = found->second;
+    } else {
+      index = read_mtl_texture(full, relative, relative_path, where);
+      textures_[full.string()] = index;
+    }
+    if (index < 0 && placeholder_if_unusable) {
+      if (placeholder_ < 0) {
+        placeholder_ = int32_t(scene_.textures.size());
+        scene_.textures.push_back(missing_image_placeholder());
+      }
+      index = placeholder_;
+    }
+    return index < 0 ? TextureRef{} : TextureRef{index, 0};
+  }
+
+  // The texture's index in the scene, or −1 (with a warning) when it cannot be used.
+  int32_t read_mtl_texture(const std::filesystem::path& full, const std::string& relative,
+                           const std::string& relative_path, const std::string& where) {
     std::error_code ec;
-    if (!std::filesystem::is_regular_file(full, ec))
-      throw Error(name_ + ": " + where,
-                  "texture '" + relative + "' does not exist (looked for " + full.string() + ")");
-    auto index = int32_t(scene_.textures.size());
-    scene_.textures.push_back(read_texture(full.string(), TextureEncoding::kSrgb));
-    scene_.input_files.push_back(full.string());
-    textures_[full.string()] = index;
-    return {index, 0};
+    std::string path = full.string(), why;
+    if (!std::filesystem::is_regular_file(full, ec)) {
+      if (std::optional<std::string> nearby = find_image_next_to_model(relative, base_dir_)) {
+        warnings_.push_back(name_ + ": " + where + ": texture '" + relative_path +
+                            "' was not found; using '" + image_uri_base_name(relative) +
+                            "' found next to the model instead");
+        path = *nearby;
+      } else {
+        why = "it does not exist (looked for " + full.string() + ")";
+      }
+    }
+    if (why.empty()) {
+      try {
+        Texture decoded = read_texture(path, TextureEncoding::kSrgb);
+        scene_.textures.push_back(std::move(decoded));
+        scene_.input_files.push_back(path);
+        return int32_t(scene_.textures.size() - 1);
+      } catch (const Error& e) {
+        why = e.what();
+      }
+    }
+    warnings_.push_back(name_ + ": " + where + ": texture '" + relative_path +
+                        "' cannot be used (" + why +
+                        "); a diffuse map shows a magenta/black checker instead, an emission map "
+                        "is left out");
+    return -1;
   }
 
   Material material(const MtlMaterial& m) {
@@ -308,10 +351,10 @@ class ObjReader {
     phong.diffuse = m.diffuse;
     phong.specular = m.specular;
     phong.shininess = m.shininess;
-    phong.diffuse_texture = texture(m.diffuse_map, where + " (map_Kd)");
+    phong.diffuse_texture = texture(m.diffuse_map, where + " (map_Kd)", true);
     out.model = phong;
     out.emission = m.emission;
-    out.emission_texture = texture(m.emission_map, where + " (map_Ke)");
+    out.emission_texture = texture(m.emission_map, where + " (map_Ke)", false);
     return out;
   }
 
@@ -351,7 +394,6 @@ class ObjReader {
  public:
   Scene finish() {
     scene_.name = scene_name_of(name_);
-    scene_.warnings = std::move(warnings_);
     // Assimp's material order: its default, the libraries' in file order, then names no
     // library defined, in order of use.
     std::vector<MtlMaterial> all;
@@ -403,6 +445,7 @@ class ObjReader {
       scene_.instances.back().name = object;
       scene_.instances.back().material = int32_t(scene_.meshes[index].material);
     }
+    scene_.warnings = std::move(warnings_);  // the materials' texture warnings included
     return std::move(scene_);
   }
 
@@ -434,7 +477,8 @@ class ObjReader {
   std::string material_;
   std::vector<MtlMaterial> library_;
   bool libraries_loaded_ = false;
-  std::map<std::string, int32_t> textures_;
+  std::map<std::string, int32_t> textures_;  // by path; −1: cannot be used (warned once)
+  int32_t placeholder_ = -1;                 // the checker, once some diffuse map needs it
   std::vector<std::string> warnings_;
   Scene scene_;
 };

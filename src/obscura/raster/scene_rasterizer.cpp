@@ -432,7 +432,7 @@ void SceneRasterizer::render_frame(const Camera& camera, const RasterFrame& fram
   const Matrix4 view = frame.view ? *frame.view : camera.view_matrix(frame.time_s);
   const Matrix4 projection = frame.projection ? *frame.projection : camera.projection_matrix();
   const Matrix4 clip_from_world =
-      crop_from_full_ndc(camera) * fit_depth_range(projection, view, bounds_) * view;
+      crop_from_full_ndc(camera) * fit_depth_range(projection, view, bounds_, camera.near_m) * view;
   std::optional<Matrix4> world_from_clip = inverse(clip_from_world);
   std::optional<Matrix4> world_from_camera = inverse(view);
   if (!world_from_clip || !world_from_camera)
