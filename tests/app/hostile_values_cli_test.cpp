@@ -84,7 +84,7 @@ TEST_F(HostileValuesCli, CameraOptionsInsideTheirRangesAreRefusedNotAborted) {
   expect_cases({
       {"--focal-length 1e-20", 2, {"camera.focal_length_mm", "1e-20"}},
       {"--fstop 1e-300", 2, {"camera.f_number", "aperture"}},
-      {"--sensor 1e300x1e300", 2, {"sensor", "1e+300"}},
+      {"--sensor 1e300x1e300", 2, {"camera.sensor_mm", "1e+300"}},
       {"--projection orthographic --view-height 1e12", 2, {"camera.view_height_m"}},
   });
 }

@@ -62,7 +62,7 @@ TEST(CameraExtent, DegenerateOpticsAreRefusedByField) {
                 perspective(c).sensor_width_mm = 1e300;
                 perspective(c).sensor_height_mm = 1e300;
               }),
-              HasSubstr("sensor"));
+              HasSubstr("camera.sensor_mm"));
   EXPECT_THAT(refusal([](Camera& c) {
                 perspective(c).lens_shift = {1e20, 0};
               }),

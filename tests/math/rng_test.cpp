@@ -12,8 +12,8 @@ TEST(Pcg32, MatchesTheReferenceImplementationsSequence) {
   // pcg32_srandom_r(&rng, 42, 54) followed by pcg32_random_r, as printed by the pcg-c-basic demo
   // (O'Neill, pcg-random.org).
   Pcg32 rng(42, 54);
-  const uint32_t expected[] = {0xa15c02b7, 0x7b47f409, 0xba1d3330,
-                               0x83d2f293, 0xbfa4784b, 0xcbed606e};
+  const uint32_t expected[] = {0xa15c02b7, 0x7b47f409, 0xba1d3330, 0x83d2f293, 0xbfa4784b,
+                               0xcbed606e};
   for (uint32_t e : expected) EXPECT_EQ(rng.next_uint32(), e);
 }
 

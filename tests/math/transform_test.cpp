@@ -62,8 +62,8 @@ TEST(Transform, MatchesGlmForTranslateRotateScale) {
     Vector3d d(rng.next_float() * 10 - 5, rng.next_float() * 10 - 5, rng.next_float() * 10 - 5);
     Vector3d s(rng.next_float() + 0.5, rng.next_float() + 0.5, -(rng.next_float() + 0.5));
 
-    Transform ours =
-        Transform::translate(d) * Transform::rotate(angle, axis) * Transform::scale(s.x, s.y, s.z);
+    Transform ours = Transform::translate(d) * Transform::rotate(angle, axis) *
+                     Transform::scale(s.x, s.y, s.z);
     glm::dmat4 theirs = glm::translate(glm::dmat4(1), glm::dvec3(d.x, d.y, d.z));
     theirs = glm::rotate(theirs, angle, glm::dvec3(axis.x, axis.y, axis.z));
     theirs = glm::scale(theirs, glm::dvec3(s.x, s.y, s.z));
@@ -80,9 +80,9 @@ TEST(Transform, LookAtMatchesGlm) {
     Point3d target(rng.next_float() * 8 - 4, rng.next_float() * 8 - 4, rng.next_float() * 8 - 4);
     Vector3d up(rng.next_float() - 0.5, 1, rng.next_float() - 0.5);
     Transform view = Transform::look_at(eye, target, up);
-    glm::dmat4 theirs =
-        glm::lookAt(glm::dvec3(eye.x, eye.y, eye.z), glm::dvec3(target.x, target.y, target.z),
-                    glm::dvec3(up.x, up.y, up.z));
+    glm::dmat4 theirs = glm::lookAt(glm::dvec3(eye.x, eye.y, eye.z),
+                                    glm::dvec3(target.x, target.y, target.z),
+                                    glm::dvec3(up.x, up.y, up.z));
     expect_matrix_near(view.matrix(), theirs, 1e-12);
     expect_matrix_near(view.inverse_matrix(), glm::inverse(theirs), 1e-9);
   }

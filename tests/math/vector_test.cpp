@@ -26,8 +26,8 @@ TEST(Vector, PointAndVectorArithmetic) {
 TEST(Vector, CoordinateSystemIsOrthonormalAndRightHanded) {
   Pcg32 rng(5);
   for (int i = 0; i < 1000; ++i) {
-    Vector3f v = normalize(
-        Vector3f(rng.next_float() * 2 - 1, rng.next_float() * 2 - 1, rng.next_float() * 2 - 1));
+    Vector3f v = normalize(Vector3f(rng.next_float() * 2 - 1, rng.next_float() * 2 - 1,
+                                    rng.next_float() * 2 - 1));
     Vector3f s, t;
     coordinate_system(v, &s, &t);
     EXPECT_NEAR(length(s), 1, 1e-5);

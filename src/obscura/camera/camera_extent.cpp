@@ -1,5 +1,6 @@
 #include "obscura/camera/camera_extent.h"
 
+#include <algorithm>
 #include <cmath>
 #include <string>
 #include <variant>
@@ -42,9 +43,13 @@ void check_perspective(const Camera& camera, const Perspective& p) {
       throw Error("camera.lens_shift",
                   "must be within ±100 (fractions of the sensor); got " + number_text(shift));
   ScreenWindow w = camera.screen_window();
+  // Blame whichever is further from a full-frame 50 mm lens: the sensor or the focal length.
+  const double sensor_mm = std::max(p.sensor_width_mm, p.sensor_height_mm);
+  const char* field =
+      sensor_mm / 36 > 50 / p.focal_length_mm ? "camera.sensor_mm" : "camera.focal_length_mm";
   for (double slope : {w.x_min, w.x_max, w.y_min, w.y_max})
     if (!within(slope, kMaxRaySlope))
-      throw Error("camera.focal_length_mm",
+      throw Error(field,
                   number_text(p.focal_length_mm) + " mm over a " + number_text(p.sensor_width_mm) +
                       "x" + number_text(p.sensor_height_mm) + " mm sensor gives rays " +
                       number_text(std::abs(slope)) + " times wider than deep; at most " +
