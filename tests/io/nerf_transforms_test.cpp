@@ -132,5 +132,19 @@ TEST(NerfTransforms, FieldOfViewOfPiOrMoreIsRefused) {
         << bad;
 }
 
+// A pose 2e18 m away once reached Embree, which aborts beyond ~1.8e18 (SIGABRT).
+TEST(NerfTransforms, PositionBeyondTheCoordinateBoundIsRefusedWithTheFile) {
+  std::string json = R"({"fl_x": 50, "w": 64, "h": 48, "frames": [{"file_path": "a",
+    "transform_matrix": [[1,0,0,2e18],[0,1,0,0],[0,0,1,4],[0,0,0,1]]}]})";
+  try {
+    parse_nerf_transforms(json, "transforms.json", "");
+    ADD_FAILURE() << "accepted";
+  } catch (const Error& e) {
+    EXPECT_THAT(e.what(), ::testing::AllOf(::testing::HasSubstr("transforms.json"),
+                                           ::testing::HasSubstr("camera position"),
+                                           ::testing::HasSubstr("single-precision")));
+  }
+}
+
 }  // namespace
 }  // namespace obscura
