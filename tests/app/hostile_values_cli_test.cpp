@@ -85,7 +85,9 @@ TEST_F(HostileValuesCli, CameraOptionsInsideTheirRangesAreRefusedNotAborted) {
       {"--focal-length 1e-20", 2, {"camera.focal_length_mm", "1e-20"}},
       {"--fstop 1e-300", 2, {"camera.f_number", "aperture"}},
       {"--sensor 1e300x1e300", 2, {"camera.sensor_mm", "1e+300"}},
-      {"--projection orthographic --view-height 1e12", 2, {"camera.view_height_m"}},
+      {"--projection orthographic --view-height 1e12", 2, {"--view-height", "1e12"}},
+      // Within the option's range, but 16:12 makes the view 2.5e7 m wide.
+      {"--projection orthographic --view-height 1.9e7", 2, {"camera.view_height_m"}},
   });
 }
 
