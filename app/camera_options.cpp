@@ -1,6 +1,7 @@
 #include "camera_options.h"
 
 #include "calibrated_camera_options.h"
+#include "obscura/math/value_limits.h"
 #include "option_ranges.h"
 
 namespace obscura::app {
@@ -28,8 +29,10 @@ void add_camera_options(CLI::App& command, CameraOverrides& o) {
   command.add_option("--sensor", o.sensor, "Sensor size WxH in mm, e.g. 36x24")->group(group);
   command.add_option("--sensor-fit", o.sensor_fit, "auto, horizontal or vertical (as Blender)")
       ->group(group);
+  // Twice the ±1e7 m world bound: the view's half height is a ray origin's offset from the
+  // camera. (A wide image's half width is checked by Camera::validate.)
   command.add_option("--view-height", o.view_height_m, "Orthographic view height in m")
-      ->check(number_in(0, 1e12))
+      ->check(number_in(0, 2 * kMaxWorldCoordinateM))
       ->group(group);
   command.add_option("--fstop", o.f_number, "Aperture f-number N; turns on depth of field")
       ->check(number_in(0, 1e4))

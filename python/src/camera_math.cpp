@@ -32,7 +32,8 @@ void write_text(const std::string& path, const std::string& text) {
 void bind_camera_math(py::class_<Camera>& camera) {
   camera.def(
       "project",
-      [](const Camera& c, const py::handle& points, double time) {
+      [](const Camera& camera, const py::handle& points, double time) {
+        const Camera c = camera;  // the GIL is freed below: another thread may change `camera`
         // Finite values are checked in the parallel loop below, not in a serial pass here.
         py::array in = checked_points(points, "project(points)", 3, /*finite=*/false);
         const size_t n = size_t(in.shape(0));
@@ -62,7 +63,9 @@ void bind_camera_math(py::class_<Camera>& camera) {
 
   camera.def(
       "unproject",
-      [](const Camera& c, const py::handle& film_points, const py::handle& depths, double time) {
+      [](const Camera& camera, const py::handle& film_points, const py::handle& depths,
+         double time) {
+        const Camera c = camera;  // the GIL is freed below: another thread may change `camera`
         py::array f = checked_points(film_points, "unproject(film)", 2);
         py::array d = checked_float_array(depths, "unproject(depth)", 0);
         if (d.ndim() != 1 || d.shape(0) != f.shape(0))

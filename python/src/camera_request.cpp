@@ -64,9 +64,16 @@ Camera resolve_camera_py(const Scene& scene, Text camera, std::optional<int> wid
   r.time_s = time;
   std::vector<std::string> notes;
   Camera resolved;
+  // Another Python thread may change `scene` while the GIL is free: resolve from a copy of what
+  // resolve_camera reads (the cameras and the render settings), taken with the GIL held.
+  Scene cameras_of;
+  cameras_of.name = scene.name;
+  cameras_of.cameras = scene.cameras;
+  cameras_of.camera = scene.camera;
+  cameras_of.render = scene.render;
   {
     py::gil_scoped_release release;  // a calibration or prescription file is read
-    resolved = resolve_camera(scene, r, width, height, &notes);
+    resolved = resolve_camera(cameras_of, r, width, height, &notes);
   }
   for (const std::string& note : notes)
     if (PyErr_WarnEx(PyExc_UserWarning, note.c_str(), 1) != 0) throw py::error_already_set();

@@ -29,7 +29,10 @@ py::dict ground_truth_py(const Scene& scene, std::optional<Camera> camera,
   const std::optional<Renderer> kind = parse_renderer(renderer);
   if (!kind)
     throw py::value_error("renderer: expected " + renderer_names() + ", got '" + renderer + "'");
-  const Camera& view = camera ? *camera : scene.camera;
+  // The GIL is free while the frame renders and another Python thread may change `scene`: the
+  // render works on a copy taken here, with the GIL held.
+  const Scene snapshot = scene;
+  const Camera& view = camera ? *camera : snapshot.camera;
   const GroundTruthTimes times = flow_times
                                      ? GroundTruthTimes{flow_times->first, flow_times->second}
                                      : default_ground_truth_times(view);
@@ -37,7 +40,7 @@ py::dict ground_truth_py(const Scene& scene, std::optional<Camera> camera,
   {
     py::gil_scoped_release release;
     view.validate();
-    image = render_ground_truth_frame(scene, view, {.renderer = *kind}, times).image();
+    image = render_ground_truth_frame(snapshot, view, {.renderer = *kind}, times).image();
   }
   // Channels grouped by layer, in the file's order: one (H, W, C) array each.
   std::vector<std::string> layers;

@@ -137,12 +137,15 @@ RenderResult render_frame_py(const py::object& scene_or_session, std::optional<C
     thread_limit.emplace(tbb::global_control::max_allowed_parallelism, size_t(threads));
 
   // A Scene renders alone; a RenderSession keeps what it compiled (one render at a time).
-  const Scene* scene = nullptr;
+  // The GIL is released while the render runs, so another Python thread may change the Scene
+  // meanwhile (replace its meshes, textures, lights): the render works on a snapshot taken here,
+  // with the GIL held, which no Python code can reach. (A session already holds its own copy.)
+  std::optional<const Scene> snapshot;
   PythonSession* session = nullptr;
   if (py::isinstance<PythonSession>(scene_or_session))
     session = &scene_or_session.cast<PythonSession&>();
   else if (py::isinstance<Scene>(scene_or_session))
-    scene = &scene_or_session.cast<const Scene&>();
+    snapshot.emplace(scene_or_session.cast<const Scene&>());
   else
     throw py::type_error("render: expected a Scene or a RenderSession, got " +
                          std::string(py::str(py::type::of(scene_or_session))));
@@ -160,7 +163,7 @@ RenderResult render_frame_py(const py::object& scene_or_session, std::optional<C
       if (session) one_at_a_time.emplace(session->busy);
       RenderOutcome outcome =
           session ? render_request(*session->session, view, request, &job.cancel, report)
-                  : render_request(*scene, view, request, &job.cancel, report);
+                  : render_request(*snapshot, view, request, &job.cancel, report);
       std::lock_guard lock(job.mutex);
       job.outcome = std::move(outcome);
     } catch (...) {

@@ -13,10 +13,12 @@ void bind_session(py::module_& m) {
       "the scene taken when it was made: later changes to the Scene do not reach it.")
       .def(py::init([](const Scene& scene) {
              auto s = std::make_unique<PythonSession>();
+             // Copied with the GIL held (another Python thread may change `scene` as soon as
+             // it is free), then validated without it.
+             s->scene = std::make_shared<const Scene>(scene);
              {
                py::gil_scoped_release release;
-               scene.validate();
-               s->scene = std::make_shared<const Scene>(scene);
+               s->scene->validate();
              }
              s->session = std::make_unique<RenderSession>(*s->scene);
              return s;

@@ -3,9 +3,11 @@
 // image centre when absent), so that they equal Obscura's raster coordinates.
 #include "obscura/io/nerf_transforms.h"
 
+#include <gmock/gmock.h>
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <string>
 
 #include "obscura/math/error.h"
 
@@ -106,6 +108,41 @@ TEST(NerfTransforms, MistakesNameTheFileAndPath) {
           << e.what() << "\nexpected: " << c.expected;
       EXPECT_EQ(std::string(e.what()).rfind("t.json", 0), 0u) << e.what();
     }
+  }
+}
+
+// A full field of view of π or more has no pinhole focal length: 6.3 rad once gave one that
+// imaged nothing (a black frame, exit 0).
+TEST(NerfTransforms, FieldOfViewOfPiOrMoreIsRefused) {
+  auto parse = [](double angle) {
+    std::string json = "{\"camera_angle_x\": " + std::to_string(angle) +
+                       ", \"w\": 64, \"h\": 48, \"frames\": [{\"file_path\": \"a\", "
+                       "\"transform_matrix\": [[1,0,0,0],[0,1,0,0],[0,0,1,4],[0,0,0,1]]}]}";
+    try {
+      parse_nerf_transforms(json, "transforms.json", "");
+    } catch (const Error& e) {
+      return std::string(e.what());
+    }
+    return std::string("(accepted)");
+  };
+  EXPECT_EQ(parse(1.2), "(accepted)");
+  for (double bad : {6.3, 3.1416, 0.0, -1.0})
+    EXPECT_THAT(parse(bad), ::testing::AllOf(::testing::HasSubstr("transforms.json"),
+                                             ::testing::HasSubstr("camera_angle_x")))
+        << bad;
+}
+
+// A pose 2e18 m away once reached Embree, which aborts beyond ~1.8e18 (SIGABRT).
+TEST(NerfTransforms, PositionBeyondTheCoordinateBoundIsRefusedWithTheFile) {
+  std::string json = R"({"fl_x": 50, "w": 64, "h": 48, "frames": [{"file_path": "a",
+    "transform_matrix": [[1,0,0,2e18],[0,1,0,0],[0,0,1,4],[0,0,0,1]]}]})";
+  try {
+    parse_nerf_transforms(json, "transforms.json", "");
+    ADD_FAILURE() << "accepted";
+  } catch (const Error& e) {
+    EXPECT_THAT(e.what(), ::testing::AllOf(::testing::HasSubstr("transforms.json"),
+                                           ::testing::HasSubstr("camera position"),
+                                           ::testing::HasSubstr("single-precision")));
   }
 }
 

@@ -2,6 +2,8 @@
 
 #include <gtest/gtest.h>
 
+#include <cmath>
+#include <limits>
 #include <vector>
 
 #include "obscura/math/rng.h"
@@ -60,6 +62,40 @@ TEST(Distribution2D, PdfIntegratesToOneAndMatchesSampling) {
     EXPECT_NEAR(pdf, d.pdf(p), 1e-4f);
     EXPECT_LT(p.y, 0.5f);  // the second row is empty
   }
+}
+
+}  // namespace
+}  // namespace obscura
+
+namespace obscura {
+namespace {
+
+// A light of power inf (emission 1e38 over an area) once made the CDF ∞/∞ = NaN, and every
+// sample fell through to a cell of no weight.
+TEST(Distribution1D, InfiniteAndNaNWeightsGiveAFiniteDistribution) {
+  const float inf = std::numeric_limits<float>::infinity();
+  const float nan = std::numeric_limits<float>::quiet_NaN();
+  std::vector<float> w = {0, nan, inf, 2};
+  Distribution1D d(w);
+  float total = 0;
+  for (size_t i = 0; i < w.size(); ++i) {
+    EXPECT_TRUE(std::isfinite(d.probability(i))) << i;
+    total += d.probability(i);
+  }
+  EXPECT_NEAR(total, 1, 1e-6);
+  EXPECT_EQ(d.probability(0), 0);
+  EXPECT_EQ(d.probability(1), 0);  // NaN: no weight
+  EXPECT_NEAR(d.probability(2), 1, 1e-6);
+  for (float u : {0.f, 0.25f, 0.5f, 0.999f, nan}) {
+    float p = -1;
+    size_t i = d.sample_discrete(u, &p);
+    EXPECT_LT(i, w.size());
+    EXPECT_TRUE(p >= 0 && p <= 1) << u;
+    if (!std::isnan(u)) {
+      EXPECT_EQ(i, 2u) << u;
+    }
+  }
+  EXPECT_TRUE(std::isfinite(d.pdf_continuous(nan)));
 }
 
 }  // namespace

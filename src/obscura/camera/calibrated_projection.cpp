@@ -17,6 +17,14 @@ void validate(const CalibratedProjection& p) {
   };
   finite_positive("fx", p.k.fx);
   finite_positive("fy", p.k.fy);
+  // A pixel 1 px off the principal point looks atan(1 / f) off axis: under a thousandth of a
+  // pixel, every pixel but the centre one looks more than 89.94° away, and the frame is black.
+  constexpr double kMinFocalPx = 1e-3;
+  for (auto [field, f] : {std::pair{"fx", p.k.fx}, std::pair{"fy", p.k.fy}})
+    if (f < kMinFocalPx)
+      throw Error(std::string("camera.intrinsics.") + field,
+                  "must be at least " + number_text(kMinFocalPx) +
+                      " pixels (a shorter focal length images nothing); got " + number_text(f));
   for (auto [field, v] :
        {std::pair{"cx", p.k.cx}, std::pair{"cy", p.k.cy}, std::pair{"skew", p.k.skew}})
     if (!std::isfinite(v))

@@ -5,8 +5,10 @@
 #include <limits>
 #include <string>
 
+#include "obscura/camera/camera_extent.h"
 #include "obscura/math/error.h"
 #include "obscura/math/number_text.h"
+#include "obscura/math/safe_index.h"
 
 namespace obscura {
 
@@ -113,6 +115,7 @@ void Camera::validate() const {
   obscura::validate(shutter);
   obscura::validate(exposure, shutter.duration_s());
   obscura::validate(film);
+  validate_world_extent(*this);
   // A lens system must be able to focus where asked (and the iris open as far).
   if (auto* l = std::get_if<LensSystemProjection>(&projection))
     focused_lens_system(l->lens, lens_system_settings());
@@ -328,8 +331,9 @@ Point2d PreparedCamera::raster_from_image_mm(Point2d image) const {
 std::optional<Point2d> PreparedCamera::start_at(Point2d film_point) const {
   if (starts_.empty()) return std::nullopt;
   double gx = film_point.x / kStartSpacing, gy = film_point.y / kStartSpacing;
-  int i = std::clamp(int(std::floor(gx)), 0, start_columns_ - 2);
-  int j = std::clamp(int(std::floor(gy)), 0, start_rows_ - 2);
+  // NaN-safe (math/safe_index.h): a NaN film point reads the first cell, not INT_MIN.
+  int i = int(clamp_or_low(std::floor(gx), 0.0, double(start_columns_ - 2)));
+  int j = int(clamp_or_low(std::floor(gy), 0.0, double(start_rows_ - 2)));
   double fx = gx - i, fy = gy - j;
   const Point2d* row0 = &starts_[size_t(j) * start_columns_ + i];
   const Point2d* row1 = row0 + start_columns_;

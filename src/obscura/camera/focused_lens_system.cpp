@@ -9,6 +9,7 @@
 #include "obscura/math/error.h"
 #include "obscura/math/golden_section.h"
 #include "obscura/math/number_text.h"
+#include "obscura/math/safe_index.h"
 
 namespace obscura {
 
@@ -195,8 +196,10 @@ void FocusedLensSystem::compute_pupil_bounds() {
 }
 
 PupilBounds FocusedLensSystem::pupil_bounds(double film_radius_mm) const {
-  int k = int(film_radius_mm / max_film_radius_mm_ * kPupilRadii);
-  return bounds_[size_t(std::clamp(k, 0, kPupilRadii - 1))];
+  // NaN-safe (math/safe_index.h): int(NaN) or int(1e300) would be undefined.
+  double k = clamp_or_low(film_radius_mm / max_film_radius_mm_ * kPupilRadii, 0.0,
+                          double(kPupilRadii - 1));
+  return bounds_[size_t(k)];
 }
 
 LensCameraRay FocusedLensSystem::to_camera(const LensRay& ray) const {

@@ -163,10 +163,19 @@ std::optional<double> classic_angle(const LensModel& model, double radius) {
   return std::nullopt;
 }
 
+// Lens coefficients act on normalized image coordinates (radii of order 1): real calibrations,
+// even of fisheyes, stay well within ±100. A coefficient of 1e300 parses, but its map squeezes
+// the whole image onto the axis or past its valid field, and the frame renders black.
+constexpr double kMaxLensCoefficient = 1e4;
+
 void require_finite(const char* field, double v) {
   if (!std::isfinite(v))
     throw Error(std::string("camera.lens.") + field,
                 "must be a finite number; got " + number_text(v));
+  if (!(std::abs(v) <= kMaxLensCoefficient))
+    throw Error(std::string("camera.lens.") + field,
+                "must be within ±" + number_text(kMaxLensCoefficient) +
+                    " (a lens coefficient that large images nothing); got " + number_text(v));
 }
 
 }  // namespace

@@ -7,6 +7,7 @@
 #include "obscura/camera/lens_system_fit.h"
 #include "obscura/math/error.h"
 #include "obscura/math/number_text.h"
+#include "obscura/math/value_limits.h"
 
 namespace obscura {
 
@@ -93,6 +94,9 @@ Transform world_from_camera_of(const CvExtrinsics& e, const std::string& where) 
     double x = 0;
     for (int i = 0; i < 3; ++i) x -= r[i][j] * e.t[i];
     world_from_camera.m[j][3] = x;
+    // Camera::validate refuses it too, but here the message names the file and line.
+    if (!(std::abs(x) <= kMaxWorldCoordinateM))
+      throw Error(where, "the camera position " + world_coordinate_message(x));
   }
   return Transform(world_from_camera, camera_from_world);
 }

@@ -2,10 +2,12 @@
 
 #include <cmath>
 #include <filesystem>
+#include <numbers>
 
 #include "obscura/io/json_reader.h"
 #include "obscura/io/lens_model_coefficients.h"
 #include "obscura/math/error.h"
+#include "obscura/math/number_text.h"
 
 namespace obscura {
 
@@ -72,13 +74,22 @@ CameraCalibration intrinsics_of(const Reader& r) {
   p.width_px = r.side("w");
   p.height_px = r.side("h");
   std::optional<double> fx = r.number("fl_x"), fy = r.number("fl_y");
+  // A full field of view of π or more has no pinhole focal length: tan(angle / 2) turns negative
+  // or wraps round to a tiny positive value (6.3 rad gave a focal length that imaged nothing).
+  auto field_angle = [&](const char* key) {
+    std::optional<double> angle = r.number(key);
+    if (angle && !(*angle > 0 && *angle < std::numbers::pi))
+      throw Error(r.file + ": " + key,
+                  "must be a full field of view in (0, π) radians; got " + number_text(*angle));
+    return angle;
+  };
   if (!fx) {
-    std::optional<double> angle = r.number("camera_angle_x");
+    std::optional<double> angle = field_angle("camera_angle_x");
     if (!angle) throw Error(r.file, "missing the focal length (fl_x or camera_angle_x)");
     fx = 0.5 * p.width_px / std::tan(0.5 * *angle);
   }
   if (!fy) {
-    std::optional<double> angle = r.number("camera_angle_y");
+    std::optional<double> angle = field_angle("camera_angle_y");
     fy = angle ? 0.5 * p.height_px / std::tan(0.5 * *angle) : *fx;
   }
   p.k.fx = *fx;

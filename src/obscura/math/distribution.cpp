@@ -2,13 +2,19 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
+
+#include "obscura/math/safe_index.h"
 
 namespace obscura {
 
 Distribution1D::Distribution1D(std::span<const float> values)
     : values_(values.begin(), values.end()), cdf_(values.size() + 1, 0.0) {
   size_t n = values_.size();
-  for (size_t i = 0; i < n; ++i) cdf_[i + 1] = cdf_[i] + std::max(0.f, values_[i]) / double(n);
+  // A weight of NaN counts as 0 and +∞ as the largest float: summed in double, the CDF stays
+  // finite, so it never divides ∞ by ∞ into NaN cells that every sample then falls through.
+  for (float& v : values_) v = v > 0 ? std::min(v, std::numeric_limits<float>::max()) : 0.f;
+  for (size_t i = 0; i < n; ++i) cdf_[i + 1] = cdf_[i] + values_[i] / double(n);
   integral_ = cdf_[n];
   if (integral_ <= 0) {  // nothing to prefer: uniform
     for (size_t i = 0; i <= n; ++i) cdf_[i] = double(i) / n;
@@ -41,7 +47,7 @@ float Distribution1D::sample_continuous(float u, float* pdf, size_t* cell) const
 }
 
 float Distribution1D::pdf_continuous(float x) const {
-  size_t i = std::min(size_t(std::max(0.f, x) * values_.size()), values_.size() - 1);
+  size_t i = size_t(clamp_or_low(x * float(values_.size()), 0.f, float(values_.size() - 1)));
   return probability(i) * float(values_.size());
 }
 
@@ -66,7 +72,7 @@ Point2f Distribution2D::sample(Point2f u, float* pdf) const {
 }
 
 float Distribution2D::pdf(Point2f p) const {
-  size_t row = std::min(size_t(std::max(0.f, p.y) * height_), size_t(height_ - 1));
+  size_t row = size_t(clamp_or_low(p.y * float(height_), 0.f, float(height_ - 1)));
   return marginal_.pdf_continuous(p.y) * rows_[row].pdf_continuous(p.x);
 }
 

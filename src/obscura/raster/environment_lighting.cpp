@@ -6,6 +6,8 @@
 #include <cmath>
 #include <numbers>
 
+#include "obscura/math/safe_index.h"
+
 namespace obscura::raster {
 
 namespace {
@@ -27,9 +29,10 @@ Vector3f equirect_direction(float u, float v) {
 // Bilinear, wrapping around in u and clamped at the poles.
 Rgb sample_bilinear(const Image& image, Point2f uv) {
   float x = uv.x * image.width - 0.5f,
-        y = std::clamp(uv.y * image.height - 0.5f, 0.f, float(image.height - 1));
-  int x0 = int(std::floor(x)), y0 = int(y);
-  float fx = x - float(x0), fy = y - float(y0);
+        y = clamp_or_low(uv.y * image.height - 0.5f, 0.f, float(image.height - 1));
+  // NaN-safe (math/safe_index.h): a NaN direction reads texel 0 with NaN weights.
+  int x0 = floor_to_index(x), y0 = int(y);
+  float fx = clamp_or_low(x - std::floor(x), 0.f, 1.f), fy = y - float(y0);
   int y1 = std::min(y0 + 1, image.height - 1);
   auto wrap = [&](int i) { return ((i % image.width) + image.width) % image.width; };
   int xa = wrap(x0), xb = wrap(x0 + 1);

@@ -11,6 +11,7 @@
 #include "obscura/camera/intrinsics.h"
 #include "obscura/film/work_share.h"
 #include "obscura/math/error.h"
+#include "obscura/math/safe_index.h"
 #include "obscura/raster/render_target.h"
 
 namespace obscura::raster {
@@ -132,8 +133,9 @@ struct RenderedView {
 
 // Bilinear lookup at raster point p (pixel centres at half-integers), clamped to the image.
 Rgb bilinear(const Image& image, Point2d p) {
-  double x = std::clamp(p.x - 0.5, 0.0, double(image.width - 1));
-  double y = std::clamp(p.y - 0.5, 0.0, double(image.height - 1));
+  // NaN-safe (math/safe_index.h): std::clamp passes NaN on to int().
+  double x = clamp_or_low(p.x - 0.5, 0.0, double(image.width - 1));
+  double y = clamp_or_low(p.y - 0.5, 0.0, double(image.height - 1));
   int x0 = int(x), y0 = int(y);  // x, y ≥ 0: truncation is floor
   int x1 = std::min(x0 + 1, image.width - 1), y1 = std::min(y0 + 1, image.height - 1);
   float fx = float(x - x0), fy = float(y - y0);

@@ -8,6 +8,7 @@
 #include <variant>
 
 #include "obscura/math/error.h"
+#include "obscura/math/safe_index.h"
 #include "obscura/raster/depth_range.h"
 #include "obscura/raster/msaa.h"
 #include "obscura/raster/pipeline.h"
@@ -388,8 +389,8 @@ void SceneRasterizer::draw_background(const Matrix4& world_from_clip, RenderTarg
       float theta = std::atan2(std::sqrt(l.x * l.x + l.z * l.z), l.y);
       float u = 0.5f + std::atan2(l.x, -l.z) / (2 * kPi);
       u -= std::floor(u);
-      int tx = std::min(int(u * environment_map_.width), environment_map_.width - 1);
-      int ty = std::min(int(theta / kPi * environment_map_.height), environment_map_.height - 1);
+      int tx = cell_index(u * environment_map_.width, environment_map_.width);
+      int ty = cell_index(theta / kPi * environment_map_.height, environment_map_.height);
       Rgb c = environment_map_.rgb(tx, ty) * environment_scale_ * exposure;
       for (int s = 0; s < target.samples(); ++s) target.set_color(target.sample_index(x, y, s), c);
     }

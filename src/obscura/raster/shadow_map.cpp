@@ -3,6 +3,8 @@
 #include <algorithm>
 #include <numbers>
 
+#include "obscura/math/safe_index.h"
+
 namespace obscura::raster {
 
 namespace {
@@ -50,7 +52,8 @@ float ShadowMap::visibility(Point3f p, Vector3f n) const {
   float z = (clip.z / clip.w) * 0.5f + 0.5f;
   if (z >= 1) return 1;
   // 3×3 texels around the one containing (x, y); outside the map counts as lit.
-  const int cx = int(std::floor(x)), cy = int(std::floor(y));
+  // NaN-safe (math/safe_index.h); anything clamped far outside the map counts as lit below.
+  const int cx = floor_to_index(x), cy = floor_to_index(y);
   int lit = 0;
   for (int dy = -1; dy <= 1; ++dy)
     for (int dx = -1; dx <= 1; ++dx) {

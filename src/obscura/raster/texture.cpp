@@ -4,6 +4,7 @@
 #include <cmath>
 
 #include "obscura/math/error.h"
+#include "obscura/math/safe_index.h"
 
 namespace obscura::raster {
 
@@ -42,15 +43,16 @@ Rgb Texture::texel(int level, int i, int j) const {
 }
 
 Rgb Texture::sample_nearest(float u, float v) const {
-  return texel(0, int(std::floor(u * width())), int(std::floor(v * height())));
+  return texel(0, floor_to_index(u * width()), floor_to_index(v * height()));
 }
 
 Rgb Texture::sample_bilinear(float u, float v, int level) const {
   level = std::clamp(level, 0, levels() - 1);
   float x = u * width(level) - 0.5f, y = v * height(level) - 0.5f;
-  float fx = std::floor(x), fy = std::floor(y);
-  int i = int(fx), j = int(fy);
-  float tx = x - fx, ty = y - fy;
+  // NaN-safe (math/safe_index.h); a NaN weight then blends NaN, never reads outside.
+  int i = floor_to_index(x), j = floor_to_index(y);
+  float tx = clamp_or_low(x - std::floor(x), 0.f, 1.f),
+        ty = clamp_or_low(y - std::floor(y), 0.f, 1.f);
   return (texel(level, i, j) * (1 - tx) + texel(level, i + 1, j) * tx) * (1 - ty) +
          (texel(level, i, j + 1) * (1 - tx) + texel(level, i + 1, j + 1) * tx) * ty;
 }
@@ -60,7 +62,7 @@ Rgb Texture::sample_trilinear(float u, float v, float du_dx, float dv_dx, float 
   float w = float(width()), h = float(height());
   float rho = std::max(std::hypot(du_dx * w, dv_dx * h), std::hypot(du_dy * w, dv_dy * h));
   float lambda = rho > 0 ? std::log2(rho) : 0.f;
-  if (lambda <= 0) return sample_bilinear(u, v, 0);
+  if (!(lambda > 0)) return sample_bilinear(u, v, 0);  // NaN too: int(NaN) is undefined
   if (lambda >= float(levels() - 1)) return sample_bilinear(u, v, levels() - 1);
   int lo = int(lambda);
   float t = lambda - float(lo);

@@ -4,6 +4,8 @@
 #include <variant>
 
 #include "obscura/math/error.h"
+#include "obscura/math/number_text.h"
+#include "obscura/math/value_limits.h"
 
 namespace obscura {
 
@@ -19,6 +21,75 @@ void check_attribute_size(const std::string& where, const char* attribute,
   if (!values.empty() && values.size() != vertex_count)
     throw Error(where, std::string(attribute) + " has " + std::to_string(values.size()) +
                            " entries for " + std::to_string(vertex_count) + " vertices");
+}
+
+bool within_world(Point3d p) {
+  auto in = [](double c) { return std::abs(c) <= kMaxWorldCoordinateM; };  // NaN: false
+  return in(p.x) && in(p.y) && in(p.z);
+}
+
+// A world-space point must be one single-precision ray tracing can resolve (math/value_limits.h).
+void check_world_point(Point3d p, const std::string& where, const std::string& field) {
+  if (within_world(p)) return;
+  double worst = std::isnan(p.x) || std::abs(p.x) > kMaxWorldCoordinateM   ? p.x
+                 : std::isnan(p.y) || std::abs(p.y) > kMaxWorldCoordinateM ? p.y
+                                                                           : p.z;
+  throw Error(where, field + " " + world_coordinate_message(worst));
+}
+
+// Where an instance puts its mesh: the corners of the mesh's object-space box (every pose of a
+// deforming mesh) through each of its transforms, which bound the transformed mesh.
+Bounds3f object_box(const Mesh& mesh) {
+  Bounds3f box;
+  for (Point3f p : mesh.positions) box = unite(box, p);
+  for (const auto& step : mesh.deformation.positions)
+    for (Point3f p : step) box = unite(box, p);
+  return box;
+}
+
+void check_instance_extent(const Instance& instance, const Bounds3f& box,
+                           const std::string& where) {
+  if (box.empty()) return;
+  auto check = [&](const Transform& t, const std::string& field) {
+    for (int c = 0; c < 8; ++c) {
+      Point3d corner((c & 1 ? box.max : box.min).x, (c & 2 ? box.max : box.min).y,
+                     (c & 4 ? box.max : box.min).z);
+      check_world_point(t(corner), where, field + " places a vertex at a coordinate that");
+    }
+  };
+  check(instance.world_from_object, "world_from_object");
+  for (size_t k = 0; k < instance.motion.size(); ++k)
+    check(instance.motion[k].world_from_object, "motion key " + std::to_string(k));
+}
+
+// Light values: finite, non-negative and at most kMaxLightValue (math/value_limits.h).
+void check_light_value(Rgb v, const std::string& where, const std::string& field,
+                       const char* unit) {
+  for (float c : {v.r, v.g, v.b})
+    if (!(c >= 0 && c <= kMaxLightValue))
+      throw Error(where, field + " must be finite, non-negative and at most " +
+                             number_text(kMaxLightValue) + " " + unit + "; got " + number_text(c));
+}
+
+void check_direction(Vector3f d, const std::string& where) {
+  if (!(std::isfinite(d.x) && std::isfinite(d.y) && std::isfinite(d.z)) ||
+      (d.x == 0 && d.y == 0 && d.z == 0))
+    throw Error(where, "direction must be finite and non-zero");
+}
+
+void validate_light(const Light& light, const std::string& where) {
+  auto position = [&](Point3f p) { check_world_point(Point3d(p.x, p.y, p.z), where, "position"); };
+  if (auto* point = std::get_if<PointLight>(&light.model)) {
+    position(point->position);
+    check_light_value(point->intensity, where, "intensity", "W/sr");
+  } else if (auto* spot = std::get_if<SpotLight>(&light.model)) {
+    position(spot->position);
+    check_direction(spot->direction, where);
+    check_light_value(spot->intensity, where, "intensity", "W/sr");
+  } else if (auto* sun = std::get_if<DirectionalLight>(&light.model)) {
+    check_direction(sun->direction, where);
+    check_light_value(sun->irradiance, where, "irradiance", "W/m²");
+  }
 }
 
 void validate_mesh(const Mesh& m, const std::string& where, size_t material_count) {
@@ -85,10 +156,8 @@ void validate_material(const Material& m, const std::string& where, size_t textu
     check_texture(mr->specular_texture, where, "specular", texture_count);
     check_texture(mr->specular_color_texture, where, "specular colour", texture_count);
   }
-  Rgb e = m.emission;
-  if (!(std::isfinite(e.r) && std::isfinite(e.g) && std::isfinite(e.b)) || e.r < 0 || e.g < 0 ||
-      e.b < 0)
-    throw Error(where, "emission must be finite and non-negative");
+  // Emission includes KHR_materials_emissive_strength, which glTF leaves unbounded.
+  check_light_value(m.emission, where, "emission (strength included)", "W·sr⁻¹·m⁻²");
 }
 
 }  // namespace
@@ -160,8 +229,23 @@ void Scene::validate() const {
                       " is past the material count " + std::to_string(materials.size()));
   for (const Material& m : materials)
     validate_material(m, scene_where + ", material '" + m.name + "'", textures.size());
+  std::vector<Bounds3f> mesh_boxes;  // once per mesh: instances may share one many times
+  for (const Mesh& m : meshes) mesh_boxes.push_back(object_box(m));
+  for (const Instance& instance : instances)
+    check_instance_extent(instance, mesh_boxes[instance.mesh],
+                          scene_where + ", instance '" + instance.name + "'");
+  for (const Light& light : lights)
+    validate_light(light, scene_where + ", light '" + light.name + "'");
   if (environment && environment->texture >= 0 && size_t(environment->texture) >= textures.size())
     throw Error(scene_where + ", environment", "texture index is past the texture count");
+  if (environment) {
+    if (!(environment->intensity >= 0 && environment->intensity <= kMaxLightValue))
+      throw Error(scene_where + ", environment",
+                  "intensity must be finite, non-negative and at most " +
+                      number_text(kMaxLightValue) + "; got " + number_text(environment->intensity));
+    check_light_value(environment->color * environment->intensity, scene_where + ", environment",
+                      "colour × intensity", "W·sr⁻¹·m⁻²");
+  }
   camera.validate();
 }
 

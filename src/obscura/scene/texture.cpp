@@ -4,6 +4,7 @@
 #include <cmath>
 
 #include "obscura/color/srgb.h"
+#include "obscura/math/safe_index.h"
 
 namespace obscura {
 
@@ -79,13 +80,15 @@ Vector4f sample_texture(const Texture& t, Point2f uv) {
   // Continuous texel coordinates, texel centres at integer + ½.
   float x = uv.x * t.width, y = uv.y * t.height;
   if (t.filter == TextureFilter::kNearest) {
-    int ix = wrap_texel_index(int(std::floor(x)), t.width, t.wrap_u);
-    int iy = wrap_texel_index(int(std::floor(y)), t.height, t.wrap_v);
+    int ix = wrap_texel_index(floor_to_index(x), t.width, t.wrap_u);
+    int iy = wrap_texel_index(floor_to_index(y), t.height, t.wrap_v);
     return texel_rgba(t, ix, iy);
   }
   float fx = x - 0.5f, fy = y - 0.5f;
-  int x0 = int(std::floor(fx)), y0 = int(std::floor(fy));
-  float ax = fx - x0, ay = fy - y0;
+  // NaN-safe (math/safe_index.h): a NaN or huge uv reads a texel inside the texture.
+  int x0 = floor_to_index(fx), y0 = floor_to_index(fy);
+  float ax = clamp_or_low(fx - std::floor(fx), 0.f, 1.f),
+        ay = clamp_or_low(fy - std::floor(fy), 0.f, 1.f);
   // The two columns and rows, each wrapped once rather than once per texel.
   const int xs[2] = {wrap_texel_index(x0, t.width, t.wrap_u),
                      wrap_texel_index(x0 + 1, t.width, t.wrap_u)};

@@ -4,6 +4,7 @@
 #include <cmath>
 #include <numbers>
 
+#include "obscura/math/safe_index.h"
 #include "obscura/shading/gauss_legendre.h"
 
 namespace obscura::shading {
@@ -102,9 +103,10 @@ float charlie_sheen(float mu_o, float mu_i, float cos_h, float alpha) {
 float sheen_albedo(float mu, float alpha) {
   // Bilinear at (μ, √α), clamped at the grid's edges.
   const Table& t = table();
-  float x = std::clamp(mu * kMuSize - 0.5f, 0.f, float(kMuSize - 1));
-  float y = std::clamp(std::sqrt(std::max(alpha, 0.f)) * (kRoughnessSize - 1), 0.f,
-                       float(kRoughnessSize - 1));
+  // NaN-safe (math/safe_index.h): a NaN cosine or roughness reads the grid's first cell.
+  float x = clamp_or_low(mu * kMuSize - 0.5f, 0.f, float(kMuSize - 1));
+  float y = clamp_or_low(std::sqrt(clamp_or_low(alpha, 0.f, 1.f)) * (kRoughnessSize - 1), 0.f,
+                         float(kRoughnessSize - 1));
   int x0 = std::min(int(x), kMuSize - 2), y0 = std::min(int(y), kRoughnessSize - 2);
   float fx = x - x0, fy = y - y0;
   float top = t.e[y0][x0] * (1 - fx) + t.e[y0][x0 + 1] * fx;

@@ -5,6 +5,7 @@
 #include <cmath>
 #include <numbers>
 
+#include "obscura/math/safe_index.h"
 #include "obscura/shading/gauss_legendre.h"
 
 namespace obscura::shading {
@@ -91,9 +92,10 @@ const Tables& tables() {
 
 // Bilinear lookup at (μ, √α); clamped at the grid's edges.
 float lookup(const float (&table)[kRoughnessSize][kMuSize], float mu, float alpha) {
-  float x = std::clamp(mu * kMuSize - 0.5f, 0.f, float(kMuSize - 1));
-  float y = std::clamp(std::sqrt(std::max(alpha, 0.f)) * (kRoughnessSize - 1), 0.f,
-                       float(kRoughnessSize - 1));
+  // NaN-safe (math/safe_index.h): a NaN cosine or roughness reads the grid's first cell.
+  float x = clamp_or_low(mu * kMuSize - 0.5f, 0.f, float(kMuSize - 1));
+  float y = clamp_or_low(std::sqrt(clamp_or_low(alpha, 0.f, 1.f)) * (kRoughnessSize - 1), 0.f,
+                         float(kRoughnessSize - 1));
   int x0 = std::min(int(x), kMuSize - 2), y0 = std::min(int(y), kRoughnessSize - 2);
   float fx = x - x0, fy = y - y0;
   float top = table[y0][x0] * (1 - fx) + table[y0][x0 + 1] * fx;
@@ -102,8 +104,8 @@ float lookup(const float (&table)[kRoughnessSize][kMuSize], float mu, float alph
 }
 
 float lookup(const float (&table)[kRoughnessSize], float alpha) {
-  float y = std::clamp(std::sqrt(std::max(alpha, 0.f)) * (kRoughnessSize - 1), 0.f,
-                       float(kRoughnessSize - 1));
+  float y = clamp_or_low(std::sqrt(clamp_or_low(alpha, 0.f, 1.f)) * (kRoughnessSize - 1), 0.f,
+                         float(kRoughnessSize - 1));
   int y0 = std::min(int(y), kRoughnessSize - 2);
   float fy = y - y0;
   return table[y0] * (1 - fy) + table[y0 + 1] * fy;

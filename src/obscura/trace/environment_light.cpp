@@ -5,6 +5,7 @@
 #include <vector>
 
 #include "obscura/math/error.h"
+#include "obscura/math/safe_index.h"
 #include "obscura/math/sampling.h"
 
 namespace obscura {
@@ -49,8 +50,9 @@ Vector3f EnvironmentLight::direction_from_uv(Point2f uv) const {
 }
 
 Rgb EnvironmentLight::lookup(Point2f uv) const {
-  int x = std::min(int(uv.x * map_->width), map_->width - 1);
-  int y = std::min(int(uv.y * map_->height), map_->height - 1);
+  // A NaN direction (from a NaN normal or a light at 1e308) reads texel 0, not INT_MIN.
+  int x = cell_index(uv.x * map_->width, map_->width);
+  int y = cell_index(uv.y * map_->height, map_->height);
   return map_->rgb(x, y) * constant_;
 }
 

@@ -49,6 +49,9 @@ std::optional<LightSample> LightSet::sample(Point3f p, float u_select, Point2f u
                        .normal = {}};
   }
   if (kind == kEnvironment) {
+    // Selection gives the environment no probability when there is none; this holds even if a
+    // degenerate selection ever picked its slot.
+    if (!environment_) return std::nullopt;
     EnvironmentSample s = environment_->sample(u);
     if (s.pdf <= 0) return std::nullopt;
     return LightSample{
