@@ -82,7 +82,7 @@ namespace {
 // Before rendering: the output can be written and replaces no input (the scene file, a model,
 // buffer or texture).
 void check_outputs(const RenderOptions& options, const Scene& scene) {
-  check_output_path(options.output);
+  check_output_path(options.output, "--output");
   check_not_an_input(options.output, scene.input_files);
   if (options.tracer.aovs)
     for (const std::string& aov :
@@ -97,7 +97,8 @@ Scene load_render_scene(RenderOptions& options, bool writes_output) {
   validate(options.tracer);
   validate(options.raster, options.tracer.renderer);
   validate(options.raster_effects, options.tracer.renderer);
-  if (writes_output) check_output_path(options.output);  // fail before loading, not after
+  if (writes_output)
+    check_output_path(options.output, "--output");  // fail before loading, not after
 
   // Skins and morph targets are posed when the file is read, at the shutter's middle.
   const Shutter shutter = requested_shutter(options.camera);

@@ -40,7 +40,7 @@ void check_ground_truth_output(const GroundTruthOptions& options, const std::str
   if (image_format_for_path(options.path) != ImageFormat::kExr)
     throw UsageError("--ground-truth writes an OpenEXR file: the name must end in .exr; got '" +
                      options.path + "'");
-  check_output_path(options.path);
+  check_output_path(options.path, "--ground-truth");
   std::error_code error;
   if (options.path == image_output || std::filesystem::weakly_canonical(options.path, error) ==
                                           std::filesystem::weakly_canonical(image_output, error))

@@ -19,7 +19,7 @@ struct MergeOptions {
 };
 
 void run_merge(const MergeOptions& options) {
-  check_output_path(options.render.output);
+  check_output_path(options.render.output, "--output");
   check_not_an_input(options.render.output, options.parts);
   std::vector<ShardFile> shards;
   for (const std::string& path : options.parts) shards.push_back(read_shard(path));
