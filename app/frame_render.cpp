@@ -203,7 +203,9 @@ RenderedFrame render_frame(RenderSession& session, const Camera& camera,
                                                                : RenderEnd::kComplete,
                     .done = stats.done,
                     .requested = stats.requested,
-                    .unit = renderer.progress_unit};
+                    .unit = renderer.progress_unit,
+                    .left_out = {}};
+  if (frame.flare_stats.cancelled) interrupt_leaving_out(frame.progress, "flare of some lights");
   frame.time_limit_reached = open_ended && stats.time_limited;
   frame.warnings = stats.warnings;
   frame.seconds = stats.seconds;
@@ -230,18 +232,27 @@ void gather_frame(Team& team, RenderedFrame& frame) {
   for (AovImage& layer : frame.layers) team.gather(deal, layer.image);
 }
 
-void write_frame(const RenderOptions& options, const std::string& output,
-                 const RenderedFrame& frame) {
+RenderEnd write_frame(const RenderOptions& options, const std::string& output,
+                      const RenderedFrame& frame) {
+  // A cancel during the finishing leaves the glare out: the frame is written without it, marked
+  // interrupted.
+  bool unfinished = false;
+  const Image finished = frame.finished(&InterruptGuard::requested(), &unfinished);
+  RenderProgress progress = frame.progress;
+  if (unfinished) interrupt_leaving_out(progress, "glare");
   ImageWriteOptions write_options = image_write_options(options.display);
-  write_options.metadata = partial_metadata(frame.progress);
-  report_write(output, write_image(output, frame.finished(), write_options), options.quiet);
-  warn_if_unmarked(output, frame.progress, options.quiet);
+  write_options.metadata = partial_metadata(progress);
+  report_write(output, write_image(output, finished, write_options), options.quiet);
+  warn_if_unmarked(output, progress, options.quiet);
   std::printf("%s\n", output.c_str());
   if (frame.aovs)
-    for (const std::string& path :
-         write_aovs(output, *frame.aovs, partial_metadata(frame.progress)))
+    for (const std::string& path : write_aovs(output, *frame.aovs, partial_metadata(progress)))
       std::printf("%s\n", path.c_str());
-  set_exit_status(exit_status_for(frame.progress.end));
+  // A cancel that came while the (complete) frame was written still ends the command as
+  // interrupted.
+  const RenderEnd end = InterruptGuard::requested() ? RenderEnd::kInterrupted : progress.end;
+  set_exit_status(exit_status_for(end));
+  return end;
 }
 
 }  // namespace obscura::app

@@ -99,6 +99,11 @@ void run_sequence(RenderOptions options, Team& team) {
   for (;;) {
     const int64_t ticket = team.take_ticket();
     if (ticket >= frames.size() || worst == RenderEnd::kInterrupted) break;
+    // A cancel between frames (or during a frame's writing) renders no further frame.
+    if (InterruptGuard::requested()) {
+      worst = RenderEnd::kInterrupted;
+      break;
+    }
     mine.push_back(ticket);
     const int n = frames[ticket];
     RenderOptions frame_options = options;
@@ -150,12 +155,15 @@ void run_sequence(RenderOptions options, Team& team) {
                      rank_prefix().c_str(), n, frame_options.output.c_str());
         continue;
       }
-      write_frame(frame_options, frame_options.output, frame);
+      worst = std::max(worst, write_frame(frame_options, frame_options.output, frame));
       continue;
     }
     DisplaySettings display = image_write_options(options.display).display;
     display.bits = 8;
-    DisplayImage developed = develop(pixels_of(frame.finished()), display);
+    bool unfinished = false;  // a cancel during the glare: the video is not written
+    DisplayImage developed =
+        develop(pixels_of(frame.finished(&InterruptGuard::requested(), &unfinished)), display);
+    if (unfinished) worst = RenderEnd::kInterrupted;
     if (team.alone()) {
       if (!video_writer)
         video_writer = std::make_unique<Y4mWriter>(options.output, developed.width,
