@@ -400,12 +400,12 @@ Image lens_flare_image(const std::vector<FlareSource>& sources, const Camera& ca
                              " ghosts); ghost flares are traced for lenses of at most " +
                              std::to_string(kMaxFlareLensSurfaces) + " surfaces");
   const std::vector<Ghost> ghosts = lens_ghosts(*optics.lens);
-  const long long ghost_images = (long long)ghosts.size() * (long long)sources.size();
-  if (ghost_images > kMaxFlareGhostImages)
+  const long long work = (long long)ghosts.size() * (long long)sources.size() * (long long)surfaces;
+  if (work > kMaxFlareWork)
     throw Error("flare", std::to_string(ghosts.size()) + " ghosts × " +
-                             std::to_string(sources.size()) +
-                             " bright lights = " + std::to_string(ghost_images) +
-                             " ghost images; at most " + std::to_string(kMaxFlareGhostImages) +
+                             std::to_string(sources.size()) + " bright lights × " +
+                             std::to_string(surfaces) + " lens surfaces = " + std::to_string(work) +
+                             " ghost-surface traces; at most " + std::to_string(kMaxFlareWork) +
                              " are traced (fewer lights, or a simpler lens)");
   std::vector<std::vector<SurfaceVisit>> paths;
   for (const Ghost& g : ghosts) paths.push_back(ghost_path(*optics.lens, g));
