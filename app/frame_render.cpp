@@ -82,7 +82,7 @@ namespace {
 // Before rendering: the output can be written and replaces no input (the scene file, a model,
 // buffer or texture).
 void check_outputs(const RenderOptions& options, const Scene& scene) {
-  check_output_path(options.output);
+  check_output_path(options.output, "--output");
   check_not_an_input(options.output, scene.input_files);
   if (options.tracer.aovs)
     for (const std::string& aov :
@@ -97,7 +97,8 @@ Scene load_render_scene(RenderOptions& options, bool writes_output) {
   validate(options.tracer);
   validate(options.raster, options.tracer.renderer);
   validate(options.raster_effects, options.tracer.renderer);
-  if (writes_output) check_output_path(options.output);  // fail before loading, not after
+  if (writes_output)
+    check_output_path(options.output, "--output");  // fail before loading, not after
 
   // Skins and morph targets are posed when the file is read, at the shutter's middle.
   const Shutter shutter = requested_shutter(options.camera);
@@ -202,7 +203,9 @@ RenderedFrame render_frame(RenderSession& session, const Camera& camera,
                                                                : RenderEnd::kComplete,
                     .done = stats.done,
                     .requested = stats.requested,
-                    .unit = renderer.progress_unit};
+                    .unit = renderer.progress_unit,
+                    .left_out = {}};
+  if (frame.flare_stats.cancelled) interrupt_leaving_out(frame.progress, "flare of some lights");
   frame.time_limit_reached = open_ended && stats.time_limited;
   frame.warnings = stats.warnings;
   frame.seconds = stats.seconds;
@@ -229,18 +232,27 @@ void gather_frame(Team& team, RenderedFrame& frame) {
   for (AovImage& layer : frame.layers) team.gather(deal, layer.image);
 }
 
-void write_frame(const RenderOptions& options, const std::string& output,
-                 const RenderedFrame& frame) {
+RenderEnd write_frame(const RenderOptions& options, const std::string& output,
+                      const RenderedFrame& frame) {
+  // A cancel during the finishing leaves the glare out: the frame is written without it, marked
+  // interrupted.
+  bool unfinished = false;
+  const Image finished = frame.finished(&InterruptGuard::requested(), &unfinished);
+  RenderProgress progress = frame.progress;
+  if (unfinished) interrupt_leaving_out(progress, "glare");
   ImageWriteOptions write_options = image_write_options(options.display);
-  write_options.metadata = partial_metadata(frame.progress);
-  report_write(output, write_image(output, frame.finished(), write_options), options.quiet);
-  warn_if_unmarked(output, frame.progress, options.quiet);
+  write_options.metadata = partial_metadata(progress);
+  report_write(output, write_image(output, finished, write_options), options.quiet);
+  warn_if_unmarked(output, progress, options.quiet);
   std::printf("%s\n", output.c_str());
   if (frame.aovs)
-    for (const std::string& path :
-         write_aovs(output, *frame.aovs, partial_metadata(frame.progress)))
+    for (const std::string& path : write_aovs(output, *frame.aovs, partial_metadata(progress)))
       std::printf("%s\n", path.c_str());
-  set_exit_status(exit_status_for(frame.progress.end));
+  // A cancel that came while the (complete) frame was written still ends the command as
+  // interrupted.
+  const RenderEnd end = InterruptGuard::requested() ? RenderEnd::kInterrupted : progress.end;
+  set_exit_status(exit_status_for(end));
+  return end;
 }
 
 }  // namespace obscura::app

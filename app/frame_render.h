@@ -69,8 +69,10 @@ RenderedFrame render_frame(RenderSession& session, const Camera& camera,
 void gather_frame(Team& team, RenderedFrame& frame);
 
 // Writes the image (marked partial when it is) and the auxiliary images beside it; prints the
-// paths on stdout (the image first) and sets the exit status that says how the render ended.
-void write_frame(const RenderOptions& options, const std::string& output,
-                 const RenderedFrame& frame);
+// paths on stdout (the image first) and sets the exit status that says how the render ended;
+// returns that ending. A cancel (InterruptGuard) during the glare leaves it out and marks the
+// image interrupted; one during the writing still ends the command as interrupted.
+RenderEnd write_frame(const RenderOptions& options, const std::string& output,
+                      const RenderedFrame& frame);
 
 }  // namespace obscura::app

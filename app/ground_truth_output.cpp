@@ -11,6 +11,7 @@
 #include "obscura/io/image_io.h"
 #include "obscura/math/number_list.h"
 #include "obscura/render/ground_truth_frame.h"
+#include "tracer_options.h"
 #include "usage_error.h"
 
 namespace obscura::app {
@@ -40,7 +41,7 @@ void check_ground_truth_output(const GroundTruthOptions& options, const std::str
   if (image_format_for_path(options.path) != ImageFormat::kExr)
     throw UsageError("--ground-truth writes an OpenEXR file: the name must end in .exr; got '" +
                      options.path + "'");
-  check_output_path(options.path);
+  check_output_path(options.path, "--ground-truth");
   std::error_code error;
   if (options.path == image_output || std::filesystem::weakly_canonical(options.path, error) ==
                                           std::filesystem::weakly_canonical(image_output, error))
@@ -48,13 +49,16 @@ void check_ground_truth_output(const GroundTruthOptions& options, const std::str
   check_not_an_input(options.path, scene.input_files);
 }
 
-std::string write_ground_truth_file(const GroundTruthOptions& options, Renderer renderer,
-                                    const RasterOptions& raster, const Scene& scene) {
+std::optional<std::string> write_ground_truth_file(const GroundTruthOptions& options,
+                                                   Renderer renderer, const RasterOptions& raster,
+                                                   const Scene& scene) {
+  if (InterruptGuard::requested()) return std::nullopt;
   const Camera& camera = scene.camera;
   const GroundTruthTimes times = ground_truth_times(options, camera);
   FrameSettings settings{.renderer = renderer};
   apply_raster_options(raster, settings.raster);
   const GroundTruthBuffer buffer = render_ground_truth_frame(scene, camera, settings, times);
+  if (InterruptGuard::requested()) return std::nullopt;
   write_ground_truth(options.path, buffer, camera, times);
   return options.path;
 }

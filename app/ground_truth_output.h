@@ -30,8 +30,10 @@ void check_ground_truth_output(const GroundTruthOptions& options, const std::str
                                const Scene& scene);
 
 // Computes the ground truth of `scene` with its camera by `renderer` (the rasterizer, or the
-// tracer for any of its integrators) and writes it; returns the path.
-std::string write_ground_truth_file(const GroundTruthOptions& options, Renderer renderer,
-                                    const RasterOptions& raster, const Scene& scene);
+// tracer for any of its integrators) and writes it; returns the path. A cancel (InterruptGuard)
+// before the ground truth is computed and written returns nothing and writes nothing.
+std::optional<std::string> write_ground_truth_file(const GroundTruthOptions& options,
+                                                   Renderer renderer, const RasterOptions& raster,
+                                                   const Scene& scene);
 
 }  // namespace obscura::app

@@ -37,7 +37,7 @@ void linearize_if_encoded(const std::string& path, Image& image) {
 
 void run_convert(const ConvertOptions& o) {
   ImageWriteOptions write_options = image_write_options(o.display);
-  check_output_path(o.output);
+  check_output_path(o.output, "output");
   check_not_an_input(o.output, {o.input});
   Image image = read_image(o.input);
   try {
@@ -63,7 +63,7 @@ Rgb heat_color(float t) {
 
 void run_diff(const DiffOptions& o) {
   if (!o.heatmap.empty()) {
-    check_output_path(o.heatmap);
+    check_output_path(o.heatmap, "--heatmap");
     check_not_an_input(o.heatmap, {o.a, o.b});
   }
   Image a = read_image(o.a), b = read_image(o.b);

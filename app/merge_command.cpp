@@ -7,7 +7,9 @@
 #include "frame_render.h"
 #include "obscura/io/aov_files.h"
 #include "obscura/io/image_io.h"
+#include "partial_render.h"
 #include "shard_file.h"
+#include "tracer_options.h"
 
 namespace obscura::app {
 
@@ -19,11 +21,22 @@ struct MergeOptions {
 };
 
 void run_merge(const MergeOptions& options) {
-  check_output_path(options.render.output);
+  check_output_path(options.render.output, "--output");
   check_not_an_input(options.render.output, options.parts);
-  std::vector<ShardFile> shards;
-  for (const std::string& path : options.parts) shards.push_back(read_shard(path));
-  RenderedFrame frame = merge_shards(shards);
+  // One part read at a time: the frame and one part in memory, not every part. A cancel stops
+  // between parts; nothing is written then (no part of the frame is complete without the rest).
+  InterruptGuard interrupt;
+  ShardMerger merger;
+  for (const std::string& path : options.parts) {
+    if (InterruptGuard::requested()) {
+      std::fprintf(stderr, "obscura: interrupted: %s is not written\n",
+                   options.render.output.c_str());
+      set_exit_status(kExitInterrupted);
+      return;
+    }
+    merger.add(read_shard(path));
+  }
+  RenderedFrame frame = merger.finish();
   if (frame.aovs)
     for (const std::string& aov : aov_paths(options.render.output, frame.aovs->has_albedo()))
       check_not_an_input(aov, options.parts);

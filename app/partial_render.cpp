@@ -13,10 +13,16 @@ const char* reason(RenderEnd end) {
 }
 
 std::string what_was_done(const RenderProgress& p) {
-  return std::to_string(p.done) + " of " + std::to_string(p.requested) + " " + p.unit;
+  return std::to_string(p.done) + " of " + std::to_string(p.requested) + " " + p.unit +
+         (p.left_out.empty() ? "" : "; left out: " + p.left_out);
 }
 
 }  // namespace
+
+void interrupt_leaving_out(RenderProgress& progress, const std::string& step) {
+  progress.end = RenderEnd::kInterrupted;
+  progress.left_out += (progress.left_out.empty() ? "" : ", ") + step;
+}
 
 ImageMetadata partial_metadata(const RenderProgress& p) {
   ImageMetadata metadata;

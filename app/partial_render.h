@@ -23,8 +23,12 @@ struct RenderProgress {
   RenderEnd end = RenderEnd::kComplete;
   long long done = 0, requested = 0;  // samples per pixel, or accumulated frames
   std::string unit;                   // "samples per pixel", "frames"
+  std::string left_out;               // what a cancel left out after the render: "glare", …
   bool partial() const { return end != RenderEnd::kComplete; }
 };
+
+// Marks the progress interrupted, `step` (the glare, the ground truth) left out by the cancel.
+void interrupt_leaving_out(RenderProgress& progress, const std::string& step);
 
 // The metadata that marks a partial image (empty for a complete one).
 ImageMetadata partial_metadata(const RenderProgress& progress);

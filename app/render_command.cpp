@@ -11,6 +11,7 @@
 #include "frame_render.h"
 #include "glare_options.h"
 #include "image_limit_option.h"
+#include "obscura/io/atomic_file.h"
 #include "obscura/io/default_environment.h"
 #include "obscura/io/image_io.h"
 #include "obscura/io/scene_loader.h"
@@ -173,12 +174,20 @@ void run_render(RenderOptions options, const std::string& job) {
       for (const std::string& w : frame.warnings) std::fprintf(stderr, "warning: %s\n", w.c_str());
       print_summary(options, scene, frame, ranks, rays, seconds);
     }
-    write_frame(options, options.output, frame);
+    // The frame and its ground truth are a pair: both replaced, or (a full disk) neither. The
+    // ground truth comes first: a cancel before it is done leaves it out, and the frame written
+    // after it says so (marked interrupted, the ground truth left out).
+    OutputTransaction outputs;
     // Rank 0 alone: the ground truth is one ray per pixel, not worth dealing out.
-    if (!options.ground_truth.path.empty())
-      std::printf("%s\n", write_ground_truth_file(options.ground_truth, frame.renderer,
-                                                  options.raster, scene)
-                              .c_str());
+    std::optional<std::string> ground_truth;
+    if (!options.ground_truth.path.empty()) {
+      ground_truth =
+          write_ground_truth_file(options.ground_truth, frame.renderer, options.raster, scene);
+      if (!ground_truth) interrupt_leaving_out(frame.progress, "ground truth");
+    }
+    write_frame(options, options.output, frame);
+    outputs.commit();
+    if (ground_truth) std::printf("%s\n", ground_truth->c_str());
   } else {
     set_exit_status(exit_status_for(frame.progress.end));
   }

@@ -1,8 +1,6 @@
 #include "sequence.h"
 
 #include <algorithm>
-#include <cctype>
-#include <charconv>
 #include <cmath>
 #include <cstdio>
 #include <cstring>
@@ -12,6 +10,7 @@
 
 #include <tbb/global_control.h>
 
+#include "frame_files.h"
 #include "frame_render.h"
 #include "obscura/color/develop.h"
 #include "obscura/io/image_io.h"
@@ -25,49 +24,6 @@
 namespace obscura::app {
 
 namespace {
-
-constexpr int kMaxFrame = 100'000'000;
-
-int parse_frame_number(const std::string& text, const std::string& range) {
-  int value = 0;
-  const char* end = text.data() + text.size();
-  auto [at, error] = std::from_chars(text.data(), end, value);
-  if (text.empty() || error != std::errc() || at != end || value < -kMaxFrame || value > kMaxFrame)
-    throw UsageError("--frames: expected FIRST:LAST[:STEP] with whole frame numbers (|n| ≤ " +
-                     std::to_string(kMaxFrame) + "); got '" + range + "'");
-  return value;
-}
-
-// Where the pattern's integer conversion is: [start, end) of "%d" / "%04d".
-std::pair<size_t, size_t> conversion_in(const std::string& pattern) {
-  std::optional<std::pair<size_t, size_t>> found;
-  for (size_t i = 0; i < pattern.size(); ++i) {
-    if (pattern[i] != '%') continue;
-    if (i + 1 < pattern.size() && pattern[i + 1] == '%') {
-      ++i;  // "%%" is a literal percent sign
-      continue;
-    }
-    size_t j = i + 1;
-    if (j < pattern.size() && pattern[j] == '0') ++j;
-    size_t digits = j;
-    while (j < pattern.size() && std::isdigit(static_cast<unsigned char>(pattern[j])) &&
-           j - digits < 2)
-      ++j;
-    if (j >= pattern.size() || pattern[j] != 'd' || found)
-      throw UsageError(
-          "--frames: the output must name each frame with one integer conversion "
-          "such as out_%04d.exr (or be a .y4m video); got '" +
-          pattern + "'");
-    found = {i, j + 1};
-    i = j;
-  }
-  if (!found)
-    throw UsageError(
-        "--frames: the output must name each frame with one integer conversion such "
-        "as out_%04d.exr (or be a .y4m video); got '" +
-        pattern + "'");
-  return *found;
-}
 
 // A developed video frame as bytes — its width and height (32 bits each), then its 8-bit codes —
 // and back: what a rank keeps and sends rank 0 for the video.
@@ -103,61 +59,8 @@ Y4mSettings video_settings(double fps) {
 
 }  // namespace
 
-std::vector<int> parse_frame_range(const std::string& text) {
-  std::vector<std::string> parts;
-  for (size_t at = 0;;) {
-    size_t colon = text.find(':', at);
-    parts.push_back(text.substr(at, colon - at));
-    if (colon == std::string::npos) break;
-    at = colon + 1;
-  }
-  if (parts.size() < 2 || parts.size() > 3)
-    throw UsageError("--frames: expected FIRST:LAST[:STEP] (e.g. 1:48 or 0:100:4); got '" + text +
-                     "'");
-  const int first = parse_frame_number(parts[0], text), last = parse_frame_number(parts[1], text);
-  const int step = parts.size() == 3 ? parse_frame_number(parts[2], text) : 1;
-  if (step < 1) throw UsageError("--frames: STEP must be at least 1; got '" + text + "'");
-  if (last < first) throw UsageError("--frames: LAST is before FIRST in '" + text + "'");
-  std::vector<int> frames;
-  for (long long n = first; n <= last; n += step) frames.push_back(int(n));
-  return frames;
-}
-
-std::string frame_path(const std::string& pattern, int frame) {
-  auto [start, end] = conversion_in(pattern);
-  char number[32];
-  std::snprintf(number, sizeof number, pattern.substr(start, end - start).c_str(), frame);
-  std::string path;
-  // "%%" elsewhere in the pattern stands for one "%".
-  for (size_t i = 0; i < pattern.size(); ++i) {
-    if (i == start) {
-      path += number;
-      i = end - 1;
-    } else {
-      path += pattern[i];
-      if (pattern[i] == '%' && i + 1 < pattern.size() && pattern[i + 1] == '%') ++i;
-    }
-  }
-  return path;
-}
-
-bool finished_frame_exists(const std::string& path, int width, int height) {
-  std::error_code error;
-  if (!std::filesystem::is_regular_file(path, error) ||
-      std::filesystem::file_size(path, error) == 0)
-    return false;
-  try {
-    CheckedImageInput in = CheckedImageInput::open_file(path);
-    const ImageHeader& header = in.header();
-    return header.width == width && header.height == height &&
-           !header.has_attribute("obscura:partial");
-  } catch (const Error&) {
-    return false;  // unreadable: rendered again
-  }
-}
-
 void run_sequence(RenderOptions options, Team& team) {
-  const std::vector<int> frames = parse_frame_range(options.frames);
+  const FrameRange frames = parse_frame_range(options.frames);
   if (options.choice.time_s)
     throw UsageError("--time and --frames: each frame's time is frame / fps; give one of them");
   if (!options.shard.empty())
@@ -167,8 +70,8 @@ void run_sequence(RenderOptions options, Team& team) {
   if (!(options.fps > 0 && options.fps <= 1e6))
     throw UsageError("--fps must be in (0, 1e6] frames per second");
   const bool video = image_format_for_path(options.output) == ImageFormat::kY4m;
-  if (!video) frame_path(options.output, frames.front());  // checks the pattern
-  if (video && team.leads()) check_output_path(options.output);
+  if (!video) frame_path(options.output, frames.first);  // checks the pattern
+  if (video && team.leads()) check_output_path(options.output, "--output");
 
   std::optional<tbb::global_control> thread_limit;
   if (options.threads > 0)
@@ -195,9 +98,14 @@ void run_sequence(RenderOptions options, Team& team) {
   team.open_counter();
   for (;;) {
     const int64_t ticket = team.take_ticket();
-    if (ticket >= int64_t(frames.size()) || worst == RenderEnd::kInterrupted) break;
+    if (ticket >= frames.size() || worst == RenderEnd::kInterrupted) break;
+    // A cancel between frames (or during a frame's writing) renders no further frame.
+    if (InterruptGuard::requested()) {
+      worst = RenderEnd::kInterrupted;
+      break;
+    }
     mine.push_back(ticket);
-    const int n = frames[size_t(ticket)];
+    const int n = frames[ticket];
     RenderOptions frame_options = options;
     frame_options.choice.time_s = n / options.fps;
     if (!video) frame_options.output = frame_path(options.output, n);
@@ -247,12 +155,15 @@ void run_sequence(RenderOptions options, Team& team) {
                      rank_prefix().c_str(), n, frame_options.output.c_str());
         continue;
       }
-      write_frame(frame_options, frame_options.output, frame);
+      worst = std::max(worst, write_frame(frame_options, frame_options.output, frame));
       continue;
     }
     DisplaySettings display = image_write_options(options.display).display;
     display.bits = 8;
-    DisplayImage developed = develop(pixels_of(frame.finished()), display);
+    bool unfinished = false;  // a cancel during the glare: the video is not written
+    DisplayImage developed =
+        develop(pixels_of(frame.finished(&InterruptGuard::requested(), &unfinished)), display);
+    if (unfinished) worst = RenderEnd::kInterrupted;
     if (team.alone()) {
       if (!video_writer)
         video_writer = std::make_unique<Y4mWriter>(options.output, developed.width,
@@ -274,7 +185,7 @@ void run_sequence(RenderOptions options, Team& team) {
   if (video && !team.alone() && end != RenderEnd::kInterrupted) {
     // Rank 0 writes the frames in order, each from the rank that rendered it; every other rank
     // sends its frames in the order it took them, which is frame order.
-    const std::vector<int> owners = team.ticket_owners(mine, int64_t(frames.size()));
+    const std::vector<int> owners = team.ticket_owners(mine, frames.size());
     if (team.leads()) {
       size_t next_own = 0;
       for (int owner : owners) {
@@ -308,8 +219,8 @@ void run_sequence(RenderOptions options, Team& team) {
     else if (shared_session)
       compiled = "; the scene read once, compiled " +
                  std::to_string(shared_session->compilations()) + " time(s)";
-    std::fprintf(stderr, "sequence: %zu frames, %d rendered here, %d already there%s%s\n",
-                 frames.size(), rendered, skipped, compiled.c_str(),
+    std::fprintf(stderr, "sequence: %lld frames, %d rendered here, %d already there%s%s\n",
+                 static_cast<long long>(frames.size()), rendered, skipped, compiled.c_str(),
                  end == RenderEnd::kInterrupted ? " [interrupted]" : "");
   }
   set_exit_status(exit_status_for(end));

@@ -4,8 +4,9 @@
 // out_0012.exr), or all frames into one .y4m video.
 //
 // Numbered files can be resumed: a frame whose file is already there, readable, of the frame's
-// size and not marked partial is skipped (files are only ever renamed into place when complete,
-// so a crash leaves none half-written). A video is written whole or not at all.
+// size, not marked partial and whose every pixel reads back is skipped (files are only ever renamed
+// into place when complete, so a crash leaves none half-written). A video is written whole or not
+// at all.
 //
 // Under mpirun, frames are handed out one at a time to whichever rank is free (a counter on rank
 // 0 that every rank increments atomically), and each rank renders its frames alone. Numbered
@@ -14,22 +15,12 @@
 #pragma once
 
 #include <string>
-#include <vector>
 
+#include "frame_files.h"
 #include "render_options.h"
 #include "team.h"
 
 namespace obscura::app {
-
-// The frame numbers of "A:B[:STEP]": A, A + STEP, … up to B inclusive. Throws UsageError.
-std::vector<int> parse_frame_range(const std::string& text);
-
-// The output path of frame n: the pattern's one printf integer conversion (%d, %04d) filled in.
-// Throws UsageError for a pattern without exactly one such conversion.
-std::string frame_path(const std::string& pattern, int frame);
-
-// Whether `path` holds a finished frame: a readable image of width × height not marked partial.
-bool finished_frame_exists(const std::string& path, int width, int height);
 
 // Renders the sequence the options ask for (options.frames non-empty).
 void run_sequence(RenderOptions options, Team& team);

@@ -266,68 +266,79 @@ ShardFile read_shard(const std::string& path) {
   return shard;
 }
 
-RenderedFrame merge_shards(const std::vector<ShardFile>& shards) {
-  if (shards.empty()) throw Error("merge", "no parts given");
-  const ShardFile& first = shards.front();
-  const int parts = first.spec.parts;
-  std::map<int, const ShardFile*> by_part;
-  for (const ShardFile& s : shards) {
-    auto differs = [&](const std::string& what) {
-      return Error(s.path, "part " + std::to_string(s.spec.part) + " " + what + " than " +
-                               first.path + " (part " + std::to_string(first.spec.part) + ")");
-    };
-    if (s.spec.parts != parts)
-      throw differs("is one of " + std::to_string(s.spec.parts) + " parts, not " +
-                    std::to_string(parts) + ":");
-    if (s.job != first.job)
-      throw differs("was rendered with other settings (scene, size, samples, seed, options)");
-    if (s.frame.renderer != first.frame.renderer) throw differs("has another renderer");
-    if (s.frame.film_sums.width != first.frame.film_sums.width ||
-        s.frame.film_sums.height != first.frame.film_sums.height)
-      throw differs("has another size");
-    if (aov_layout(aov_images(s.frame)) != aov_layout(aov_images(first.frame)))
-      throw differs("has other auxiliary images");
-    if (aov_layout(s.frame.layers) != aov_layout(first.frame.layers) ||
-        frame_finish_text(s.frame.finish) != frame_finish_text(first.frame.finish))
-      throw differs("is finished otherwise (depth of field, flare, glare)");
-    if (!by_part.emplace(s.spec.part, &s).second)
-      throw Error(s.path, "part " + std::to_string(s.spec.part) + " is given twice (also " +
-                              by_part[s.spec.part]->path + ")");
+void ShardMerger::add(ShardFile s) {
+  if (!whole_) {
+    paths_.emplace(s.spec.part, s.path);
+    whole_ = std::move(s);
+    return;
   }
+  const ShardFile& first = *whole_;
+  const int parts = first.spec.parts;
+  auto differs = [&](const std::string& what) {
+    return Error(s.path, "part " + std::to_string(s.spec.part) + " " + what + " than " +
+                             first.path + " (part " + std::to_string(first.spec.part) + ")");
+  };
+  if (s.spec.parts != parts)
+    throw differs("is one of " + std::to_string(s.spec.parts) + " parts, not " +
+                  std::to_string(parts) + ":");
+  if (s.job != first.job)
+    throw differs("was rendered with other settings (scene, size, samples, seed, options)");
+  if (s.frame.renderer != first.frame.renderer) throw differs("has another renderer");
+  if (s.frame.film_sums.width != first.frame.film_sums.width ||
+      s.frame.film_sums.height != first.frame.film_sums.height)
+    throw differs("has another size");
+  if (aov_layout(aov_images(s.frame)) != aov_layout(aov_images(first.frame)))
+    throw differs("has other auxiliary images");
+  if (aov_layout(s.frame.layers) != aov_layout(first.frame.layers) ||
+      frame_finish_text(s.frame.finish) != frame_finish_text(first.frame.finish))
+    throw differs("is finished otherwise (depth of field, flare, glare)");
+  if (!paths_.emplace(s.spec.part, s.path).second)
+    throw Error(s.path, "part " + std::to_string(s.spec.part) + " is given twice (also " +
+                            paths_[s.spec.part] + ")");
+
+  RenderedFrame& whole = whole_->frame;
+  const int part = s.spec.part;
+  const TileDeal deal =
+      tile_deal(whole.renderer, whole.film_sums.width, whole.film_sums.height, parts);
+  auto take = [&](const Image& from, Image& into) {
+    unpack_owned_pixels(deal, part, pack_owned_pixels(deal, part, from), into);
+  };
+  take(s.frame.film_sums, whole.film_sums);
+  if (whole.aovs) {
+    std::vector<AovImage> whole_aovs = aov_images(whole);
+    const std::vector<AovImage> aovs = aov_images(s.frame);
+    for (size_t a = 0; a < whole_aovs.size(); ++a) take(aovs[a].image, whole_aovs[a].image);
+    whole.aovs = AovBuffers::from_images(whole_aovs);
+  }
+  for (size_t l = 0; l < whole.layers.size(); ++l)
+    take(s.frame.layers[l].image, whole.layers[l].image);
+  // The least done and the most severe ending of any part.
+  const RenderProgress& p = s.frame.progress;
+  if (p.done != whole.progress.done && whole.progress.end == RenderEnd::kComplete)
+    whole.progress.end = RenderEnd::kTimeLimit;
+  whole.progress.done = std::min(whole.progress.done, p.done);
+  whole.progress.end = std::max(whole.progress.end, p.end);
+}
+
+RenderedFrame ShardMerger::finish() {
+  if (!whole_) throw Error("merge", "no parts given");
+  const int parts = whole_->spec.parts;
   std::string missing;
   for (int p = 0; p < parts; ++p)
-    if (!by_part.count(p)) missing += (missing.empty() ? "" : ", ") + std::to_string(p);
+    if (!paths_.count(p)) missing += (missing.empty() ? "" : ", ") + std::to_string(p);
   if (!missing.empty())
     throw Error("merge", "parts of " + std::to_string(parts) + " missing: " + missing +
                              " (every part 0 … " + std::to_string(parts - 1) + " is needed once)");
-
-  RenderedFrame whole = first.frame;
-  std::vector<AovImage> whole_aovs = aov_images(whole);
-  const TileDeal deal =
-      tile_deal(whole.renderer, whole.film_sums.width, whole.film_sums.height, parts);
-  for (const auto& entry : by_part) {
-    // (Not a structured binding: the lambda below captures the part, which C++20 allows but
-    // Clang 14 does not.)
-    const int part = entry.first;
-    const ShardFile* shard = entry.second;
-    if (part == first.spec.part) continue;
-    auto take = [&](const Image& from, Image& into) {
-      unpack_owned_pixels(deal, part, pack_owned_pixels(deal, part, from), into);
-    };
-    take(shard->frame.film_sums, whole.film_sums);
-    const std::vector<AovImage> aovs = aov_images(shard->frame);
-    for (size_t a = 0; a < whole_aovs.size(); ++a) take(aovs[a].image, whole_aovs[a].image);
-    for (size_t l = 0; l < whole.layers.size(); ++l)
-      take(shard->frame.layers[l].image, whole.layers[l].image);
-    // The least done and the most severe ending of any part.
-    const RenderProgress& p = shard->frame.progress;
-    whole.progress.done = std::min(whole.progress.done, p.done);
-    whole.progress.end = std::max(whole.progress.end, p.end);
-    if (p.done != first.frame.progress.done && whole.progress.end == RenderEnd::kComplete)
-      whole.progress.end = RenderEnd::kTimeLimit;
-  }
-  if (whole.aovs) whole.aovs = AovBuffers::from_images(whole_aovs);
+  RenderedFrame whole = std::move(whole_->frame);
+  whole_.reset();
+  paths_.clear();
   return whole;
+}
+
+RenderedFrame merge_shards(const std::vector<ShardFile>& shards) {
+  ShardMerger merger;
+  for (const ShardFile& s : shards) merger.add(s);
+  return merger.finish();
 }
 
 }  // namespace obscura::app

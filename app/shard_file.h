@@ -9,6 +9,8 @@
 // bit for bit.
 #pragma once
 
+#include <map>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -38,8 +40,23 @@ struct ShardFile {
 ShardFile read_shard(const std::string& path);
 
 // The whole frame from all N parts, each once, of the same render (same settings key, size,
-// renderer, channels). Throws obscura::Error naming what is missing or does not match. Parts that
-// stopped at different sample counts (a time limit) give a frame marked partial.
+// renderer, channels), assembled one part at a time: it holds the frame and the part being added,
+// never every part (merge reads a part, adds it and lets it go). Throws obscura::Error naming
+// what is missing or does not match. Parts that stopped at different sample counts (a time
+// limit) give a frame marked partial.
+class ShardMerger {
+ public:
+  // Checks the part against the first one added and copies its pixels into the frame.
+  void add(ShardFile part);
+  // The whole frame, once every part 0 … N−1 has been added.
+  RenderedFrame finish();
+
+ private:
+  std::optional<ShardFile> whole_;  // the first part, the others' pixels added to it
+  std::map<int, std::string> paths_;
+};
+
+// All the parts at once, through a ShardMerger.
 RenderedFrame merge_shards(const std::vector<ShardFile>& shards);
 
 }  // namespace obscura::app

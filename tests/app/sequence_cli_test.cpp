@@ -180,6 +180,46 @@ TEST_F(SequenceCli, ARunAgainRendersOnlyTheFramesThatAreNotFinished) {
   ASSERT_EQ(test::image_attribute(path(frame_name("f", 3)), "obscura:partial"), "interrupted");
   std::ofstream(path(frame_name("f", 1)), std::ios::binary | std::ios::trunc) << "garbage";
   expect_rendered_again({1, 3});
+
+  // Frames cut short after their header (a copy or a disk that filled outside Obscura): the
+  // header alone reads fine, the pixels do not.
+  for (int n : {0, 5}) {
+    const std::string frame = path(frame_name("f", n));
+    fs::resize_file(frame, fs::file_size(frame) / 2);
+  }
+  expect_rendered_again({0, 5});
+}
+
+// A pattern wider than any fixed buffer names every frame apart, and a run again finds them all.
+TEST_F(SequenceCli, FramePatternsOfAnyWidth) {
+  const std::string arguments =
+      "render --width 8 --height 6 --spp 1 --frames 0:2 -o " + path("w_%040d.exr");
+  auto first = test::run_cli(arguments);
+  ASSERT_EQ(first.exit_code, 0) << first.output;
+  for (int n : {0, 1, 2})
+    EXPECT_TRUE(fs::exists(path("w_" + std::string(39, '0') + std::to_string(n) + ".exr")));
+  EXPECT_EQ(files_in(dir_).size(), 3u);
+  fs::remove(path("w_" + std::string(39, '0') + "2.exr"));
+  auto again = test::run_cli(arguments);
+  ASSERT_EQ(again.exit_code, 0) << again.output;
+  EXPECT_NE(again.output.find("sequence: 3 frames, 1 rendered here, 2 already there"),
+            std::string::npos)
+      << again.output;
+}
+
+// 200 M frame numbers are counted, not listed (a list would be 800 MB to 1.5 GB while it grows):
+// under a 1.2 GB address space the first frames are written at once, and SIGTERM stops the run.
+TEST_F(SequenceCli, AHugeFrameRangeStartsAtOnceInBoundedMemory) {
+  const std::string command = test::address_space_limit(1'200'000) +
+                              test::cli_command_line(
+                                  "render --width 8 --height 6 --spp 1 --frames "
+                                  "-100000000:100000000 -o " +
+                                  path("h_%d.exr")) +
+                              " & sleep 3; kill -TERM $!; wait $!";
+  auto result = test::run_shell(command);
+  EXPECT_EQ(result.exit_code, 130) << result.output;
+  EXPECT_TRUE(fs::exists(path("h_-100000000.exr"))) << result.output;
+  EXPECT_NE(result.output.find("sequence: 200000001 frames"), std::string::npos) << result.output;
 }
 
 TEST_F(SequenceCli, OptionsThatDoNotMakeASequenceAreRefused) {

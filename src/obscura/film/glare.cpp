@@ -3,8 +3,10 @@
 #include <tbb/blocked_range.h>
 #include <tbb/parallel_for.h>
 
+#include <algorithm>
 #include <cmath>
 #include <string>
+#include <utility>
 
 #include "obscura/film/fourier_plane.h"
 #include "obscura/math/error.h"
@@ -62,7 +64,12 @@ Image scale_scattered_light(const Image& psf, double strength) {
   return scaled;
 }
 
-void convolve_with_psf(Image& image, const Image& psf) {
+int glare_radius_px(const GlareSettings& settings, int width, int height) {
+  return std::max(1, std::min(settings.radius_px, std::max(width, height)));
+}
+
+bool convolve_with_psf(Image& image, const Image& psf, const std::atomic<bool>* cancel) {
+  auto cancelled = [cancel] { return cancel && cancel->load(); };
   check_psf(psf);
   if (image.channels < 3 || image.width < 1 || image.height < 1)
     throw Error("glare", "needs an RGB image; got " + std::to_string(image.channels) + " channels");
@@ -73,7 +80,10 @@ void convolve_with_psf(Image& image, const Image& psf) {
   const int height = fft_friendly_size(std::max(image.height + r, 2 * r + 1));
   FourierPlane light(width, height), kernel(width, height);
   const double normalisation = 1.0 / (double(width) * height);  // the inverse is unnormalised
+  // Written to a copy, so that a cancel between channels leaves the image whole.
+  Image result = image;
   for (int c = 0; c < 3; ++c) {
+    if (cancelled()) return false;
     if (c == 0 || psf.channels == 3) {
       place_kernel(kernel, psf, psf.channels == 3 ? c : 0);
       kernel.forward();
@@ -91,9 +101,12 @@ void convolve_with_psf(Image& image, const Image& psf) {
                       [&](const tbb::blocked_range<int>& rows) {
                         for (int y = rows.begin(); y < rows.end(); ++y)
                           for (int x = 0; x < image.width; ++x)
-                            image.at(x, y, c) = float(light.row(y)[x]);
+                            result.at(x, y, c) = float(light.row(y)[x]);
                       });
   }
+  if (cancelled()) return false;
+  image = std::move(result);
+  return true;
 }
 
 }  // namespace obscura

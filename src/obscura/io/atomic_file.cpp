@@ -11,6 +11,7 @@
 #include <utility>
 
 #include "obscura/math/error.h"
+#include "obscura/math/request_error.h"
 
 namespace obscura {
 
@@ -32,9 +33,59 @@ std::string system_reason(int error) {
   return std::strerror(error);
 }
 
+const char* file_kind(mode_t mode) {
+  if (S_ISCHR(mode)) return "a character device";
+  if (S_ISBLK(mode)) return "a block device";
+  if (S_ISFIFO(mode)) return "a FIFO (named pipe)";
+  if (S_ISSOCK(mode)) return "a socket";
+  if (S_ISDIR(mode)) return "a directory";
+  return "not a regular file";
+}
+
+thread_local OutputTransaction* current_transaction = nullptr;
+
 }  // namespace
 
+OutputTransaction::OutputTransaction() : outer_(current_transaction) {
+  current_transaction = this;
+}
+
+OutputTransaction::~OutputTransaction() {
+  current_transaction = outer_;
+  for (const Finished& file : finished_) ::unlink(file.temporary.c_str());
+}
+
+void OutputTransaction::commit() {
+  current_transaction = outer_;
+  std::vector<Finished> files = std::exchange(finished_, {});
+  for (size_t i = 0; i < files.size(); ++i) {
+    const Finished& file = files[i];
+    try {
+      check_replaceable_output(file.target);
+      if (::rename(file.temporary.c_str(), file.target.c_str()) != 0)
+        throw Error(file.target,
+                    "cannot move the finished file into place: " + system_reason(errno));
+    } catch (const Error&) {
+      for (size_t j = i; j < files.size(); ++j) ::unlink(files[j].temporary.c_str());
+      throw;
+    }
+  }
+}
+
+void check_replaceable_output(const std::string& target) {
+  struct stat named;
+  if (::stat(target.c_str(), &named) != 0 || S_ISREG(named.st_mode)) return;
+  struct stat link;
+  bool through_link = ::lstat(target.c_str(), &link) == 0 && S_ISLNK(link.st_mode);
+  throw RequestError(target,
+                     std::string(through_link ? "names (through a symbolic link) " : "is ") +
+                         file_kind(named.st_mode) +
+                         "; outputs only replace regular files or create new ones: "
+                         "choose a file name");
+}
+
 AtomicFile::AtomicFile(std::string target) : target_(std::move(target)) {
+  check_replaceable_output(target_);
   temporary_ = temporary_path_for(target_);
   fd_ = ::open(temporary_.c_str(), O_WRONLY | O_CREAT | O_EXCL | O_CLOEXEC, 0666);
   if (fd_ < 0) throw Error(target_, "cannot open for writing: " + system_reason(errno));
@@ -86,6 +137,19 @@ void AtomicFile::commit() {
     fail("cannot keep the replaced file's permissions: " + system_reason(errno));
   int fd = std::exchange(fd_, -1);
   if (::close(fd) != 0) fail("write failed: " + system_reason(errno));
+  // Checked again at the last moment: the path may have become a device or FIFO while writing.
+  try {
+    check_replaceable_output(target_);
+  } catch (const Error&) {
+    discard();
+    committed_ = true;
+    throw;
+  }
+  if (current_transaction != nullptr) {
+    current_transaction->finished_.push_back({temporary_, target_});
+    committed_ = true;  // the transaction removes or renames it now
+    return;
+  }
   if (::rename(temporary_.c_str(), target_.c_str()) != 0)
     fail("cannot move the finished file into place: " + system_reason(errno));
   committed_ = true;

@@ -3,12 +3,15 @@
 // checked (a full disk, a quota or a file-size limit is an error, never a truncated file), and
 // only then is the temporary renamed over the target. On any failure the temporary file is
 // removed and an existing target is left untouched. A replaced target's permission bits are
-// kept.
+// kept. Only a regular file is ever replaced: a path that names a device, a FIFO, a socket or
+// a directory (directly or through a symbolic link) is refused, so that `-o /dev/stdout` or a
+// FIFO is never turned into a regular file.
 #pragma once
 
 #include <cstdint>
 #include <span>
 #include <string>
+#include <vector>
 
 namespace obscura {
 
@@ -41,6 +44,35 @@ class AtomicFile {
   int fd_ = -1;
   bool committed_ = false;
 };
+
+// Several outputs committed together (a frame and its ground truth): while a transaction lives,
+// AtomicFile::commit() on its thread finishes the file (written, flushed, closed) but leaves the
+// rename to the transaction's commit(), which moves every finished file into place. A
+// transaction destroyed uncommitted (an exception, a cancel) removes them all, so either every
+// output is replaced or none is.
+class OutputTransaction {
+ public:
+  OutputTransaction();
+  ~OutputTransaction();
+  OutputTransaction(const OutputTransaction&) = delete;
+  OutputTransaction& operator=(const OutputTransaction&) = delete;
+
+  // Renames every finished file over its target, in the order they were finished. Throws
+  // obscura::Error naming the target that could not be moved; the ones not yet moved are removed.
+  void commit();
+
+ private:
+  friend class AtomicFile;
+  struct Finished {
+    std::string temporary, target;
+  };
+  std::vector<Finished> finished_;
+  OutputTransaction* outer_;
+};
+
+// Throws obscura::RequestError naming `target` and what it is when it exists and is not a
+// regular file (a symbolic link is followed): outputs replace regular files or create new ones.
+void check_replaceable_output(const std::string& target);
 
 // Writes `bytes` as the whole content of `path` through an AtomicFile.
 void write_file_atomically(const std::string& path, std::span<const uint8_t> bytes);

@@ -9,8 +9,8 @@
 #include "obscura/camera/builtin_lenses.h"
 #include "obscura/camera/frames.h"
 #include "obscura/camera/lens_coating.h"
-#include "obscura/camera/lens_prescription_file.h"
 #include "obscura/io/calibrated_camera_json.h"
+#include "obscura/io/lens_file.h"
 #include "obscura/math/error.h"
 
 namespace obscura {
@@ -88,7 +88,7 @@ LensSystemProjection lens_system_from_json(JsonReader& json) {
     } else {
       std::filesystem::path file(json.string("lens_file"));
       if (file.is_relative()) file = std::filesystem::path(json.file()).parent_path() / file;
-      p.lens = std::make_shared<const LensSystem>(load_lens_prescription(file.string()));
+      p.lens = std::make_shared<const LensSystem>(load_checked_lens_prescription(file.string()));
     }
   } catch (const Error& e) {
     json.fail(json.has("lens") ? "lens" : "lens_file", e.what());

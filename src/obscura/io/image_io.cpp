@@ -17,6 +17,7 @@
 #include "obscura/io/image_reader.h"
 #include "obscura/io/y4m_writer.h"
 #include "obscura/math/error.h"
+#include "obscura/math/request_error.h"
 
 namespace obscura {
 
@@ -177,13 +178,19 @@ void check_not_an_input(const std::string& output, const std::vector<std::string
                               "'; refusing to overwrite an input, choose another output path");
 }
 
-void check_output_path(const std::string& path) {
+void check_output_path(const std::string& path, const std::string& option) {
   if (path.empty()) throw Error("output path is empty");
   fs::path target(path);
   std::error_code ec;
   if (fs::is_directory(target, ec))
     throw Error(path, "output path is a directory; expected a file name such as " +
                           (target / "render.png").string());
+  try {
+    check_replaceable_output(path);
+  } catch (const RequestError& e) {
+    if (option.empty()) throw;
+    throw RequestError(option + " " + e.what());
+  }
   ImageFormat format = image_format_for_path(path);
   fs::path parent = target.parent_path().empty() ? fs::path(".") : target.parent_path();
   if (!fs::is_directory(parent, ec))

@@ -33,8 +33,10 @@ ImageFormat image_format_for_path(const std::string& path);
 bool is_display_format(ImageFormat f);
 
 // Checks before any work is done that `path` can be written: a supported extension, not a
-// directory, and a parent directory that exists and is writable. Throws obscura::Error.
-void check_output_path(const std::string& path);
+// directory, a regular file or a new name (never a device, FIFO or socket: obscura::RequestError,
+// its message led by `option` when one is given, e.g. "--output"), and a parent directory that
+// exists and is writable. Throws obscura::Error.
+void check_output_path(const std::string& path, const std::string& option = {});
 
 // Text recorded in the file, where its format has room for it: EXR and PNG keep the description
 // and every attribute; TIFF and JPEG the description only; Y4M the attributes, as X tags of its

@@ -50,7 +50,9 @@ Image glare_psf(const Camera& camera, const GlareSettings& settings) {
 }
 
 void apply_glare(Image& image, const Camera& camera, const GlareSettings& settings) {
-  convolve_with_psf(image, glare_psf(camera, settings));
+  GlareSettings bounded = settings;
+  bounded.radius_px = glare_radius_px(settings, image.width, image.height);
+  convolve_with_psf(image, glare_psf(camera, bounded));
 }
 
 }  // namespace obscura

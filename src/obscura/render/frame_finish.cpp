@@ -134,7 +134,7 @@ FrameFinish parse_frame_finish(std::string_view text, const std::string& where) 
 }
 
 Image finish_frame(const Image& film_sums, const std::vector<AovImage>& layers,
-                   const FrameFinish& finish) {
+                   const FrameFinish& finish, const std::atomic<bool>* cancel, bool* unfinished) {
   Image image = Film::from_sums(film_sums).to_image();
   if (const auto& dof = finish.depth_of_field) {
     const Image& inputs = layer(layers, kDepthOfFieldLayer, 2, image);
@@ -155,8 +155,14 @@ Image finish_frame(const Image& film_sums, const std::vector<AovImage>& layers,
                                    .pixel_width_mm = glare->pixel_width_mm,
                                    .pixel_height_mm = glare->pixel_height_mm};
     validate(glare->settings);
-    convolve_with_psf(image, scale_scattered_light(rgb_psf(optics, glare->settings.radius_px),
-                                                   glare->settings.strength));
+    const int radius = glare_radius_px(glare->settings, image.width, image.height);
+    const bool cancelled = cancel && cancel->load();
+    if (cancelled ||
+        !convolve_with_psf(image,
+                           scale_scattered_light(rgb_psf(optics, radius), glare->settings.strength),
+                           cancel)) {
+      if (unfinished) *unfinished = true;
+    }
   }
   return image;
 }

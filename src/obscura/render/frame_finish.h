@@ -12,6 +12,7 @@
 // sequences and Python all finish here, so they give the same frame bit for bit.
 #pragma once
 
+#include <atomic>
 #include <optional>
 #include <string>
 #include <string_view>
@@ -61,8 +62,11 @@ std::string frame_finish_text(const FrameFinish& finish);
 FrameFinish parse_frame_finish(std::string_view text, const std::string& where);
 
 // The finished frame (linear RGB) from the whole frame's film sums (Film::sums) and layers.
-// Throws obscura::Error when a step's layer is missing or misshaped.
+// Throws obscura::Error when a step's layer is missing or misshaped. `cancel`, set from another
+// thread (a signal handler) before the glare is done, leaves the glare out (the image holds the
+// steps before it) and sets `*unfinished`.
 Image finish_frame(const Image& film_sums, const std::vector<AovImage>& layers,
-                   const FrameFinish& finish);
+                   const FrameFinish& finish, const std::atomic<bool>* cancel = nullptr,
+                   bool* unfinished = nullptr);
 
 }  // namespace obscura

@@ -392,19 +392,43 @@ Image lens_flare_image(const std::vector<FlareSource>& sources, const Camera& ca
   const Bounds2i crop = camera.film.crop_pixels();
   Image image(crop.width(), crop.height(), 3);
   image.channel_names = {"R", "G", "B"};
+  // Cost first: the ghosts and their paths grow with the square of the lens's surfaces.
+  const size_t surfaces = optics.lens->prescription().surfaces.size();
+  if (surfaces > size_t(kMaxFlareLensSurfaces))
+    throw Error("flare", "the lens has " + std::to_string(surfaces) + " surfaces (up to " +
+                             std::to_string(surfaces * (surfaces - 1) / 2) +
+                             " ghosts); ghost flares are traced for lenses of at most " +
+                             std::to_string(kMaxFlareLensSurfaces) + " surfaces");
   const std::vector<Ghost> ghosts = lens_ghosts(*optics.lens);
+  const long long work = (long long)ghosts.size() * (long long)sources.size() * (long long)surfaces;
+  if (work > kMaxFlareWork)
+    throw Error("flare", std::to_string(ghosts.size()) + " ghosts × " +
+                             std::to_string(sources.size()) + " bright lights × " +
+                             std::to_string(surfaces) + " lens surfaces = " + std::to_string(work) +
+                             " ghost-surface traces; at most " + std::to_string(kMaxFlareWork) +
+                             " are traced (fewer lights, or a simpler lens)");
   std::vector<std::vector<SurfaceVisit>> paths;
   for (const Ghost& g : ghosts) paths.push_back(ghost_path(*optics.lens, g));
   FlareStats local;
+  auto cancelled = [&] { return settings.cancel && settings.cancel->load(); };
   for (const FlareSource& source : sources) {
+    if (cancelled()) {
+      local.cancelled = true;
+      break;
+    }
     std::optional<LensSource> s = to_lens_space(source, optics);
     if (!s) continue;
-    ++local.sources;
-    // Every ghost traced in parallel, then splatted row band by row band in ghost order.
+    // Every ghost traced in parallel, then splatted row band by row band in ghost order. A
+    // cancel skips the ghosts not yet started and the source is left out whole.
     std::vector<PathImage> images(paths.size());
     tbb::parallel_for(size_t(0), paths.size(), [&](size_t g) {
-      images[g] = trace_path(*s, optics, paths[g], settings, /*skip_faint=*/true);
+      if (!cancelled()) images[g] = trace_path(*s, optics, paths[g], settings, /*skip_faint=*/true);
     });
+    if (cancelled()) {
+      local.cancelled = true;
+      break;
+    }
+    ++local.sources;
     for (const PathImage& p : images) {
       local.rays += p.rays;
       ++(p.grids.empty() ? local.ghosts_skipped : local.ghosts_traced);

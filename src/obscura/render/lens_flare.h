@@ -26,6 +26,7 @@
 // thread count.
 #pragma once
 
+#include <atomic>
 #include <string>
 #include <vector>
 
@@ -44,7 +45,18 @@ struct FlareSettings {
   // this is skipped: 1e-5 is about a thirtieth of the first step of 8-bit sRGB (≈ 3e-4 linear),
   // invisible even three stops brighter.
   double min_film_value = 1e-5;
+  // Set from another thread (a signal handler) to stop: the sources not yet traced are left out
+  // and FlareStats::cancelled says so.
+  const std::atomic<bool>* cancel = nullptr;
 };
+
+// The flare's cost bounds, checked before any ghost is traced (obscura::Error naming the lens's
+// surfaces, the ghosts and the sources): a lens of N surfaces has up to N(N−1)/2 ghosts, each
+// traced once per source along a path of about N surfaces, so the work is ghosts × sources × N.
+// The double Gauss (11 surfaces, 45 ghosts) with 100 lights is about 50,000 and takes half a
+// minute on two cores; the bound allows ten times that (1,000 such lights).
+inline constexpr int kMaxFlareLensSurfaces = 64;  // ≤ 2,016 ghosts
+inline constexpr long long kMaxFlareWork = 500'000;
 // Throws obscura::Error naming the field when out of range.
 void validate(const FlareSettings& settings);
 
@@ -68,6 +80,7 @@ struct FlareStats {
   int ghosts_skipped = 0;  // below min_film_value, or no ray reached the sensor
   double rays = 0;
   double seconds = 0;
+  bool cancelled = false;  // stopped by FlareSettings::cancel before every source was traced
 };
 
 // The flare image (the camera's crop size, linear RGB in the film's units) of the sources

@@ -5,7 +5,7 @@
 #include <vector>
 
 #include "obscura/camera/builtin_lenses.h"
-#include "obscura/camera/lens_prescription_file.h"
+#include "obscura/io/lens_file.h"
 #include "obscura/math/error.h"
 #include "obscura/math/number_list.h"
 #include "obscura/math/request_error.h"
@@ -28,7 +28,7 @@ bool apply_lens_system_overrides(Camera& camera, const CameraRequest& o) {
         throw RequestError(std::string("--lens: ") + e.what());
       }
     } else {
-      p.lens = std::make_shared<const LensSystem>(load_lens_prescription(*o.lens_file));
+      p.lens = std::make_shared<const LensSystem>(load_checked_lens_prescription(*o.lens_file));
     }
     camera.projection = p;
     camera.lens.depth_of_field = false;  // the lens system's own, not the thin lens's

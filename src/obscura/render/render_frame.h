@@ -36,7 +36,10 @@ struct RenderedFrame {
   FlareStats flare_stats;
 
   // The finished frame, linear RGB (finish_frame): only on the whole frame, not a part.
-  Image finished() const { return finish_frame(film_sums, layers, finish); }
+  // With `cancel`, a glare not done when it is set is left out and `*unfinished` set.
+  Image finished(const std::atomic<bool>* cancel = nullptr, bool* unfinished = nullptr) const {
+    return finish_frame(film_sums, layers, finish, cancel, unfinished);
+  }
 };
 
 // Renders the frame and prepares its finishing: the post-process depth of field's layer, the

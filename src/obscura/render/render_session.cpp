@@ -65,8 +65,12 @@ RenderedFrame RenderSession::render(const Camera& camera, const FrameSettings& s
   // glare or flare fails here, not after the render.
   if (settings.glare) frame.finish.glare = glare_finish(camera, *settings.glare);
   if (settings.flare) {
-    frame.layers.push_back({std::string(kFlareLayer),
-                            lens_flare_image(scene_, camera, *settings.flare, &frame.flare_stats)});
+    // A cancel during the flare leaves out the sources not yet traced; the render below then
+    // stops at once on the same flag, and the frame is marked interrupted.
+    FlareSettings flare = *settings.flare;
+    if (!flare.cancel) flare.cancel = settings.cancel;
+    frame.layers.push_back(
+        {std::string(kFlareLayer), lens_flare_image(scene_, camera, flare, &frame.flare_stats)});
     frame.layers.back().image.channel_names = {"R", "G", "B"};
     frame.finish.flare = true;
   }
