@@ -78,7 +78,7 @@ TEST_F(BoundedCostCli, LensFilesAreCheckedLikeEveryInput) {
                                 test::cli_command_line("render -q --width 16 --height 12 --spp 1 "
                                                        "--lens-file " +
                                                        path("lens.txt") + " -o " + path("a.exr")));
-  EXPECT_EQ(result.exit_code, 1) << result.output;
+  EXPECT_EQ(result.exit_code, 2) << result.output;  // the option's file: a usage error
   EXPECT_NE(result.output.find(path("lens.txt") + ": is not a regular file"), std::string::npos)
       << result.output;
   EXPECT_TRUE(fs::is_fifo(path("lens.txt")));
