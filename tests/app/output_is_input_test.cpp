@@ -7,6 +7,7 @@
 #include <fstream>
 #include <string>
 
+#include "io/mesh_test_files.h"
 #include "obscura/io/image_io.h"
 #include "obscura/io/scene_loader.h"
 #include "run_command.h"
@@ -16,11 +17,6 @@ namespace obscura {
 namespace {
 
 namespace fs = std::filesystem;
-
-std::string contents(const std::string& path) {
-  std::ifstream in(path, std::ios::binary);
-  return std::string((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
-}
 
 class OutputIsInput : public test::TempDirTest {
  protected:
@@ -33,13 +29,13 @@ class OutputIsInput : public test::TempDirTest {
   // Renders `scene` to `output` (tiny and fast); the file must be refused and left as it was.
   void expect_refused(const std::string& scene, const std::string& output,
                       const std::string& input_named, const std::string& extra = "") {
-    std::string before = contents(path(input_named));
+    std::string before = test::read_file(path(input_named));
     auto r = test::run_cli("render " + scene + " -o " + output +
                            " --width 8 --height 8 --spp 1 -q " + extra);
     EXPECT_EQ(r.exit_code, 1) << output << ": " << r.output;
     EXPECT_NE(r.output.find(input_named), std::string::npos) << r.output;
     EXPECT_NE(r.output.find("input"), std::string::npos) << r.output;
-    EXPECT_EQ(contents(path(input_named)), before) << output;
+    EXPECT_EQ(test::read_file(path(input_named)), before) << output;
   }
 };
 
@@ -58,7 +54,7 @@ TEST_F(OutputIsInput, GltfImageIsRefusedUnderAnySpelling) {
 
 TEST_F(OutputIsInput, GltfBufferWithAnImageNameIsRefused) {
   // A buffer may have any name, including one the writer would take.
-  std::string gltf = contents(path("BoxTextured.gltf"));
+  std::string gltf = test::read_file(path("BoxTextured.gltf"));
   size_t at = gltf.find("BoxTextured0.bin");
   ASSERT_NE(at, std::string::npos);
   gltf.replace(at, 16, "buffer.pfm");
@@ -89,9 +85,9 @@ TEST_F(OutputIsInput, AovBesideTheOutputIsRefusedWhenItIsAnInput) {
   sky.data.assign(sky.data.size(), 0.5f);
   write_image(path("out.depth.exr"), sky);
   for (const char* renderer : {"path", "raster"})
-    expect_refused("", path("out.png"), "out.depth.exr",
-                   std::string("--aovs --renderer ") + renderer + " --environment " +
-                       path("out.depth.exr"));
+    expect_refused(
+        "", path("out.png"), "out.depth.exr",
+        std::string("--aovs --renderer ") + renderer + " --environment " + path("out.depth.exr"));
   EXPECT_FALSE(fs::exists(path("out.png")));
 }
 

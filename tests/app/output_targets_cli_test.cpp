@@ -8,17 +8,13 @@
 #include <fstream>
 #include <string>
 
+#include "io/mesh_test_files.h"
 #include "run_command.h"
 
 namespace obscura {
 namespace {
 
 namespace fs = std::filesystem;
-
-std::string contents(const std::string& path) {
-  std::ifstream in(path, std::ios::binary);
-  return std::string((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
-}
 
 class OutputTargetsCli : public test::TempDirTest {};
 
@@ -82,7 +78,7 @@ TEST_F(OutputTargetsCli, FrameAndGroundTruthAreReplacedTogetherOrNotAtAll) {
   auto result = test::run_shell(command);
   EXPECT_EQ(result.exit_code, 1) << result.output;
   EXPECT_NE(result.output.find(path("truth.exr")), std::string::npos) << result.output;
-  EXPECT_EQ(contents(path("frame.png")), "previous frame");
+  EXPECT_EQ(test::read_file(path("frame.png")), "previous frame");
   EXPECT_FALSE(fs::exists(path("truth.exr")));
   for (const auto& entry : fs::directory_iterator(dir_))
     EXPECT_EQ(entry.path().filename().string().find("tmp"), std::string::npos) << entry.path();
@@ -90,7 +86,7 @@ TEST_F(OutputTargetsCli, FrameAndGroundTruthAreReplacedTogetherOrNotAtAll) {
   auto written = test::run_cli("render motion-blur -q --width 96 --height 72 --spp 1 -o " +
                                path("frame.png") + " --ground-truth " + path("truth.exr"));
   ASSERT_EQ(written.exit_code, 0) << written.output;
-  EXPECT_NE(contents(path("frame.png")), "previous frame");
+  EXPECT_NE(test::read_file(path("frame.png")), "previous frame");
   EXPECT_TRUE(fs::exists(path("truth.exr")));
 }
 

@@ -13,6 +13,7 @@
 #include <string>
 #include <vector>
 
+#include "io/mesh_test_files.h"
 #include "obscura/io/image_io.h"
 #include "obscura/math/error.h"
 #include "run_command.h"
@@ -22,11 +23,6 @@ namespace obscura {
 namespace {
 
 namespace fs = std::filesystem;
-
-std::string contents(const std::string& path) {
-  std::ifstream in(path, std::ios::binary);
-  return std::string((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
-}
 
 unsigned mode_of(const std::string& path) {
   struct stat s;
@@ -70,7 +66,7 @@ TEST_F(AtomicOutput, UncommittedFileLeavesNothingAndCommitReplaces) {
   EXPECT_TRUE(others({}).empty());
   write_file_atomically(target, std::vector<uint8_t>{'o', 'l', 'd'});
   write_file_atomically(target, std::vector<uint8_t>{'n', 'e', 'w', '!'});
-  EXPECT_EQ(contents(target), "new!");
+  EXPECT_EQ(test::read_file(target), "new!");
   EXPECT_TRUE(others({"a.bin"}).empty());
 }
 
@@ -123,7 +119,7 @@ TEST_F(AtomicOutput, FailedWriteKeepsExistingOutputForEveryFormat) {
     EXPECT_EQ(r.exit_code, 1) << name << ": " << r.output;
     EXPECT_NE(r.output.find("obscura: error: " + out + ": "), std::string::npos) << r.output;
     EXPECT_NE(r.output.find("File too large"), std::string::npos) << r.output;
-    EXPECT_EQ(contents(out), good) << name;
+    EXPECT_EQ(test::read_file(out), good) << name;
     EXPECT_EQ(mode_of(out), mode) << name;
     EXPECT_EQ(mode_of(out), 0640u) << name;
     EXPECT_TRUE(others({"in.exr", name}).empty()) << name << ": " << others({"in.exr", name})[0];

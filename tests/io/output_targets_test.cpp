@@ -11,6 +11,7 @@
 #include <string>
 #include <vector>
 
+#include "io/mesh_test_files.h"
 #include "obscura/io/atomic_file.h"
 #include "obscura/io/image_io.h"
 #include "obscura/math/request_error.h"
@@ -20,11 +21,6 @@ namespace obscura {
 namespace {
 
 namespace fs = std::filesystem;
-
-std::string contents(const std::string& path) {
-  std::ifstream in(path, std::ios::binary);
-  return std::string((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
-}
 
 class OutputTargets : public test::TempDirTest {
  protected:
@@ -77,7 +73,7 @@ TEST_F(OutputTargets, DevicesFifosAndLinksToThemAreRefusedAndLeftAsTheyWere) {
 TEST_F(OutputTargets, RegularFilesAndLinksToThemAreStillReplaced) {
   write_file_atomically(path("a.bin"), std::vector<uint8_t>{'o', 'l', 'd'});
   EXPECT_EQ(refusal_for(path("a.bin")), "");
-  EXPECT_EQ(contents(path("a.bin")), "x");
+  EXPECT_EQ(test::read_file(path("a.bin")), "x");
   EXPECT_EQ(refusal_for(path("new.bin")), "");
 }
 
@@ -87,10 +83,10 @@ TEST_F(OutputTargets, TransactionReplacesAllOrNone) {
     OutputTransaction outputs;
     write_file_atomically(path("frame.bin"), std::vector<uint8_t>{'n', 'e', 'w'});
     write_file_atomically(path("truth.bin"), std::vector<uint8_t>{'t'});
-    EXPECT_EQ(contents(path("frame.bin")), "old");  // not yet replaced
+    EXPECT_EQ(test::read_file(path("frame.bin")), "old");  // not yet replaced
     EXPECT_FALSE(fs::exists(path("truth.bin")));
   }  // abandoned (an error, a cancel): nothing replaced, no temporary left
-  EXPECT_EQ(contents(path("frame.bin")), "old");
+  EXPECT_EQ(test::read_file(path("frame.bin")), "old");
   EXPECT_EQ(names(), std::vector<std::string>{"frame.bin"});
   {
     OutputTransaction outputs;
@@ -98,8 +94,8 @@ TEST_F(OutputTargets, TransactionReplacesAllOrNone) {
     write_file_atomically(path("truth.bin"), std::vector<uint8_t>{'t'});
     outputs.commit();
   }
-  EXPECT_EQ(contents(path("frame.bin")), "new");
-  EXPECT_EQ(contents(path("truth.bin")), "t");
+  EXPECT_EQ(test::read_file(path("frame.bin")), "new");
+  EXPECT_EQ(test::read_file(path("truth.bin")), "t");
   EXPECT_EQ(names(), (std::vector<std::string>{"frame.bin", "truth.bin"}));
   // After the transaction, files are committed one by one again.
   write_file_atomically(path("later.bin"), std::vector<uint8_t>{'l'});
