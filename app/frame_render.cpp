@@ -92,15 +92,19 @@ void check_outputs(const RenderOptions& options, const Scene& scene) {
 
 }  // namespace
 
-Scene load_render_scene(RenderOptions& options, bool writes_output) {
+void resolve_render_options(RenderOptions& options) {
   validate(options);
   validate(options.tracer);
   validate(options.raster, options.tracer.renderer);
   validate(options.raster_effects, options.tracer.renderer);
+}
+
+Scene load_render_scene(RenderOptions& options, bool writes_output) {
+  resolve_render_options(options);
   if (writes_output)
     check_output_path(options.output, "--output");  // fail before loading, not after
 
-  // Skins and morph targets are posed when the file is read, at the shutter's middle.
+  // Skins and morph targets are posed at the shutter's middle (io/scene_loader.h).
   const Shutter shutter = requested_shutter(options.camera);
   Scene scene = obscura::load_scene(options.scene, gltf_load_options(options.choice, shutter));
   if (!options.gltf_variant.empty()) select_material_variant(scene, options.gltf_variant);

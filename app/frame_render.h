@@ -37,6 +37,10 @@ struct RenderedFrame : obscura::RenderedFrame {
 // fill in what the command line did not give.
 Scene prepare_scene(RenderOptions& options, bool writes_output);
 
+// Checks the options and resolves what they name (the renderer's row among them): what
+// load_render_scene does first. A sequence calls it once on the options every frame copies.
+void resolve_render_options(RenderOptions& options);
+
 // prepare_scene in two steps, for a sequence that loads its scene once: the scene as the options
 // load it (its own camera kept), then each frame's camera over it, with the checks that need it.
 Scene load_render_scene(RenderOptions& options, bool writes_output);

@@ -18,7 +18,10 @@
 #include "obscura/io/scene_loader.h"
 #include "obscura/io/y4m_writer.h"
 #include "obscura/math/error.h"
+#include "obscura/render/camera_request.h"
+#include "obscura/render/render_session.h"
 #include "progress_bar.h"
+#include "scene_choice_options.h"
 #include "usage_error.h"
 
 namespace obscura::app {
@@ -69,6 +72,8 @@ void run_sequence(RenderOptions options, Team& team) {
         "give each task its own --frames range)");
   if (!(options.fps > 0 && options.fps <= 1e6))
     throw UsageError("--fps must be in (0, 1e6] frames per second");
+  // Resolved once, here, on the options every frame copies (the renderer named, among them).
+  resolve_render_options(options);
   const bool video = image_format_for_path(options.output) == ImageFormat::kY4m;
   if (!video) frame_path(options.output, frames.first);  // checks the pattern
   if (video && team.leads()) check_output_path(options.output, "--output");
@@ -87,13 +92,11 @@ void run_sequence(RenderOptions options, Team& team) {
   RenderEnd worst = RenderEnd::kComplete;
   std::vector<int64_t> mine;
 
-  // A scene whose file reads the same at every moment — all but glTF, whose animations, skins
-  // and morph targets are posed at each frame's time — is loaded once, and compiled once for the
-  // whole sequence where nothing in it moves (render/render_session.h); a glTF file is read
-  // again for each frame.
-  const bool load_once = !scene_depends_on_time(options.scene);
-  std::optional<Scene> shared_scene;
-  std::unique_ptr<RenderSession> shared_session;
+  // The scene is read once for the whole sequence and compiled once where nothing in it moves
+  // (render/render_session.h); a glTF animation's skins and morph targets are posed again at
+  // each frame's moment, and the renderers rebuild only those meshes.
+  std::optional<Scene> scene;
+  std::unique_ptr<RenderSession> session;
 
   team.open_counter();
   for (;;) {
@@ -115,22 +118,17 @@ void run_sequence(RenderOptions options, Team& team) {
       continue;
     }
     frame_options.quiet = options.quiet || !team.leads();
-    std::optional<Scene> own_scene;
-    std::optional<RenderSession> own_session;
-    Camera camera;
-    if (load_once) {
-      if (!shared_scene) {
-        shared_scene = load_render_scene(frame_options, !video);
-        shared_scene->validate();
-        shared_session = std::make_unique<RenderSession>(*shared_scene);
-      }
-      camera = resolve_render_camera(*shared_scene, frame_options, !video, nullptr);
-    } else {
-      own_scene = prepare_scene(frame_options, !video);
-      own_session.emplace(*own_scene);
-      camera = own_scene->camera;
+    if (!scene) {
+      scene = load_render_scene(frame_options, !video);
+      scene->validate();
+      session = std::make_unique<RenderSession>(*scene);
     }
-    RenderSession& session = load_once ? *shared_session : *own_session;
+    Camera camera = resolve_render_camera(*scene, frame_options, !video, nullptr);
+    if (scene->poser) {
+      const GltfLoadOptions at =
+          gltf_load_options(frame_options.choice, requested_shutter(frame_options.camera));
+      session->scene_changed(scene->pose(at.time_s, at.exposure_s));
+    }
     // The first frame this rank prepares tells the frame size (the same for every frame): only
     // then is the check above still to be made.
     const bool size_was_known = frame_size.has_value();
@@ -142,7 +140,7 @@ void run_sequence(RenderOptions options, Team& team) {
       continue;
     }
     ProgressBar bar("frame " + std::to_string(n), !speaks);
-    RenderedFrame frame = render_frame(session, camera, frame_options, {},
+    RenderedFrame frame = render_frame(*session, camera, frame_options, {},
                                        [&](int done, int total) { bar.update(done, total); });
     bar.finish();
     worst = std::max(worst, frame.progress.end);
@@ -214,11 +212,9 @@ void run_sequence(RenderOptions options, Team& team) {
   }
   if (speaks) {
     std::string compiled;
-    if (!load_once)
-      compiled = "; the scene read for each frame";
-    else if (shared_session)
-      compiled = "; the scene read once, compiled " +
-                 std::to_string(shared_session->compilations()) + " time(s)";
+    if (session)
+      compiled = "; the scene read once, compiled " + std::to_string(session->compilations()) +
+                 " time(s), brought up to date " + std::to_string(session->updates()) + " time(s)";
     std::fprintf(stderr, "sequence: %lld frames, %d rendered here, %d already there%s%s\n",
                  static_cast<long long>(frames.size()), rendered, skipped, compiled.c_str(),
                  end == RenderEnd::kInterrupted ? " [interrupted]" : "");

@@ -30,7 +30,6 @@ from ._obscura import (  # noqa: F401
     wavelength_xyz,
     write_image,
 )
-from ._obscura import _scene_depends_on_time
 
 
 
@@ -39,13 +38,13 @@ def render_frames(scene, frames, *, fps=24.0, camera=None, load=None, **render_o
     ``(frame_number, RenderResult)`` one frame at a time.
 
     ``scene``: a built-in scene's name or a scene file. ``frames``: the frame numbers (e.g.
-    ``range(0, 48)``); frame n is exposed around n / fps seconds. Each frame loads the scene at
-    its moment (skins and morph targets posed there, ``load_scene(..., time=, shutter=)`` with
-    ``load``'s other keywords: environment, gltf_scene, gltf_animation, variant) and resolves its
-    camera from ``camera``, a dict of ``resolve_camera`` keywords (``{"fstop": 2, "width": 320}``),
-    with the shutter centred on the frame's moment. ``render_options`` go to ``render()``. The
-    frames are the command line's, bit for bit. As on the command line, a scene that reads the
-    same at every moment (all but glTF) is loaded once and rendered through one RenderSession.
+    ``range(0, 48)``); frame n is exposed around n / fps seconds. The scene is loaded once
+    (``load_scene`` with ``load``'s keywords: environment, gltf_scene, gltf_animation, variant)
+    and rendered through one RenderSession, which each frame poses at its moment (skins and
+    morph targets, across the shutter: ``RenderSession.pose``), rebuilding only what moved. Each
+    frame's camera is resolved from ``camera``, a dict of ``resolve_camera`` keywords
+    (``{"fstop": 2, "width": 320}``), with the shutter centred on the frame's moment.
+    ``render_options`` go to ``render()``. The frames are the command line's, bit for bit.
     """
     camera = dict(camera or {})
     load = dict(load or {})
@@ -53,15 +52,13 @@ def render_frames(scene, frames, *, fps=24.0, camera=None, load=None, **render_o
         raise ValueError("render_frames: each frame's time is frame / fps; give no time")
     if not fps > 0:
         raise ValueError(f"render_frames: fps must be positive; got {fps}")
-    # A scene that reads the same at every moment (all but glTF) is loaded once and rendered
-    # through one session, which compiles it once where nothing moves, as the command line does.
-    still = not _scene_depends_on_time(scene)
     frame_scene = session = None
     for n in frames:
         time = n / fps
-        if session is None or not still:
+        if session is None:
             frame_scene = load_scene(scene, time=time, shutter=camera.get("shutter"), **load)
             session = RenderSession(frame_scene)
+        session.pose(time, camera.get("shutter"))
         frame_camera = resolve_camera(frame_scene, time=time, **camera)
         yield n, render(session, frame_camera, **render_options)
 

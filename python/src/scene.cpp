@@ -15,6 +15,7 @@
 #include "obscura/render/camera_request.h"
 #include "obscura/scene/material_variants.h"
 #include "obscura/scene/scene.h"
+#include "session.h"
 
 namespace obscura::python {
 
@@ -273,10 +274,6 @@ void bind_scene(py::module_& m) {
       "The built-in scenes as (name, description), the default first (`obscura render "
       "--scene-list`).");
 
-  m.def("_scene_depends_on_time", &scene_depends_on_time, py::arg("name_or_path"),
-        "Whether load_scene reads the scene differently at different times (a glTF file's "
-        "animations, skins and morph targets): a sequence of any other scene loads it once.");
-
   m.def(
       "load_scene",
       [](const std::string& name_or_path, const std::string& environment,
@@ -286,14 +283,7 @@ void bind_scene(py::module_& m) {
         py::gil_scoped_release release;
         // As `obscura render` loads it: skins and morphs posed across the shutter (`shutter`, as
         // --shutter, else the default one), moved to be centred on `time` when one is given.
-        CameraRequest shutter_request;
-        shutter_request.shutter = shutter_text;
-        Shutter shutter = requested_shutter(shutter_request);
-        if (time) {
-          const double half = shutter.duration_s() / 2;
-          shutter.open_s = *time - half;
-          shutter.close_s = *time + half;
-        }
+        const Shutter shutter = pose_shutter(time, shutter_text);
         GltfLoadOptions gltf{.scene = gltf_scene,
                              .animation = gltf_animation,
                              .time_s = shutter.time_at(0.5),

@@ -63,7 +63,22 @@ class GltfImporter {
 
   Scene import();
 
+  // The meshes import() posed that change with time (animated skins and morph targets), as
+  // indices into its scene's meshes, and the same posed again at another moment (MeshPoser).
+  const std::vector<uint32_t>& animated_meshes() const { return animated_meshes_; }
+  void pose(std::vector<Mesh>& meshes, double time_s, double exposure_s);
+
  private:
+  // A node's primitive posed by its skin or morph targets: its own mesh.
+  struct PosedMesh {
+    uint32_t mesh = 0, base = 0;  // the posed mesh and the file's primitive, in Scene::meshes
+    int node = 0;
+    size_t primitive = 0;
+    Matrix4 world_from_node;
+    std::string where, label;  // the primitive in the file; the node, for the mesh's name
+    bool animated = false;     // its shape changes with time
+  };
+  Mesh posed_mesh(const PosedMesh& posed, const Mesh& base, double time_s, double exposure_s);
   [[noreturn]] void fail(const std::string& where, const std::string& message) const {
     throw Error(file_ + ": " + where, message);
   }
@@ -130,6 +145,10 @@ class GltfImporter {
   size_t gpu_instance_budget_ = kMaxGpuInstances;
   size_t placed_copies_ = 0;
   size_t posed_vertices_ = 0;
+  // What pose() needs: the animated posed meshes, and their primitives as the file has them.
+  std::vector<PosedMesh> animated_;
+  std::vector<uint32_t> animated_meshes_;
+  std::map<uint32_t, Mesh> pose_bases_;
 };
 
 }  // namespace obscura

@@ -10,6 +10,8 @@
 #include <fstream>
 #include <limits>
 #include <map>
+#include <memory>
+#include <mutex>
 #include <set>
 
 #include "obscura/io/camera_mapping.h"
@@ -168,22 +170,28 @@ void GltfImporter::add_mesh_instances(int node_index, const Matrix4& world_from_
   for (const PrimitiveMesh& p : primitives) {
     uint32_t mesh = p.mesh;
     if (deformed) {  // a shape of its own, for this node at the pose time
-      std::string at = element("meshes", node.mesh) + "." + element("primitives", p.primitive);
-      const Mesh& base = scene_.meshes[p.mesh];
+      const PosedMesh record{
+          .mesh = uint32_t(scene_.meshes.size()),
+          .base = p.mesh,
+          .node = node_index,
+          .primitive = p.primitive,
+          .world_from_node = world_from_node,
+          .where = element("meshes", node.mesh) + "." + element("primitives", p.primitive),
+          .label = node.name.empty() ? where : node.name,
+          .animated = deformer_->animated(node_index)};
       // Each posed node holds its own copy (and poses across the shutter): bounded in all.
-      posed_vertices_ += base.positions.size() * size_t(1 + kDeformationSteps);
+      posed_vertices_ += scene_.meshes[p.mesh].positions.size() * size_t(1 + kDeformationSteps);
       if (posed_vertices_ > kMaxPosedVertices)
         fail(where, "skinned or morphed meshes need more than " +
                         std::to_string(kMaxPosedVertices) + " posed vertices in all");
-      Mesh posed =
-          deformer_->deform(base, node_index, p.primitive, world_from_node, at, options_.time_s);
-      if (options_.exposure_s > 0 && deformer_->animated(node_index))
-        posed.deformation = deformer_->deformation(base, node_index, p.primitive, world_from_node,
-                                                   at, options_.time_s - options_.exposure_s / 2,
-                                                   options_.time_s + options_.exposure_s / 2);
-      posed.name.append(" (").append(node.name.empty() ? where : node.name).append(")");
-      mesh = uint32_t(scene_.meshes.size());
+      Mesh posed = posed_mesh(record, scene_.meshes[p.mesh], options_.time_s, options_.exposure_s);
+      mesh = record.mesh;
       scene_.meshes.push_back(std::move(posed));
+      if (record.animated) {
+        pose_bases_.try_emplace(p.mesh, scene_.meshes[p.mesh]);
+        animated_.push_back(record);
+        animated_meshes_.push_back(record.mesh);
+      }
     }
     for (size_t c = 0; c < copies.size(); ++c) {
       std::optional<Transform> object_from_copy = invertible(copies[c]);
@@ -203,6 +211,26 @@ void GltfImporter::add_mesh_instances(int node_index, const Matrix4& world_from_
         instance.world_from_object = instance.motion.front().world_from_object;
       scene_.instances.push_back(std::move(instance));
     }
+  }
+}
+
+Mesh GltfImporter::posed_mesh(const PosedMesh& r, const Mesh& base, double time_s,
+                              double exposure_s) {
+  Mesh posed = deformer_->deform(base, r.node, r.primitive, r.world_from_node, r.where, time_s);
+  if (exposure_s > 0 && r.animated)
+    posed.deformation =
+        deformer_->deformation(base, r.node, r.primitive, r.world_from_node, r.where,
+                               time_s - exposure_s / 2, time_s + exposure_s / 2);
+  posed.name.append(" (").append(r.label).append(")");
+  return posed;
+}
+
+void GltfImporter::pose(std::vector<Mesh>& meshes, double time_s, double exposure_s) {
+  for (const PosedMesh& r : animated_) {
+    if (r.mesh >= meshes.size())
+      throw Error(file_, "the scene no longer holds the posed mesh " + std::to_string(r.mesh) +
+                             " of " + element("nodes", r.node));
+    meshes[r.mesh] = posed_mesh(r, pose_bases_.at(r.base), time_s, exposure_s);
   }
 }
 
@@ -300,11 +328,41 @@ std::vector<unsigned char> read_gltf_file(const std::string& path) {
   return bytes;
 }
 
+namespace {
+
+// A file whose skins or morph targets are animated, kept after loading to pose them again: the
+// importer with the model it reads (the deformer has decoded and checked what it needs).
+class GltfMeshPoser final : public MeshPoser {
+ public:
+  GltfMeshPoser(std::unique_ptr<tinygltf::Model> model, std::unique_ptr<ImageStore> images,
+                std::unique_ptr<GltfImporter> importer)
+      : model_(std::move(model)), images_(std::move(images)), importer_(std::move(importer)) {
+    images_->decoded.clear();  // the scene holds its textures
+  }
+  std::span<const uint32_t> meshes() const override { return importer_->animated_meshes(); }
+  void pose(std::vector<Mesh>& meshes, double time_s, double exposure_s) const override {
+    std::lock_guard lock(mutex_);  // the deformer keeps what it has read
+    importer_->pose(meshes, time_s, exposure_s);
+  }
+
+ private:
+  // Declared in the order they depend on each other: destroyed importer first.
+  std::unique_ptr<tinygltf::Model> model_;
+  std::unique_ptr<ImageStore> images_;
+  std::unique_ptr<GltfImporter> importer_;
+  mutable std::mutex mutex_;
+};
+
+}  // namespace
+
 Scene load_gltf_bytes(std::span<const uint8_t> bytes, const std::string& name,
                       const std::string& base_dir, const GltfLoadOptions& options) {
   tinygltf::TinyGLTF loader;
-  tinygltf::Model model;
-  ImageStore images{name, &model, {}, {}};
+  // On the heap: a poser (below) may keep them.
+  auto model_holder = std::make_unique<tinygltf::Model>();
+  tinygltf::Model& model = *model_holder;
+  auto images_holder = std::make_unique<ImageStore>(ImageStore{name, &model, {}, {}});
+  ImageStore& images = *images_holder;
   loader.SetImageLoader(decode_image, &images);
   std::vector<std::string> files_read;
   loader.SetFsCallbacks({file_exists, keep_path, read_bounded, nullptr, &files_read});
@@ -358,10 +416,13 @@ Scene load_gltf_bytes(std::span<const uint8_t> bytes, const std::string& name,
   // A texture that cannot be read is not worth failing the render for: warn once per image.
   resolve_unusable_gltf_images(model, images.decoded, images.failed, name, base_dir, files_read,
                                warnings);
-  Scene scene =
-      GltfImporter(model, name, images, std::move(warnings), std::move(unsupported), options)
-          .import();
+  auto importer = std::make_unique<GltfImporter>(model, name, images, std::move(warnings),
+                                                 std::move(unsupported), options);
+  Scene scene = importer->import();
   scene.input_files = std::move(files_read);
+  if (!importer->animated_meshes().empty())
+    scene.poser = std::make_shared<GltfMeshPoser>(std::move(model_holder), std::move(images_holder),
+                                                  std::move(importer));
   return scene;
 }
 

@@ -16,12 +16,23 @@ namespace obscura {
 
 Scene load_scene_file(const std::string& path, const GltfLoadOptions& gltf) {
   Scene scene;
-  if (lower_extension(path) == ".json") {
+  const std::string extension = lower_extension(path);
+  if (extension == ".json") {
     refuse_gltf_choices(path, gltf);
     std::error_code ec;
     if (!std::filesystem::exists(path, ec)) throw Error(path, "scene file does not exist");
     scene = load_json_scene(path);  // chooses its own camera
     scene.input_files.insert(scene.input_files.begin(), path);
+  } else if (extension == ".gltf" || extension == ".glb") {
+    // Read at the animation's start, where the automatic camera frames the scene whatever the
+    // moment shown (each frame of a sequence sees it from the same place), then posed at the
+    // moment asked for.
+    GltfLoadOptions at_start = gltf;
+    at_start.time_s = 0;
+    at_start.exposure_s = 0;
+    scene = load_model_file(path, at_start);
+    finish_cameras(scene, "", path);
+    if (gltf.time_s != 0 || gltf.exposure_s != 0) scene.pose(gltf.time_s, gltf.exposure_s);
   } else {
     scene = load_model_file(path, gltf);
     finish_cameras(scene, "", path);
@@ -85,13 +96,6 @@ std::string scenes_search_report(const std::string& relative) {
   return "looked in " + looked +
          "; set OBSCURA_SCENES_DIR to the folder of Obscura's example scenes (scenes/ in its "
          "source tree)";
-}
-
-bool scene_depends_on_time(const std::string& name_or_path) {
-  for (const BuiltinScene& b : builtin_scenes())
-    if (b.name == name_or_path) return false;
-  const std::string extension = lower_extension(name_or_path);
-  return extension == ".gltf" || extension == ".glb";
 }
 
 Scene load_scene(const std::string& name_or_path, const GltfLoadOptions& gltf) {

@@ -41,12 +41,6 @@ std::string find_scenes_file(const std::string& relative);
 // that reports it missing: "looked in A/relative, B/relative; set OBSCURA_SCENES_DIR …".
 std::string scenes_search_report(const std::string& relative);
 
-// Whether what load_scene reads of `name_or_path` depends on GltfLoadOptions' time: a glTF file's
-// animations, skins and morph targets are posed at it. Every other scene (built-ins, Obscura's
-// JSON, OBJ, PLY, STL, Assimp's formats) reads the same at every moment, so a sequence loads it
-// once.
-bool scene_depends_on_time(const std::string& name_or_path);
-
 // A built-in scene's name, or a path to a scene file; empty = the default built-in scene.
 // Throws obscura::Error listing the built-in names when `name_or_path` is neither.
 Scene load_scene(const std::string& name_or_path, const GltfLoadOptions& gltf = {});

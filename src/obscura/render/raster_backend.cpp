@@ -19,7 +19,9 @@ namespace {
 class SceneToRasterize final : public CompiledScene {
  public:
   explicit SceneToRasterize(const Scene& scene) : scene_(scene) {}
+  // The rasterizer reads the scene as it is at each frame: nothing to bring up to date.
   bool serves(const Shutter&) const override { return true; }
+  bool update(const Scene&, std::span<const uint32_t>, const Shutter&) override { return true; }
   const Scene& scene() const { return scene_; }
 
  private:

@@ -15,6 +15,7 @@ namespace obscura {
 struct RenderSession::Compiled {
   std::string_view form;  // RendererBackend::compiled_form
   std::unique_ptr<CompiledScene> scene;
+  std::vector<uint32_t> changed;  // meshes posed again since it was compiled or brought up to date
 };
 
 RenderSession::RenderSession(const Scene& scene) : scene_(scene) {}
@@ -24,12 +25,26 @@ const CompiledScene& RenderSession::compiled(Renderer renderer, const Shutter& i
   const RendererBackend& backend = renderer.backend();
   auto it = std::find_if(compiled_.begin(), compiled_.end(),
                          [&](const Compiled& c) { return c.form == backend.compiled_form(); });
-  if (it != compiled_.end() && it->scene->serves(interval)) return *it->scene;
+  if (it != compiled_.end()) {
+    if (it->changed.empty() && it->scene->serves(interval)) return *it->scene;
+    std::sort(it->changed.begin(), it->changed.end());
+    it->changed.erase(std::unique(it->changed.begin(), it->changed.end()), it->changed.end());
+    if (it->scene->update(scene_, it->changed, interval)) {
+      it->changed.clear();
+      ++updates_;
+      return *it->scene;
+    }
+  }
   if (it == compiled_.end()) it = compiled_.insert(compiled_.end(), {backend.compiled_form(), {}});
   it->scene.reset();  // the old compilation's memory goes before the new one is built
+  it->changed.clear();
   it->scene = backend.compile(scene_, interval);
   ++compilations_;
   return *it->scene;
+}
+
+void RenderSession::scene_changed(std::span<const uint32_t> meshes) {
+  for (Compiled& c : compiled_) c.changed.insert(c.changed.end(), meshes.begin(), meshes.end());
 }
 
 FrameStats RenderSession::render(const Camera& camera, const FrameSettings& settings, Film& film,

@@ -7,6 +7,7 @@
 #pragma once
 
 #include <memory>
+#include <span>
 #include <string_view>
 
 #include "obscura/camera/shutter.h"
@@ -45,6 +46,13 @@ class CompiledScene {
   // Whether frames exposed over `exposure` render from this compilation (a scene where nothing
   // moves serves every exposure).
   virtual bool serves(const Shutter& exposure) const = 0;
+  // Brings the compilation up to date in place for frames exposed over `exposure`, after the
+  // scene's meshes `changed` were posed again (their counts kept); false where only a new
+  // compilation will do (the default).
+  virtual bool update(const Scene& /*scene*/, std::span<const uint32_t> /*changed*/,
+                      const Shutter& /*exposure*/) {
+    return false;
+  }
 };
 
 class RendererBackend {

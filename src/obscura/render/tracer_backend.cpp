@@ -28,9 +28,10 @@ class CompiledTraceScene final : public CompiledScene {
         trace_(scene, std::make_shared<EmbreeDevice>(), TraceSceneOptions{.shutter = exposure}) {}
 
   // Object motion is compiled over one interval; a scene where nothing moves serves any.
-  bool serves(const Shutter& exposure) const override {
-    return !trace_.has_motion() || (trace_.shutter().open_s == exposure.open_s &&
-                                    trace_.shutter().close_s == exposure.close_s);
+  bool serves(const Shutter& exposure) const override { return trace_.serves(exposure); }
+  bool update(const Scene& scene, std::span<const uint32_t> changed,
+              const Shutter& exposure) override {
+    return trace_.update(scene, changed, exposure);
   }
   const Scene& scene() const { return scene_; }
   const TraceScene& trace() const { return trace_; }

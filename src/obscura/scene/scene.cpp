@@ -204,6 +204,16 @@ SceneStats Scene::stats() const {
   return s;
 }
 
+std::vector<uint32_t> Scene::pose(double time_s, double exposure_s) {
+  if (!std::isfinite(time_s) || !(exposure_s >= 0) || !std::isfinite(exposure_s))
+    throw Error("scene '" + name + "'",
+                "posed at a finite time over a finite, non-negative exposure; got " +
+                    number_text(time_s) + " s and " + number_text(exposure_s) + " s");
+  if (!poser) return {};
+  poser->pose(meshes, time_s, exposure_s);
+  return {poser->meshes().begin(), poser->meshes().end()};
+}
+
 Bounds3f Scene::bounds() const {
   Bounds3f b;
   for (const Instance& instance : instances) {

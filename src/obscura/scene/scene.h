@@ -7,6 +7,7 @@
 #pragma once
 
 #include <cstdint>
+#include <memory>
 #include <optional>
 #include <string>
 #include <vector>
@@ -17,6 +18,7 @@
 #include "obscura/scene/light.h"
 #include "obscura/scene/material.h"
 #include "obscura/scene/mesh.h"
+#include "obscura/scene/mesh_poser.h"
 #include "obscura/scene/texture.h"
 
 namespace obscura {
@@ -67,6 +69,9 @@ struct Scene {
   // Every file the scene was read from (scene, models, buffers, textures, environment map), so
   // that a command can refuse to write its output over one of them.
   std::vector<std::string> input_files;
+  // What poses the meshes that change shape with time (skins, morph targets), where the file has
+  // such; shared by copies of the scene, never changed.
+  std::shared_ptr<const MeshPoser> poser;
 
   // The material an instance is drawn with: its override, else its mesh's.
   uint32_t material_of(const Instance& instance) const {
@@ -76,6 +81,10 @@ struct Scene {
   uint32_t add_mesh(Mesh mesh, const Transform& world_from_object = {});
   // Adds each mesh with one instance in place (world space = object space).
   void add_meshes(std::vector<Mesh> meshes);
+
+  // Poses the meshes that change shape with time at `time_s`, across a shutter of `exposure_s`
+  // around it (scene/mesh_poser.h); returns their indices: none for a scene without a poser.
+  std::vector<uint32_t> pose(double time_s, double exposure_s);
 
   SceneStats stats() const;
   size_t triangle_count() const { return stats().triangles; }

@@ -172,7 +172,11 @@ EmbreeScene::~EmbreeScene() {
 uint32_t EmbreeScene::attach(RTCGeometry geometry, const char* during) {
   uint32_t id = rtcAttachGeometry(scene_, geometry);
   device_->throw_if_error(during);
-  if (instances_.size() <= id) instances_.resize(id + 1, nullptr);
+  if (instances_.size() <= id) {
+    instances_.resize(id + 1, nullptr);
+    instance_prototypes_.resize(id + 1, 0);
+    instance_steps_.resize(id + 1, 0);
+  }
   return id;
 }
 
@@ -214,6 +218,9 @@ uint32_t EmbreeScene::add_prototype(std::span<const std::span<const Point3f>> st
   RTCGeometry geometry = new_triangle_geometry(*device_, steps, indices);
   RTCScene prototype = new_scene(*device_);
   prototypes_.push_back(prototype);
+  prototype_changed_.push_back(false);
+  prototype_steps_.push_back(steps.size());
+  prototype_vertices_.push_back(steps.front().size());
   rtcAttachGeometry(prototype, geometry);
   rtcReleaseGeometry(geometry);
   rtcCommitScene(prototype);  // instances need their scene built before the top level is
@@ -243,6 +250,8 @@ uint32_t EmbreeScene::add_instance(uint32_t prototype,
   rtcCommitGeometry(geometry);
   uint32_t id = attach(geometry, "adding an instance");
   instances_[id] = geometry;  // kept (not released) for instance_transform()
+  instance_prototypes_[id] = prototype;
+  instance_steps_[id] = world_from_object.size();
   return id;
 }
 
@@ -259,9 +268,67 @@ float EmbreeScene::embree_time(float time_s) const {
 }
 
 void EmbreeScene::commit() {
+  // Instances of a prototype rebuilt since the last commit take its new bounds.
+  for (size_t id = 0; id < instances_.size(); ++id)
+    if (instances_[id] && prototype_changed_[instance_prototypes_[id]])
+      rtcCommitGeometry(instances_[id]);
+  std::fill(prototype_changed_.begin(), prototype_changed_.end(), false);
   rtcCommitScene(scene_);
   device_->throw_if_error("building the Embree scene");
   committed_ = true;
+}
+
+void EmbreeScene::shared_positions_changed(uint32_t geometry_id) {
+  RTCGeometry geometry = rtcGetGeometry(scene_, geometry_id);
+  device_->throw_if_error("finding a changed mesh");
+  if (!geometry || instances_[geometry_id])
+    throw Error("EmbreeScene: geometry " + std::to_string(geometry_id) + " is no shared mesh");
+  rtcUpdateGeometryBuffer(geometry, RTC_BUFFER_TYPE_VERTEX, 0);
+  rtcCommitGeometry(geometry);
+}
+
+void EmbreeScene::set_prototype_positions(uint32_t prototype,
+                                          std::span<const std::span<const Point3f>> steps) {
+  if (prototype >= prototypes_.size())
+    throw Error("EmbreeScene: prototype " + std::to_string(prototype) + " of " +
+                std::to_string(prototypes_.size()));
+  RTCGeometry geometry = rtcGetGeometry(prototypes_[prototype], 0);
+  if (prototype_steps_[prototype] != steps.size())
+    throw Error("EmbreeScene: a prototype's new vertices have another number of time steps");
+  for (size_t s = 0; s < steps.size(); ++s) {
+    auto* vertices = static_cast<float*>(
+        rtcGetGeometryBufferData(geometry, RTC_BUFFER_TYPE_VERTEX, unsigned(s)));
+    // The buffer was made for the prototype's vertex count; a count that differs cannot go in.
+    if (steps[s].size() != prototype_vertices_[prototype])
+      throw Error("EmbreeScene: a prototype's new vertices differ in count");
+    for (size_t i = 0; i < steps[s].size(); ++i) {
+      vertices[3 * i + 0] = steps[s][i].x;
+      vertices[3 * i + 1] = steps[s][i].y;
+      vertices[3 * i + 2] = steps[s][i].z;
+    }
+    rtcUpdateGeometryBuffer(geometry, RTC_BUFFER_TYPE_VERTEX, unsigned(s));
+  }
+  rtcCommitGeometry(geometry);
+  rtcCommitScene(prototypes_[prototype]);
+  device_->throw_if_error("rebuilding an instanced mesh");
+  prototype_changed_[prototype] = true;
+}
+
+void EmbreeScene::set_instance_transforms(uint32_t geometry_id,
+                                          std::span<const Transform> world_from_object) {
+  if (geometry_id >= instances_.size() || !instances_[geometry_id] ||
+      instance_steps_[geometry_id] != world_from_object.size())
+    throw Error("EmbreeScene: geometry " + std::to_string(geometry_id) + " is no instance of " +
+                std::to_string(world_from_object.size()) + " time steps");
+  for (size_t step = 0; step < world_from_object.size(); ++step) {
+    const auto& m = world_from_object[step].matrix().m;
+    float rows[3][4];
+    for (int r = 0; r < 3; ++r)
+      for (int c = 0; c < 4; ++c) rows[r][c] = float(m[r][c]);
+    rtcSetGeometryTransform(instances_[geometry_id], unsigned(step), RTC_FORMAT_FLOAT3X4_ROW_MAJOR,
+                            rows);
+  }
+  rtcCommitGeometry(instances_[geometry_id]);
 }
 
 Affine3f EmbreeScene::instance_transform(uint32_t geometry_id, float time_s) const {

@@ -94,8 +94,18 @@ class EmbreeScene {
   // clamped. Defaults to [0, 0]: every moving instance holds its first time step.
   // Precondition: close_s ≥ open_s, both finite.
   void set_motion_interval(double open_s, double close_s);
-  // Builds the acceleration structure; call once after adding geometry, before any query.
+  // Builds the acceleration structure; call after adding geometry, before any query, and again
+  // after changing geometry in place (below): Embree then rebuilds what changed.
   void commit();
+
+  // Changing committed geometry in place (no query may run until the next commit()):
+  // a shared mesh's positions were rewritten where they lie (the same count),
+  void shared_positions_changed(uint32_t geometry_id);
+  // a prototype's vertices replaced (the count and time steps it was built with), rebuilding its
+  // acceleration structure now and its instances' bounds at commit(),
+  void set_prototype_positions(uint32_t prototype, std::span<const std::span<const Point3f>> steps);
+  // an instance's transforms replaced (as many time steps as it was made with).
+  void set_instance_transforms(uint32_t geometry_id, std::span<const Transform> world_from_object);
 
   // An instance's world_from_object at `time_s` exactly as traversal used it. Thread-safe after
   // commit(). Precondition: `geometry_id` came from add_instance.
@@ -113,8 +123,13 @@ class EmbreeScene {
 
   RTCSceneTy* scene_ = nullptr;
   std::vector<RTCSceneTy*> prototypes_;
-  std::vector<RTCGeometryTy*> instances_;    // by geometry id; null for meshes placed directly
-  double time_open_s_ = 0, time_scale_ = 0;  // Embree time = (time − open) · scale
+  std::vector<RTCGeometryTy*> instances_;      // by geometry id; null for meshes placed directly
+  std::vector<uint32_t> instance_prototypes_;  // by geometry id: the prototype an instance places
+  std::vector<size_t> instance_steps_;         // by geometry id: an instance's transforms
+  std::vector<size_t> prototype_steps_;        // by prototype: its vertices' time steps
+  std::vector<size_t> prototype_vertices_;     // by prototype: its vertex count
+  std::vector<bool> prototype_changed_;        // since the last commit()
+  double time_open_s_ = 0, time_scale_ = 0;    // Embree time = (time − open) · scale
   bool committed_ = false;
 };
 

@@ -203,6 +203,7 @@ TraceScene::TraceScene(const Scene& scene, std::shared_ptr<const EmbreeDevice> d
   std::vector<Mesh> emitters(scene.instances.size());
   for (uint32_t i = 0; i < scene.instances.size(); ++i) {
     const Instance& instance = scene.instances[i];
+    has_animation_ = has_animation_ || instance.animated();
     // A deforming mesh is a moving instance too: Embree interpolates its vertices in time.
     bool moving =
         (instance.animated() || scene.meshes[instance.mesh].deforms()) && shutter_.duration_s() > 0;
@@ -221,16 +222,11 @@ TraceScene::TraceScene(const Scene& scene, std::shared_ptr<const EmbreeDevice> d
     }
   }
   embree_.commit();
+  for (const Mesh& mesh : scene.meshes) shapes_.push_back(shape_of(mesh));
   for (const Material& m : scene.materials) materials_.emplace_back(m, &textures_);
   has_alpha_ = std::any_of(materials_.begin(), materials_.end(),
                            [](const TraceMaterial& m) { return m.has_alpha(); });
-  Bounds3f b = scene.bounds();
-  if (!b.empty()) {
-    float extent = std::max({std::abs(b.min.x), std::abs(b.min.y), std::abs(b.min.z),
-                             std::abs(b.max.x), std::abs(b.max.y), std::abs(b.max.z)});
-    ray_epsilon_ = std::max(1e-6f, 1e-5f * extent);
-    radius_ = std::max(1e-3f, 0.5f * distance(b.min, b.max));
-  }
+  set_scene_extent(scene);
   std::vector<PunctualLight> punctual;
   for (const Light& light : scene.lights) punctual.push_back(compile_light(light));
   lights_ = LightSet(AreaLights(emitters, scene.materials, options.area_light_sampling, &textures_),
@@ -254,10 +250,53 @@ uint32_t TraceScene::prototype_of(const Scene& scene, uint32_t mesh) {
   return uint32_t(prototype_of_mesh_[mesh]);
 }
 
+void TraceScene::set_static_matrices(Placement& p, const Transform& world_from_object) {
+  double linear[3][3];
+  for (int r = 0; r < 3; ++r)
+    for (int c = 0; c < 3; ++c) {
+      linear[r][c] = world_from_object.matrix().m[r][c];
+      p.vector_from_object[r][c] = float(linear[r][c]);
+    }
+  normal_matrix(linear, p.normal_from_object);
+  p.handedness = world_from_object.swaps_handedness() ? -1.f : 1.f;
+}
+
+void TraceScene::flatten_into(const Scene& scene, uint32_t instance,
+                              const Transform& world_from_object, size_t slot) {
+  // The object-space tangents (generated where a normal map needs them) go along into world
+  // space.
+  const uint32_t mesh = scene.instances[instance].mesh;
+  const Mesh& object = scene.meshes[mesh];
+  const int uv_set = normal_map_uv_set_[mesh];
+  std::vector<Vector4f> generated;
+  std::span<const Vector4f> tangents;
+  if (uv_set >= 0 && !object.tangents.empty())
+    tangents = object.tangents;
+  else if (uv_set >= 0)
+    tangents = generated = generate_tangents(object, uint32_t(uv_set));
+  Mesh world = flatten(object, tangents, world_from_object);
+  if (slot == flattened_.size()) {
+    // Embree reads the vertex buffer 16 bytes at a time: the last vertex needs 4 bytes of
+    // padding after it (flatten reserved room for it, so the buffer is not copied here).
+    std::vector<Point3f>& positions = world_positions_.emplace_back(std::move(world.positions));
+    positions.emplace_back();
+    flattened_.push_back(std::make_unique<Mesh>(shading_attributes(std::move(world), uv_set)));
+    return;
+  }
+  // Again, where Embree reads them: the positions rewritten in their buffer, the shading
+  // attributes replaced around the triangle indices Embree shares (the same as before).
+  std::copy(world.positions.begin(), world.positions.end(), world_positions_[slot].begin());
+  Mesh& kept = *flattened_[slot];
+  std::vector<uint32_t> shared_indices = std::move(kept.indices);
+  kept = shading_attributes(std::move(world), uv_set);
+  kept.indices = std::move(shared_indices);
+}
+
 void TraceScene::add_static(const Scene& scene, uint32_t instance,
                             const Transform& world_from_object, bool instanced) {
   const Instance& in = scene.instances[instance];
   Placement p{.instance = instance, .material = scene.material_of(in)};
+  Source source;
   uint32_t id;
   if (instanced) {
     Transform steps[1] = {world_from_object};
@@ -265,38 +304,33 @@ void TraceScene::add_static(const Scene& scene, uint32_t instance,
     ++embree_instances_;
     p.attributes = &shading_mesh(scene, in.mesh);
     p.object_space = true;
-    double linear[3][3];
-    for (int r = 0; r < 3; ++r)
-      for (int c = 0; c < 3; ++c) {
-        linear[r][c] = world_from_object.matrix().m[r][c];
-        p.vector_from_object[r][c] = float(linear[r][c]);
-      }
-    normal_matrix(linear, p.normal_from_object);
-    p.handedness = world_from_object.swaps_handedness() ? -1.f : 1.f;
+    set_static_matrices(p, world_from_object);
+    source.how = Placed::kInstanced;
   } else {
-    // The object-space tangents (generated where a normal map needs them) go along into world
-    // space.
-    const Mesh& object = scene.meshes[in.mesh];
-    const int uv_set = normal_map_uv_set_[in.mesh];
-    std::vector<Vector4f> generated;
-    std::span<const Vector4f> tangents;
-    if (uv_set >= 0 && !object.tangents.empty())
-      tangents = object.tangents;
-    else if (uv_set >= 0)
-      tangents = generated = generate_tangents(object, uint32_t(uv_set));
-    Mesh world = flatten(object, tangents, world_from_object);
-    // Embree reads the vertex buffer 16 bytes at a time: the last vertex needs 4 bytes of
-    // padding after it (flatten reserved room for it, so the buffer is not copied here).
-    std::vector<Point3f>& positions = world_positions_.emplace_back(std::move(world.positions));
-    positions.emplace_back();
-    flattened_.push_back(std::make_unique<Mesh>(shading_attributes(std::move(world), uv_set)));
+    source.slot = uint32_t(flattened_.size());
+    flatten_into(scene, instance, world_from_object, flattened_.size());
     p.attributes = flattened_.back().get();
     // Embree shares the world-space buffers rather than copying them.
+    const std::vector<Point3f>& positions = world_positions_.back();
     id = embree_.add_shared_triangle_mesh(
         std::span<const Point3f>(positions.data(), positions.size() - 1), p.attributes->indices);
   }
-  if (placements_.size() <= id) placements_.resize(id + 1);
+  if (placements_.size() <= id) {
+    placements_.resize(id + 1);
+    sources_.resize(id + 1);
+  }
   placements_[id] = p;
+  sources_[id] = source;
+}
+
+std::vector<std::vector<Point3f>> TraceScene::deforming_poses(const Mesh& mesh) const {
+  // As many evenly spaced shutter times as the mesh has steps: the steps themselves when they
+  // span the shutter.
+  const size_t count = std::min(mesh.deformation.positions.size(), size_t(kMaxTimeSteps));
+  std::vector<std::vector<Point3f>> poses;
+  for (size_t k = 0; k < count; ++k)
+    poses.push_back(mesh.posed_at(shutter_.time_at(double(k) / double(count - 1))).positions);
+  return poses;
 }
 
 void TraceScene::add_moving(const Scene& scene, uint32_t instance) {
@@ -307,14 +341,9 @@ void TraceScene::add_moving(const Scene& scene, uint32_t instance) {
   uint32_t prototype = 0;
   const MeshDeformation* deformation = nullptr;
   if (mesh.deforms()) {
-    // Its own prototype (deforming meshes are not shared), posed at as many evenly spaced
-    // shutter times as the mesh has steps: the steps themselves when they span the shutter.
-    const size_t count = std::min(mesh.deformation.positions.size(), size_t(kMaxTimeSteps));
-    std::vector<std::vector<Point3f>> poses;
-    std::vector<std::span<const Point3f>> views;
-    for (size_t k = 0; k < count; ++k)
-      poses.push_back(mesh.posed_at(shutter_.time_at(double(k) / double(count - 1))).positions);
-    for (const std::vector<Point3f>& p : poses) views.emplace_back(p);
+    // Its own prototype: deforming meshes are not shared.
+    std::vector<std::vector<Point3f>> poses = deforming_poses(mesh);
+    std::vector<std::span<const Point3f>> views(poses.begin(), poses.end());
     prototype = embree_.add_prototype(views, mesh.indices);
     ++prototypes_;
     const Mesh& shading = shading_mesh(scene, in.mesh);
@@ -325,13 +354,134 @@ void TraceScene::add_moving(const Scene& scene, uint32_t instance) {
   uint32_t id = embree_.add_instance(prototype, steps);
   ++embree_instances_;
   has_motion_ = true;
-  if (placements_.size() <= id) placements_.resize(id + 1);
+  if (placements_.size() <= id) {
+    placements_.resize(id + 1);
+    sources_.resize(id + 1);
+  }
+  sources_[id] = {.how = Placed::kMoving,
+                  .slot = prototype,
+                  .steps = uint32_t(steps.size()),
+                  .deforming = mesh.deforms()};
   placements_[id] = {.instance = instance,
                      .material = scene.material_of(in),
                      .attributes = &shading_mesh(scene, in.mesh),
                      .object_space = true,
                      .moving = true,
                      .deformation = deformation};
+}
+
+void TraceScene::set_scene_extent(const Scene& scene) {
+  Bounds3f b = scene.bounds();
+  if (!b.empty()) {
+    float extent = std::max({std::abs(b.min.x), std::abs(b.min.y), std::abs(b.min.z),
+                             std::abs(b.max.x), std::abs(b.max.y), std::abs(b.max.z)});
+    ray_epsilon_ = std::max(1e-6f, 1e-5f * extent);
+    radius_ = std::max(1e-3f, 0.5f * distance(b.min, b.max));
+  }
+}
+
+bool TraceScene::serves(const Shutter& exposure) const {
+  const bool same = shutter_.open_s == exposure.open_s && shutter_.close_s == exposure.close_s;
+  return same || (!has_motion_ && !has_animation_);
+}
+
+bool TraceScene::update(const Scene& scene, std::span<const uint32_t> changed,
+                        const Shutter& shutter) {
+  const bool same_shutter =
+      shutter_.open_s == shutter.open_s && shutter_.close_s == shutter.close_s;
+  const bool open = shutter.duration_s() > 0;
+  if (scene.meshes.size() != shapes_.size() || !std::isfinite(shutter.open_s) ||
+      !std::isfinite(shutter.close_s) || !(shutter.close_s >= shutter.open_s))
+    return false;
+  std::vector<bool> mesh_changed(scene.meshes.size(), false);
+  for (uint32_t mesh : changed) {
+    if (mesh >= scene.meshes.size()) return false;
+    const Shape now = shape_of(scene.meshes[mesh]), was = shapes_[mesh];
+    if (now.vertices != was.vertices || now.indices != was.indices ||
+        now.deformation_steps != was.deformation_steps)
+      return false;
+    mesh_changed[mesh] = true;
+  }
+  // Checked before anything changes: every placement keeps its form (what moved over the old
+  // shutter moves over the new one, with as many time steps), and no static emitter moves (its
+  // triangles are a light's).
+  std::vector<std::vector<Transform>> new_steps(placements_.size());
+  auto moves = [&](uint32_t id) {
+    const Instance& in = scene.instances[placements_[id].instance];
+    return mesh_changed[in.mesh] ||
+           (!same_shutter && (sources_[id].how == Placed::kMoving || in.animated()));
+  };
+  for (uint32_t id = 0; id < placements_.size(); ++id) {
+    if (!placements_[id].attributes) continue;  // an id no placement took
+    const uint32_t instance = placements_[id].instance;
+    if (instance >= scene.instances.size()) return false;
+    const Instance& in = scene.instances[instance];
+    if (in.mesh >= scene.meshes.size()) return false;
+    const Mesh& mesh = scene.meshes[in.mesh];
+    const bool moving = (in.animated() || mesh.deforms()) && open;
+    if (moving != (sources_[id].how == Placed::kMoving)) return false;
+    if (moving && in.animated() && !same_shutter) {
+      new_steps[id] = time_steps(motion_of(in, instance), shutter, mesh.bounds());
+      if (new_steps[id].size() != sources_[id].steps) return false;
+    }
+    if (!moving && moves(id) && !scene.materials[placements_[id].material].emission.is_black())
+      return false;
+  }
+
+  shutter_ = shutter;
+  embree_.set_motion_interval(shutter_.open_s, shutter_.close_s);
+  std::vector<bool> prototype_done(prototype_of_mesh_.size(), false);
+  auto rebuild_shared_prototype = [&](uint32_t mesh) {
+    if (prototype_done[mesh]) return;
+    prototype_done[mesh] = true;
+    const std::span<const Point3f> steps[1] = {scene.meshes[mesh].positions};
+    embree_.set_prototype_positions(uint32_t(prototype_of_mesh_[mesh]), steps);
+  };
+  for (uint32_t mesh = 0; mesh < scene.meshes.size(); ++mesh)
+    if (mesh_changed[mesh] && has_shading_mesh_[mesh])
+      meshes_[mesh] = shading_attributes(scene.meshes[mesh], normal_map_uv_set_[mesh]);
+  for (uint32_t id = 0; id < placements_.size(); ++id) {
+    Placement& p = placements_[id];
+    if (!p.attributes || !moves(id)) continue;
+    const Instance& in = scene.instances[p.instance];
+    const Source& source = sources_[id];
+    if (source.how == Placed::kMoving) {
+      if (source.deforming) {
+        std::vector<std::vector<Point3f>> poses = deforming_poses(scene.meshes[in.mesh]);
+        std::vector<std::span<const Point3f>> views(poses.begin(), poses.end());
+        embree_.set_prototype_positions(source.slot, views);
+        const Mesh& shading = meshes_[in.mesh];
+        p.deformation = shading.deformation.normals.empty() ? nullptr : &shading.deformation;
+      } else if (mesh_changed[in.mesh]) {
+        rebuild_shared_prototype(in.mesh);
+      }
+      if (!new_steps[id].empty()) embree_.set_instance_transforms(id, new_steps[id]);
+      continue;
+    }
+    const Transform pose =
+        in.animated() ? motion_of(in, p.instance).at(shutter_.open_s) : in.world_from_object;
+    if (source.how == Placed::kFlattened) {
+      flatten_into(scene, p.instance, pose, source.slot);
+      embree_.shared_positions_changed(id);
+      continue;
+    }
+    if (mesh_changed[in.mesh]) rebuild_shared_prototype(in.mesh);
+    if (in.animated()) {
+      const Transform steps[1] = {pose};
+      embree_.set_instance_transforms(id, steps);
+      set_static_matrices(p, pose);
+    }
+  }
+  embree_.commit();
+  // The scene's extent sizes ray offsets and the disk distant light enters through.
+  const float radius = radius_;
+  set_scene_extent(scene);
+  if (radius_ != radius) {
+    std::optional<EnvironmentLight> environment;
+    if (lights_.environment()) environment = *lights_.environment();
+    lights_ = LightSet(lights_.area_lights(), std::move(environment), lights_.punctual(), radius_);
+  }
+  return true;
 }
 
 void TraceScene::set_material(uint32_t index, TraceMaterial material) {

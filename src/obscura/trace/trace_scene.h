@@ -10,6 +10,7 @@
 
 #include <memory>
 #include <optional>
+#include <span>
 #include <vector>
 
 #include "obscura/scene/scene.h"
@@ -59,6 +60,22 @@ class TraceScene {
   // Whether some instance moves during the shutter, and the shutter motion was compiled for.
   bool has_motion() const { return has_motion_; }
   const Shutter& shutter() const { return shutter_; }
+  // Whether frames exposed over `exposure` render from this compilation: those over the shutter
+  // it was compiled for, and any where nothing is animated (an animated instance still over a
+  // zero-length shutter is placed where it is at that moment).
+  bool serves(const Shutter& exposure) const;
+
+  // Brings the compilation up to date, in place, after the scene's meshes `changed` were posed
+  // again (skins and morph targets at another moment: the same vertex and triangle counts) and
+  // for frames exposed over `shutter`: those meshes are rebuilt, and where the shutter moved, the
+  // animated instances take their transforms over it (a still shutter: their pose at that moment;
+  // an open one: as many time steps as before) and deforming meshes their steps; materials,
+  // textures, lights and every other mesh's acceleration structure are kept. The result traces as
+  // a new compilation would. Returns false, changing nothing, where only a new compilation will
+  // do: a mesh whose counts or deformation steps changed, an emissive surface that moved (the
+  // light's triangles), motion that needs another number of time steps, or something that starts
+  // or stops moving (a shutter opened or closed).
+  bool update(const Scene& scene, std::span<const uint32_t> changed, const Shutter& shutter);
   // How many instances went through Embree instancing, and how many meshes were built for them.
   size_t embree_instance_count() const { return embree_instances_; }
   size_t prototype_count() const { return prototypes_; }
@@ -82,6 +99,25 @@ class TraceScene {
     float handedness = 1;  // −1 where the placement mirrors (tangent w flips)
   };
   static constexpr int kMaxTimeSteps = EmbreeScene::kMaxTimeSteps;
+  // How each Embree geometry was made from its instance, for update().
+  enum class Placed : uint8_t { kFlattened, kInstanced, kMoving };
+  struct Source {
+    Placed how = Placed::kFlattened;
+    uint32_t slot = 0;   // kFlattened: index into flattened_; kMoving and deforming: its prototype
+    uint32_t steps = 1;  // kMoving: the instance's transforms over the shutter
+    bool deforming = false;
+  };
+  struct Shape {  // a mesh as compiled
+    size_t vertices = 0, indices = 0, deformation_steps = 0;
+  };
+  static Shape shape_of(const Mesh& mesh) {
+    return {mesh.positions.size(), mesh.indices.size(), mesh.deformation.positions.size()};
+  }
+  static void set_static_matrices(Placement& p, const Transform& world_from_object);
+  void flatten_into(const Scene& scene, uint32_t instance, const Transform& world_from_object,
+                    size_t slot);
+  std::vector<std::vector<Point3f>> deforming_poses(const Mesh& mesh) const;
+  void set_scene_extent(const Scene& scene);
   void add_static(const Scene& scene, uint32_t instance, const Transform& world_from_object,
                   bool instanced);
   void add_moving(const Scene& scene, uint32_t instance);
@@ -98,8 +134,11 @@ class TraceScene {
   std::vector<int> normal_map_uv_set_;  // per mesh: the UV set its tangents follow, −1 none
   std::vector<int32_t> prototype_of_mesh_;  // Embree prototype per mesh, −1 until built
   std::vector<Placement> placements_;
+  std::vector<Source> sources_;  // by geometry id, as placements_
+  std::vector<Shape> shapes_;    // by mesh
   Shutter shutter_;
   bool has_motion_ = false;
+  bool has_animation_ = false;  // some instance has motion keys
   size_t embree_instances_ = 0, prototypes_ = 0;
   std::vector<Texture> textures_;  // what the materials sample
   std::vector<TraceMaterial> materials_;
