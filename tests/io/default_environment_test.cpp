@@ -3,10 +3,16 @@
 
 #include <gtest/gtest.h>
 
+#include <numbers>
+
+#include "obscura/io/scene_loader.h"
 #include "obscura/math/error.h"
+#include "obscura/scene/shapes.h"
 
 namespace obscura {
 namespace {
+
+constexpr double kPi = std::numbers::pi;
 
 Scene one_triangle(Material material) {
   Scene scene;
@@ -52,6 +58,59 @@ TEST(DefaultEnvironment, ChoicesSetOrClearTheEnvironment) {
   EXPECT_FALSE(scene.environment);
   EXPECT_THROW(apply_environment(scene, parse_environment_choice("/no/such/map.exr")), Error);
   EXPECT_THROW(parse_environment_choice(""), Error);
+}
+
+// A grey 1 m box lit only by two 2 cm square lamps of radiance 5 (a lantern's bulbs).
+Scene box_with_small_lamps() {
+  Scene scene;
+  scene.materials = {diffuse_material("grey", Rgb(0.5f)),
+                     diffuse_material("bulb", Rgb(0.f), Rgb(5.f))};
+  Mesh box = make_box({1, 1, 1});
+  box.material = 0;
+  scene.add_mesh(std::move(box));
+  for (float x : {-0.2f, 0.2f}) {
+    Mesh lamp = make_rectangle(0.02f, 0.02f);
+    lamp.material = 1;
+    scene.add_mesh(std::move(lamp), Transform::translate({x, 0.51, 0}));
+  }
+  return scene;
+}
+
+TEST(DefaultEnvironment, EmittedPowerIsMeasuredAgainstTheSurround) {
+  const Scene scene = box_with_small_lamps();
+  const EmitterLight light = emitter_light(scene);
+  EXPECT_EQ(light.emitters, 2u);
+  // π · L · A per lamp, by hand; the surround's 4π²R² over the bounds' half diagonal.
+  const double power = 2 * kPi * 5 * 0.02 * 0.02;
+  EXPECT_NEAR(light.power_w, power, 1e-6);
+  const Bounds3f b = scene.bounds();
+  const double r = 0.5 * distance(b.min, b.max);
+  EXPECT_NEAR(light.relative, power / (4 * kPi * kPi * r * r), 1e-8);
+}
+
+TEST(DefaultEnvironment, EmittersTooFaintToSeeByGetTheEnvironmentToo) {
+  Scene faint = box_with_small_lamps();
+  apply_environment(faint, parse_environment_choice("auto"));
+  ASSERT_TRUE(faint.environment);
+  ASSERT_EQ(faint.warnings.size(), 1u);
+  EXPECT_NE(faint.warnings[0].find("2 emissive surface(s)"), std::string::npos)
+      << faint.warnings[0];
+  EXPECT_NE(faint.warnings[0].find("--environment none"), std::string::npos);
+  // Asked for, their own light alone.
+  Scene own = box_with_small_lamps();
+  apply_environment(own, parse_environment_choice("none"));
+  EXPECT_FALSE(own.environment);
+
+  // The measured Cornell box is lit by its ceiling light alone, as published.
+  Scene cornell = load_scene("cornell-box");
+  const double relative = emitter_light(cornell).relative;
+  EXPECT_GT(relative, 3 * kFaintEmitterLight);
+  apply_environment(cornell, parse_environment_choice("auto"));
+  EXPECT_FALSE(cornell.environment);
+  // A lamp as large as the scene, likewise.
+  Scene bright = one_triangle(diffuse_material("lamp", Rgb(0.5f), Rgb(10.f)));
+  apply_environment(bright, parse_environment_choice("auto"));
+  EXPECT_FALSE(bright.environment);
 }
 
 }  // namespace

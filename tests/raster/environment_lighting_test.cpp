@@ -79,8 +79,18 @@ Material metallic_roughness(Rgb base, float metallic, float roughness) {
   MetallicRoughnessMaterial mr;
   mr.base_color = base, mr.metallic = metallic, mr.roughness = roughness;
   Material m;
-  m.name = "sphere";
+  m.name = "roughness " + std::to_string(roughness).substr(0, 3) + " metallic " +
+           std::to_string(int(metallic));
   m.model = mr;
+  return m;
+}
+
+Material phong(bool blinn) {
+  obscura::PhongMaterial p;
+  p.diffuse = Rgb(0.2f), p.specular = Rgb(0.3f), p.shininess = 100, p.blinn = blinn;
+  Material m;
+  m.name = blinn ? "Blinn-Phong" : "Phong";
+  m.model = p;
   return m;
 }
 
@@ -215,6 +225,12 @@ TEST(EnvironmentLighting, SpheresUnderTheStudioEnvironmentAgreeWithTheTracer) {
       {metallic_roughness(Rgb(0.5f), 0, 1), 0.02, 0.15},     // diffuse-like
       {metallic_roughness(Rgb(0.5f), 0, 0.5f), 0.02, 0.15},  // glossy dielectric
       {metallic_roughness(Rgb(0.9f), 1, 0.5f), 0.04, 0.2},   // glossy metal
+      // An OBJ's Phong and Blinn-Phong (Kd 0.2, Ks 0.3, Ns 100), whose lobe reflects less than
+      // k_s away from normal incidence (shading/phong_albedo.h): 30-50 % apart before. Measured:
+      // mean 2.2 %, 0.8 %; worst block 16 %, 26 % (the prefilter's GGX lobe, with its longer
+      // tails, spreads the studio's small lights more than the Blinn-Phong lobe it stands for).
+      {phong(false), 0.04, 0.2},
+      {phong(true), 0.04, 0.3},
   };
   for (const Case& c : cases) {
     Scene scene = sphere_scene(c.material, Environment(), 48);
@@ -225,10 +241,8 @@ TEST(EnvironmentLighting, SpheresUnderTheStudioEnvironmentAgreeWithTheTracer) {
     Images raster = rasterize(scene);
     Image traced = trace(scene, 512);
     Agreement a = compare(raster, traced, 0.5f);
-    std::printf("studio, roughness %.1f metallic %.0f: mean %.3f worst block %.3f over %d pixels\n",
-                std::get<MetallicRoughnessMaterial>(c.material.model).roughness,
-                std::get<MetallicRoughnessMaterial>(c.material.model).metallic, a.mean,
-                a.worst_block, a.pixels);
+    std::printf("studio, %s: mean %.3f worst block %.3f over %d pixels\n", c.material.name.c_str(),
+                a.mean, a.worst_block, a.pixels);
     EXPECT_GT(a.pixels, 500);
     EXPECT_LT(a.mean, c.mean);
     EXPECT_LT(a.worst_block, c.block);

@@ -1,6 +1,7 @@
 #include "obscura/io/default_environment.h"
 
 #include <cmath>
+#include <cstdio>
 #include <filesystem>
 #include <numbers>
 
@@ -85,20 +86,66 @@ bool scene_has_own_light(const Scene& scene) {
   return false;
 }
 
+EmitterLight emitter_light(const Scene& scene) {
+  EmitterLight light;
+  for (const Instance& instance : scene.instances) {
+    if (instance.mesh >= scene.meshes.size()) continue;
+    const uint32_t index = scene.material_of(instance);
+    if (index >= scene.materials.size()) continue;
+    const Material& m = scene.materials[index];
+    if (m.emission.is_black() || m.emission_texture.valid()) continue;
+    const Mesh& mesh = scene.meshes[instance.mesh];
+    double area = 0;
+    for (size_t t = 0; t + 2 < mesh.indices.size(); t += 3) {
+      const Point3f a = instance.world_from_object(mesh.positions[mesh.indices[t]]);
+      const Point3f b = instance.world_from_object(mesh.positions[mesh.indices[t + 1]]);
+      const Point3f c = instance.world_from_object(mesh.positions[mesh.indices[t + 2]]);
+      area += 0.5 * double(length(cross(b - a, c - a)));
+    }
+    ++light.emitters;
+    light.power_w += std::numbers::pi * double(luminance(m.emission)) * area;
+  }
+  const Bounds3f b = scene.bounds();
+  const double radius = b.empty() ? 0 : 0.5 * double(distance(b.min, b.max));
+  const double surround = 4 * std::numbers::pi * std::numbers::pi * radius * radius;
+  light.relative = surround > 0 ? light.power_w / surround : 0;
+  return light;
+}
+
+namespace {
+
+std::string percent(double fraction) {
+  char text[32];
+  std::snprintf(text, sizeof text, "%.2g %%", 100 * fraction);
+  return text;
+}
+
+}  // namespace
+
 void apply_environment(Scene& scene, const EnvironmentChoice& choice) {
   switch (choice.source) {
     case EnvironmentSource::kAuto: {
-      if (scene_has_own_light(scene)) return;
+      // Why the environment is added: no light at all, or emitters too faint to see by.
+      std::string why = "the scene has no light of its own";
+      if (scene_has_own_light(scene)) {
+        if (!scene.lights.empty() || scene.environment) return;
+        const EmitterLight emitters = emitter_light(scene);
+        if (emitters.relative >= kFaintEmitterLight) return;
+        why = "the scene's only light, " + std::to_string(emitters.emitters) +
+              " emissive surface(s), would light it at " + percent(emitters.relative) +
+              " of the studio environment's level (too faint to see it by; --environment none "
+              "renders it by its own light alone)";
+      }
       if (std::string map_path = find_scenes_file(kStudioMap); !map_path.empty()) {
         scene.environment = studio_environment(scene, map_path, choice.intensity);
-        scene.warnings.push_back(
-            "the scene has no light of its own; it is lit by the studio environment "
-            "(--environment none|studio|white|FILE to choose)");
+        scene.warnings.push_back(why +
+                                 "; it is lit by the studio environment "
+                                 "(--environment none|studio|white|FILE to choose)");
       } else {
         scene.environment = white_environment(choice.intensity);
-        scene.warnings.push_back(
-            "the scene has no light of its own and the studio map was not found (" +
-            scenes_search_report(kStudioMap) + "); it is lit by a uniform white environment");
+        scene.warnings.push_back(why + " and the studio map was not found (" +
+                                 scenes_search_report(kStudioMap) +
+                                 "); it is lit by a uniform white environment");
       }
       return;
     }

@@ -4,6 +4,7 @@
 #include <variant>
 
 #include "obscura/shading/material_point.h"
+#include "obscura/shading/phong_albedo.h"
 
 namespace obscura::raster {
 
@@ -170,9 +171,17 @@ EnvironmentResponse environment_response(const SurfacePoint& s, float n_dot_v) {
       break;
     case SurfaceModel::kPhong:
     case SurfaceModel::kBlinnPhong:
-      // A normalized lobe reflects k_s of a uniform surround (at normal incidence, exactly).
-      r.diffuse = s.base, r.specular = s.specular;
-      r.roughness = std::sqrt(std::sqrt(2 / (s.shininess + 2)));
+      // A normalized lobe reflects k_s of a uniform surround at normal incidence, less away
+      // from it (the lobe follows the mirror direction, whose cosine is n·v): the tracer's BSDF
+      // integrated (shading/phong_albedo.h).
+      r.diffuse = s.base;
+      r.specular = s.specular * shading::phong_lobe_albedo(mu, s.shininess,
+                                                           s.model == SurfaceModel::kBlinnPhong);
+      // The prefilter's GGX width: Beckmann's α = √(2 / (n + 2)) for Blinn's half-vector lobe
+      // (Walter et al. 2007), whose angle is half the reflection lobe's, so a Phong lobe of
+      // exponent n is as wide as a Blinn-Phong one of about 4n.
+      r.roughness = std::sqrt(
+          std::sqrt(2 / ((s.model == SurfaceModel::kPhong ? 4 * s.shininess : s.shininess) + 2)));
       break;
     case SurfaceModel::kMetallicRoughness:
     case SurfaceModel::kLayeredMetallicRoughness: {
