@@ -214,7 +214,10 @@ def resolve_camera(scene: Scene, *, camera: Optional[str] = None, width: Optiona
                    max_field_angle: Optional[float] = None, calibration: Optional[str] = None,
                    calibration_image: Optional[str] = None, lens: Optional[str] = None,
                    lens_file: Optional[str] = None,
-                   lens_coating: Optional[str] = None, time: Optional[float] = None) -> Camera: ...
+                   lens_coating: Optional[str] = None, time: Optional[float] = None,
+                   position: Optional[Sequence[float]] = None,
+                   look_at: Optional[Sequence[float]] = None,
+                   up: Optional[Sequence[float]] = None) -> Camera: ...
 def render_frames(scene: str, frames: Iterable[int], *, fps: float = 24.0,
                   camera: Optional[dict[str, Any]] = None, load: Optional[dict[str, Any]] = None,
                   **render_options: Any) -> Iterator[Tuple[int, RenderResult]]: ...
