@@ -48,7 +48,9 @@ std::vector<CameraCalibration> calibrations(const DatasetPlan& plan, bool colmap
     try {
       c = calibration_of(plan.views[i].camera);
     } catch (const Error& e) {
-      throw Error("dataset " + plan.views[i].name, e.what());
+      throw Error("dataset " + plan.views[i].name,
+                  std::string(e.what()) +
+                      " (or write no calibration files: the formats none, --formats none)");
     }
     const std::string relative = image_relative(plan, i);
     c.image_name = colmap_names ? relative.substr(relative.find('/') + 1) : relative;
