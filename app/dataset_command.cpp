@@ -82,8 +82,10 @@ void run_dataset(RenderOptions options, const DatasetOptions& d) {
   if (speaks) {
     for (const std::string& w : scene.warnings) std::fprintf(stderr, "warning: %s\n", w.c_str());
     for (const std::string& w : notes) std::fprintf(stderr, "warning: %s\n", w.c_str());
-    for (const std::string& w : warnings) std::fprintf(stderr, "warning: %s\n", w.c_str());
   }
+  // What the calibration files leave out is said even with --quiet: the files are incomplete.
+  if (team.leads())
+    for (const std::string& w : warnings) std::fprintf(stderr, "warning: %s\n", w.c_str());
 
   InterruptGuard interrupt;
   RenderSession session(scene);

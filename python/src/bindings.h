@@ -18,6 +18,7 @@ void bind_render(py::module_& m);  // render() and RenderResult
 void bind_camera_request(py::module_& m);
 void bind_ground_truth(py::module_& m);
 void bind_session(py::module_& m);
+void bind_dataset(py::module_& m);  // render_dataset
 void bind_motion(
     py::module_& m);  // motion keys of cameras and instances  // RenderSession: a scene compiled
                       // once for many frames  // ground_truth(): the --ground-truth channels  //

@@ -170,12 +170,30 @@ std::vector<DatasetView> dataset_views(const Scene& scene, const CameraRequest& 
     }
     return views;
   }
+  return dataset_views(scene, resolve_camera(scene, request, width_px, height_px, notes), spec);
+}
+
+std::vector<DatasetView> dataset_views(const Scene& scene, const Camera& base,
+                                       const std::string& spec) {
+  const std::vector<std::string> parts = split(spec, ':', 3);
+  const std::string& kind = parts[0];
+  std::vector<DatasetView> views;
+  if (kind == "cameras") {
+    if (parts.size() != 1) bad_spec(spec);
+    std::vector<Camera> cameras = scene.cameras;
+    if (cameras.empty()) cameras.push_back(scene.camera);
+    for (Camera& c : cameras) {
+      c.film = base.film;
+      c.validate();
+      views.push_back({dataset_view_name(views.size()), std::move(c)});
+    }
+    return views;
+  }
   if (kind != "orbit" && kind != "sphere" && kind != "path") bad_spec(spec);
   if (parts.size() < 2 || (kind == "sphere" && parts.size() != 2) ||
       (kind == "path" && parts.size() != 3))
     bad_spec(spec);
   const int n = view_count(parts[1], spec);
-  const Camera base = resolve_camera(scene, request, width_px, height_px, notes);
   if (kind == "path") return path_views(base, read_path(parts[2]), n);
   const Framing f = framing(scene, base);
   if (kind == "orbit") {

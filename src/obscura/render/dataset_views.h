@@ -46,6 +46,11 @@ std::vector<DatasetView> dataset_views(const Scene& scene, const CameraRequest& 
                                        std::optional<int> height_px = std::nullopt,
                                        std::vector<std::string>* notes = nullptr);
 
+// The same around a camera already resolved (Python's render_dataset): orbit, sphere and path
+// views take `base` with their poses; "cameras" takes each scene camera with `base`'s film.
+std::vector<DatasetView> dataset_views(const Scene& scene, const Camera& base,
+                                       const std::string& spec);
+
 // The most views a spec may ask for.
 inline constexpr int kMaxDatasetViews = 100000;
 
