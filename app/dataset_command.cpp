@@ -51,6 +51,10 @@ void run_dataset(RenderOptions options, const DatasetOptions& d) {
   Team& team = app::team();
   if (d.views.empty())
     throw UsageError("--views is required (orbit:N, sphere:N, path:N:FILE, cameras)");
+  if (options.tracer.time_limit_s > 0)
+    throw UsageError(
+        "--time-limit: a dataset's views are rendered whole, each with --spp samples (a view "
+        "stopped early would not be written)");
   std::optional<tbb::global_control> thread_limit;
   if (options.threads > 0)
     thread_limit.emplace(tbb::global_control::max_allowed_parallelism, size_t(options.threads));

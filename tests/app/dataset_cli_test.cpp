@@ -108,7 +108,9 @@ TEST_F(DatasetCli, PathAndSceneCamerasAndRefusals) {
                          {"--views orbit:3 --projection orthographic", "field of view"},
                          {"--views orbit:3 --formats colmap,ply", "--formats expects"},
                          {"--views orbit:3 --projection fisheye", "--formats"},
-                         {"--views path:3:" + path("missing.txt"), "missing.txt"}});
+                         {"--views path:3:" + path("missing.txt"), "missing.txt"},
+                         {"--views orbit:3 --crop 0,0,0.5,0.5", "whole frames"},
+                         {"--views orbit:3 --time-limit 1", "--time-limit"}});
 }
 
 TEST_F(DatasetCli, FieldLimitsColmapAndNerfCannotHoldAreWarnings) {

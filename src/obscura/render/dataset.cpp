@@ -119,6 +119,13 @@ std::vector<std::string> check_dataset_plan(const DatasetPlan& plan) {
   if (plan.outputs.ground_truth && !plan.settings.renderer.capabilities().ground_truth)
     throw Error("dataset", "the " + std::string(plan.settings.renderer.name()) +
                                " renderer has no ground truth");
+  for (const DatasetView& view : plan.views) {
+    const Bounds2i crop = view.camera.film.crop_pixels();
+    if (crop.width() != view.camera.film.width_px || crop.height() != view.camera.film.height_px)
+      throw Error("dataset " + view.name,
+                  "a dataset's views are whole frames, as their calibrations describe them: "
+                  "leave the crop out");
+  }
   std::vector<std::string> warnings;
   auto warn = [&](const std::vector<std::string>& more) {
     for (const std::string& w : more)
