@@ -35,6 +35,8 @@ void export_calibration(const Camera& camera, const std::string& format_name,
   } catch (const Error& e) {
     throw Error("--export " + format_name, e.what());
   }
+  for (const std::string& omission : calibration_omissions(*format, calibration))
+    std::fprintf(stderr, "warning: %s\n", omission.c_str());
   if (*format == CalibrationFormat::colmap) {
     ColmapModelText model;
     try {

@@ -110,6 +110,19 @@ void add_camera_options(CLI::App& command, CameraOverrides& o) {
                   "A lens system's anti-reflection coating, what its ghost flares reflect: none, "
                   "quarter-wave (MgF2, n 1.38, at 550 nm; the default) or quarter-wave:INDEX[:NM]")
       ->group(group);
+  command
+      .add_option("--position", o.position,
+                  "Place the camera's centre at X,Y,Z (m); alone, its orientation is kept")
+      ->group(group);
+  command
+      .add_option("--look-at", o.look_at,
+                  "Turn the camera to look at the point X,Y,Z (m), its up towards --up")
+      ->group(group);
+  command
+      .add_option("--up", o.up,
+                  "The direction X,Y,Z the image's up turns towards (default with --look-at: "
+                  "world +Y); alone, rolls the camera about its view direction")
+      ->group(group);
   add_calibrated_camera_options(command, o);
 }
 

@@ -10,6 +10,7 @@
 
 #include "camera_command.h"
 #include "color_command.h"
+#include "dataset_command.h"
 #include "image_command.h"
 #include "info_command.h"
 #include "merge_command.h"
@@ -38,10 +39,13 @@ int main(int argc, char** argv) {
     if (!rank || std::string(rank) == "0") std::fprintf(stderr, "obscura: error: %s\n", e.what());
     return 2;
   }
-  // Under mpirun only `render` works as a team; any other command runs once, on rank 0.
+  // Under mpirun only `render` and `dataset` work as a team; any other command runs once, on rank
+  // 0.
   int status = 0;
   const char* command = argc > 1 ? argv[1] : "";
-  if (obscura::app::team().leads() || std::string(command) == "render") status = run(argc, argv);
+  if (obscura::app::team().leads() || std::string(command) == "render" ||
+      std::string(command) == "dataset")
+    status = run(argc, argv);
   obscura::app::leave_team();
   return status;
 }
@@ -65,6 +69,7 @@ int run(int argc, char** argv) {
   app.set_version_flag("--version", "obscura " OBSCURA_VERSION);
   app.require_subcommand(1);
   obscura::app::add_render_command(app);
+  obscura::app::add_dataset_command(app);
   obscura::app::add_camera_command(app);
   obscura::app::add_color_command(app);
   obscura::app::add_image_command(app);

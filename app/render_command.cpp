@@ -195,16 +195,9 @@ void run_render(RenderOptions options, const std::string& job) {
 
 }  // namespace
 
-void add_render_command(CLI::App& app) {
-  auto options = std::make_shared<RenderOptions>();
-  CLI::App* render = app.add_subcommand("render", "Render a scene to an image file");
-  render->add_option("scene", options->scene,
-                     "A scene file (.json, .gltf, .glb, .obj, .ply, …) or a built-in scene name "
-                     "(see --scene-list); default: the Cornell box");
-  render
-      ->add_option("-o,--output", options->output,
-                   "Output image; the format follows the extension: .png, .exr, .pfm")
-      ->capture_default_str();
+void add_frame_options(CLI::App& command, RenderOptions& o) {
+  CLI::App* render = &command;
+  RenderOptions* options = &o;
   render->add_option("--width", options->width, "Image width in pixels")
       ->check(integer_in(1, kMaxImageSidePx))
       ->capture_default_str();
@@ -221,7 +214,6 @@ void add_render_command(CLI::App& app) {
       ->check(unsigned_64())
       ->capture_default_str();
   render->add_flag("-q,--quiet", options->quiet, "No progress or summary on stderr");
-  render->add_flag("--scene-list", options->list_scenes, "List the built-in scenes and exit");
   render
       ->add_option("--environment", options->environment,
                    "Light from far away: auto (the studio environment when the scene has no "
@@ -248,6 +240,20 @@ void add_render_command(CLI::App& app) {
                    "Ghost flares: the images of bright lights that reflections between a lens "
                    "system's surfaces form (--lens, --lens-coating); added to the HDR frame before "
                    "glare, either renderer");
+}
+
+void add_render_command(CLI::App& app) {
+  auto options = std::make_shared<RenderOptions>();
+  CLI::App* render = app.add_subcommand("render", "Render a scene to an image file");
+  render->add_option("scene", options->scene,
+                     "A scene file (.json, .gltf, .glb, .obj, .ply, …) or a built-in scene name "
+                     "(see --scene-list); default: the Cornell box");
+  render
+      ->add_option("-o,--output", options->output,
+                   "Output image; the format follows the extension: .png, .exr, .pfm")
+      ->capture_default_str();
+  render->add_flag("--scene-list", options->list_scenes, "List the built-in scenes and exit");
+  add_frame_options(*render, *options);
   add_ground_truth_options(*render, options->ground_truth);
   render->add_option("--shard", options->shard,
                      "Render part I of N of the frame (I counted from 0) to a partial film, an "

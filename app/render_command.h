@@ -11,6 +11,12 @@ namespace obscura::app {
 
 void add_render_command(CLI::App& app);
 
+struct RenderOptions;
+// The options `render` and `dataset` share: size, samples, threads, seed, quiet, environment,
+// glTF variant, the camera, scene choice, display, image limit, tracer, rasterizer, glare and
+// flare options.
+void add_frame_options(CLI::App& command, RenderOptions& options);
+
 // A built-in scene by name (empty: the default) or a scene file (obscura::load_scene); throws
 // obscura::Error for unknown names and unreadable files.
 Scene load_scene(const std::string& name);

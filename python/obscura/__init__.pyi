@@ -217,7 +217,15 @@ def resolve_camera(scene: Scene, *, camera: Optional[str] = None, width: Optiona
                    max_field_angle: Optional[float] = None, calibration: Optional[str] = None,
                    calibration_image: Optional[str] = None, lens: Optional[str] = None,
                    lens_file: Optional[str] = None,
-                   lens_coating: Optional[str] = None, time: Optional[float] = None) -> Camera: ...
+                   lens_coating: Optional[str] = None, time: Optional[float] = None,
+                   position: Optional[Sequence[float]] = None,
+                   look_at: Optional[Sequence[float]] = None,
+                   up: Optional[Sequence[float]] = None) -> Camera: ...
+def render_dataset(scene: Scene, views: str, output: str, *, camera: Optional[Camera] = None,
+                   renderer: Literal["path", "whitted", "direct", "raster"] = "path",
+                   spp: Optional[int] = None, seed: Optional[int] = None,
+                   ground_truth: bool = False, aovs: bool = False, image_format: str = "png",
+                   formats: Sequence[str] = ("colmap", "nerf", "opencv")) -> dict[str, Any]: ...
 def render_frames(scene: str, frames: Iterable[int], *, fps: float = 24.0,
                   camera: Optional[dict[str, Any]] = None, load: Optional[dict[str, Any]] = None,
                   **render_options: Any) -> Iterator[Tuple[int, RenderResult]]: ...

@@ -18,6 +18,7 @@ void bind_render(py::module_& m);          // render() and RenderResult
 void bind_camera_request(py::module_& m);  // resolve_camera(): the command line's camera options
 void bind_ground_truth(py::module_& m);    // ground_truth(): the --ground-truth channels
 void bind_session(py::module_& m);         // RenderSession: a scene compiled once for many frames
+void bind_dataset(py::module_& m);         // render_dataset(): views, images, calibrations
 void bind_motion(py::module_& m);          // motion keys of cameras and instances
 
 }  // namespace obscura::python

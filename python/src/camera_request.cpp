@@ -6,6 +6,7 @@
 #include <pybind11/stl.h>
 
 #include "bindings.h"
+#include "obscura/math/number_text.h"
 #include "obscura/render/camera_request.h"
 
 namespace obscura::python {
@@ -14,6 +15,15 @@ namespace {
 
 using Text = std::optional<std::string>;
 using Number = std::optional<double>;
+using Triple = std::optional<std::vector<double>>;
+
+// A placement keyword ((x, y, z)) in the command line's form "x,y,z", exactly.
+Text triple_text(const Triple& v) {
+  if (!v) return std::nullopt;
+  std::string text;
+  for (double x : *v) text += (text.empty() ? "" : ",") + number_text(x);
+  return text;
+}
 
 Camera resolve_camera_py(const Scene& scene, Text camera, std::optional<int> width,
                          std::optional<int> height, Text projection, Number fov, Number hfov,
@@ -25,7 +35,8 @@ Camera resolve_camera_py(const Scene& scene, Text camera, std::optional<int> wid
                          Text crop, Text filter, Number filter_radius, Number near, Number far,
                          Text intrinsics, Text calibration_size, Text distortion,
                          Number max_field_angle, Text calibration, Text calibration_image,
-                         Text lens, Text lens_file, Text lens_coating, Number time) {
+                         Text lens, Text lens_file, Text lens_coating, Number time, Triple position,
+                         Triple look_at, Triple up) {
   CameraRequest r;
   r.camera_name = camera;
   r.projection = projection;
@@ -62,6 +73,9 @@ Camera resolve_camera_py(const Scene& scene, Text camera, std::optional<int> wid
   r.lens_file = lens_file;
   r.lens_coating = lens_coating;
   r.time_s = time;
+  r.position = triple_text(position);
+  r.look_at = triple_text(look_at);
+  r.up = triple_text(up);
   std::vector<std::string> notes;
   Camera resolved;
   // Another Python thread may change `scene` while the GIL is free: resolve from a copy of what
@@ -98,14 +112,16 @@ void bind_camera_request(py::module_& m) {
         py::arg("calibration_size") = none, py::arg("distortion") = none,
         py::arg("max_field_angle") = none, py::arg("calibration") = none,
         py::arg("calibration_image") = none, py::arg("lens") = none, py::arg("lens_file") = none,
-        py::arg("lens_coating") = none, py::arg("time") = none,
+        py::arg("lens_coating") = none, py::arg("time") = none, py::arg("position") = none,
+        py::arg("look_at") = none, py::arg("up") = none,
         "The camera `obscura render SCENE [camera options]` renders with: the scene's camera "
         "(by name: camera=) with the command line's camera options as keywords, their dashes "
         "as underscores and their values in the same units and forms (fstop=2.8, "
         "focus_distance=3, shutter='0:1/60', rolling_shutter='1/30000', sensor='36x24', "
         "lens='double-gauss-50mm', lens_file=PATH, lens_coating='none', calibration=PATH, "
         "calibration_image=NAME, crop='0.25,0.25,0.75,0.75', …; docs/camera.md); time= "
-        "centres the shutter on that moment, as --time does. The film's "
+        "centres the shutter on that moment, as --time does; position=, look_at=, up= (x, y, z) "
+        "place the camera as --position, --look-at and --up do. The film's "
         "size is width/height when given, else a calibration file's image size, else the scene "
         "file's render.width/height, else 512 x 512. A film whose shape stretches a "
         "calibration's K gives a UserWarning. A malformed or out-of-range value raises "

@@ -20,4 +20,5 @@ PYBIND11_MODULE(_obscura, m) {
   bind_render(m);
   bind_camera_request(m);
   bind_ground_truth(m);
+  bind_dataset(m);
 }

@@ -25,6 +25,8 @@ raster::DepthOfFieldMethod depth_of_field_named(const std::string& name) {
   throw Error("raster_dof", "expected 'off', 'accumulate' or 'post', got '" + name + "'");
 }
 
+}  // namespace
+
 FrameSettings frame_settings(const RenderRequest& r, const SceneRenderSettings& scene,
                              const std::atomic<bool>* cancel) {
   std::optional<Renderer> renderer = parse_renderer(r.renderer);
@@ -57,8 +59,6 @@ FrameSettings frame_settings(const RenderRequest& r, const SceneRenderSettings& 
   s.raster.effect_samples = r.raster_samples;
   return s;
 }
-
-}  // namespace
 
 RenderOutcome render_request(RenderSession& session, const Camera* camera,
                              const RenderRequest& request, const std::atomic<bool>* cancel,

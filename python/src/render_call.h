@@ -42,6 +42,11 @@ struct RenderOutcome {
   std::vector<std::string> warnings;
 };
 
+// The library's settings for `request` over the scene file's render settings. Throws
+// obscura::Error for an unknown renderer or sampler and out-of-range values.
+FrameSettings frame_settings(const RenderRequest& request, const SceneRenderSettings& scene,
+                             const std::atomic<bool>* cancel);
+
 // Renders `camera` (null: the scene's own camera) over `scene`. Throws obscura::Error for an
 // unknown renderer or sampler and for what the renderer rejects. `cancel` (set from another thread)
 // stops the render early; the outcome then holds the image so far.

@@ -1,9 +1,11 @@
 #include "obscura/io/calibration_file.h"
 
+#include <cstdio>
 #include <filesystem>
 #include <fstream>
 #include <sstream>
 
+#include "obscura/camera/lens_distortion.h"
 #include "obscura/io/colmap_model.h"
 #include "obscura/io/input_file.h"
 #include "obscura/io/json_reader.h"
@@ -124,6 +126,39 @@ std::string calibration_text(CalibrationFormat format, const CameraCalibration& 
       break;
   }
   throw Error("COLMAP", "a COLMAP model is two files (colmap_model_text)");
+}
+
+namespace {
+
+std::string short_number(double value) {
+  char text[32];
+  std::snprintf(text, sizeof text, "%.4g", value);
+  return text;
+}
+
+}  // namespace
+
+std::vector<std::string> calibration_omissions(CalibrationFormat format,
+                                               const CameraCalibration& calibration) {
+  std::vector<std::string> out;
+  if (format != CalibrationFormat::colmap && format != CalibrationFormat::nerf) return out;
+  const CalibratedProjection& p = calibration.projection;
+  if (!(p.max_field_angle_degrees > 0)) return out;
+  // The limit matters only where it is narrower than what the lens model reaches by itself.
+  CalibratedProjection unlimited = p;
+  unlimited.max_field_angle_degrees = 0;
+  const double own = LensMap(unlimited.lens).max_field_angle() * 180 / 3.14159265358979323846;
+  if (p.max_field_angle_degrees >= own - 1e-9) return out;
+  const bool fisheye = !is_planar(p.lens);
+  const std::string name =
+      format == CalibrationFormat::colmap ? "COLMAP" : "NeRF's transforms.json";
+  out.push_back(name + " cannot hold the " + (fisheye ? "fisheye" : "lens") + "'s " +
+                exact_number(2 * p.max_field_angle_degrees) +
+                "° field limit (max_field_angle_degrees " +
+                exact_number(p.max_field_angle_degrees) + "): left out; a camera read back from " +
+                "it sees as far as its " + lens_model_name(p.lens) + " model reaches (" +
+                short_number(2 * own) + "°), not only the circle the images show");
+  return out;
 }
 
 }  // namespace obscura

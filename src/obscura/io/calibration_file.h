@@ -4,6 +4,7 @@
 
 #include <optional>
 #include <string>
+#include <vector>
 
 #include "obscura/io/camera_calibration.h"
 
@@ -34,5 +35,13 @@ CameraCalibration parse_calibration_text(const std::string& text, const std::str
 // The text of an OpenCV YAML or JSON file or a transforms.json (COLMAP's two files:
 // colmap_model.h). Throws obscura::Error when the format cannot hold the calibration.
 std::string calibration_text(CalibrationFormat format, const CameraCalibration& calibration);
+
+// What `format` leaves out of `calibration` without refusing it, one warning each, naming the
+// format and the term: COLMAP and NeRF have no field limit, so a lens limited to a narrower field
+// than its model reaches (a 190° fisheye circle) is written without the limit ("COLMAP cannot
+// hold the fisheye's 190° field limit: left out; ..."). Empty when the file holds everything.
+// (What a format cannot hold at all is refused by the writers instead.)
+std::vector<std::string> calibration_omissions(CalibrationFormat format,
+                                               const CameraCalibration& calibration);
 
 }  // namespace obscura

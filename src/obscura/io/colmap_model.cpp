@@ -1,5 +1,7 @@
 #include "obscura/io/colmap_model.h"
 
+#include <algorithm>
+#include <array>
 #include <cerrno>
 #include <cmath>
 #include <cstdlib>
@@ -234,35 +236,55 @@ CameraCalibration parse_colmap_model(const std::string& cameras_text,
 }
 
 ColmapModelText colmap_model_text(const CameraCalibration& c) {
-  const CalibratedProjection& p = c.projection;
-  if (p.k.skew != 0) throw Error("COLMAP cameras.txt", "COLMAP's camera models have no skew");
-  auto [model, coefficients] = colmap_model_of(p);
+  return colmap_model_text(std::vector<CameraCalibration>{c});
+}
+
+ColmapModelText colmap_model_text(const std::vector<CameraCalibration>& images) {
+  // One camera line per distinct intrinsics (the same model, size and parameters, to the bit).
+  std::vector<std::string> camera_lines;
+  std::vector<size_t> camera_of(images.size());
+  for (size_t i = 0; i < images.size(); ++i) {
+    const CalibratedProjection& p = images[i].projection;
+    if (p.k.skew != 0) throw Error("COLMAP cameras.txt", "COLMAP's camera models have no skew");
+    auto [model, coefficients] = colmap_model_of(p);
+    std::string line = model + " " + std::to_string(p.width_px) + " " + std::to_string(p.height_px);
+    std::vector<double> params = {p.k.fx, p.k.fy, p.k.cx + kColmapPixelOffset,
+                                  p.k.cy + kColmapPixelOffset};
+    params.insert(params.end(), coefficients.begin(), coefficients.end());
+    for (double v : params) line.append(" ").append(exact_number(v));
+    auto found = std::find(camera_lines.begin(), camera_lines.end(), line);
+    camera_of[i] = size_t(found - camera_lines.begin());
+    if (found == camera_lines.end()) camera_lines.push_back(line);
+  }
   ColmapModelText out;
   out.cameras =
       "# Camera list with one line of data per camera:\n"
       "#   CAMERA_ID, MODEL, WIDTH, HEIGHT, PARAMS[]\n"
-      "# Number of cameras: 1\n1 " +
-      model + " " + std::to_string(p.width_px) + " " + std::to_string(p.height_px);
-  std::vector<double> params = {p.k.fx, p.k.fy, p.k.cx + kColmapPixelOffset,
-                                p.k.cy + kColmapPixelOffset};
-  params.insert(params.end(), coefficients.begin(), coefficients.end());
-  for (double v : params) out.cameras.append(" ").append(exact_number(v));
-  out.cameras += "\n";
-  // Without a pose: COLMAP's identity (R = I, t = 0).
-  CvExtrinsics e{.r = {{{1, 0, 0}, {0, 1, 0}, {0, 0, 1}}}, .t = {0, 0, 0}};
-  if (c.world_from_camera) e = cv_extrinsics(*c.world_from_camera);
-  std::array<double, 4> q = quaternion_from_rotation(e.r);
-  std::string name = c.image_name.empty() ? "image.png" : c.image_name;
-  for (char& ch : name)
-    if (ch == ' ' || ch == '\t' || ch == '\n' || ch == '\r') ch = '_';  // NAME is one word
+      "# Number of cameras: " +
+      std::to_string(camera_lines.size()) + "\n";
+  for (size_t i = 0; i < camera_lines.size(); ++i)
+    out.cameras.append(std::to_string(i + 1)).append(" ").append(camera_lines[i]).append("\n");
   out.images =
       "# Image list with two lines of data per image:\n"
       "#   IMAGE_ID, QW, QX, QY, QZ, TX, TY, TZ, CAMERA_ID, NAME\n"
       "#   POINTS2D[] as (X, Y, POINT3D_ID)\n"
-      "# Number of images: 1, mean observations per image: 0\n1";
-  for (double v : q) out.images.append(" ").append(exact_number(v));
-  for (double v : e.t) out.images.append(" ").append(exact_number(v));
-  out.images.append(" 1 ").append(name).append("\n\n");
+      "# Number of images: " +
+      std::to_string(images.size()) + ", mean observations per image: 0\n";
+  for (size_t i = 0; i < images.size(); ++i) {
+    const CameraCalibration& c = images[i];
+    // Without a pose: COLMAP's identity (R = I, t = 0).
+    CvExtrinsics e{.r = {{{1, 0, 0}, {0, 1, 0}, {0, 0, 1}}}, .t = {0, 0, 0}};
+    if (c.world_from_camera) e = cv_extrinsics(*c.world_from_camera);
+    std::array<double, 4> q = quaternion_from_rotation(e.r);
+    std::string name = c.image_name.empty() ? "image.png" : c.image_name;
+    for (char& ch : name)
+      if (ch == ' ' || ch == '\t' || ch == '\n' || ch == '\r') ch = '_';  // NAME is one word
+    out.images.append(std::to_string(i + 1));
+    for (double v : q) out.images.append(" ").append(exact_number(v));
+    for (double v : e.t) out.images.append(" ").append(exact_number(v));
+    out.images.append(" ").append(std::to_string(camera_of[i] + 1)).append(" ").append(name);
+    out.images.append("\n\n");
+  }
   return out;
 }
 

@@ -14,6 +14,7 @@
 #pragma once
 
 #include <string>
+#include <vector>
 
 #include "obscura/io/camera_calibration.h"
 
@@ -34,5 +35,9 @@ struct ColmapModelText {
   std::string cameras, images;
 };
 ColmapModelText colmap_model_text(const CameraCalibration& calibration);
+// The model of many images (image i + 1 is images[i], named by its image_name, posed by its
+// pose): images whose intrinsics are the same (model, size and every parameter) share a camera,
+// numbered in order of first use.
+ColmapModelText colmap_model_text(const std::vector<CameraCalibration>& images);
 
 }  // namespace obscura

@@ -1,5 +1,6 @@
 #include "obscura/io/nerf_transforms.h"
 
+#include <algorithm>
 #include <cmath>
 #include <filesystem>
 #include <numbers>
@@ -189,8 +190,12 @@ CameraCalibration parse_nerf_transforms(const std::string& text, const std::stri
   throw Error(file, "no frame named '" + image_name + "'; its frames: " + names);
 }
 
-std::string nerf_transforms_text(const CameraCalibration& c) {
-  const CalibratedProjection& p = c.projection;
+namespace {
+
+using Fields = std::vector<std::pair<std::string, std::string>>;
+
+// The intrinsics' keys and their values' JSON text.
+Fields intrinsic_fields(const CalibratedProjection& p) {
   if (p.k.skew != 0) throw Error("transforms.json", "NeRF's transforms.json has no skew");
   std::string model;
   std::vector<std::pair<const char*, double>> distortion;
@@ -213,33 +218,60 @@ std::string nerf_transforms_text(const CameraCalibration& c) {
     throw Error("transforms.json", std::string("NeRF's transforms.json has no ") +
                                        lens_model_name(p.lens) + " lens model");
   }
-  std::vector<std::pair<std::string, std::string>> fields = {
-      {"camera_model", "\"" + model + "\""},
-      {"w", std::to_string(p.width_px)},
-      {"h", std::to_string(p.height_px)},
-      {"fl_x", exact_number(p.k.fx)},
-      {"fl_y", exact_number(p.k.fy)},
-      {"cx", exact_number(p.k.cx + kNerfPixelOffset)},
-      {"cy", exact_number(p.k.cy + kNerfPixelOffset)}};
+  Fields fields = {{"camera_model", "\"" + model + "\""},
+                   {"w", std::to_string(p.width_px)},
+                   {"h", std::to_string(p.height_px)},
+                   {"fl_x", exact_number(p.k.fx)},
+                   {"fl_y", exact_number(p.k.fy)},
+                   {"cx", exact_number(p.k.cx + kNerfPixelOffset)},
+                   {"cy", exact_number(p.k.cy + kNerfPixelOffset)}};
   for (const auto& [key, value] : distortion) fields.emplace_back(key, exact_number(value));
   // instant-ngp's field of view, for readers that look only at it.
   if (is_planar(p.lens))
     fields.emplace_back("camera_angle_x", exact_number(2 * std::atan(0.5 * p.width_px / p.k.fx)));
-  std::string out = "{\n";
+  return fields;
+}
+
+void append_fields(std::string& out, const Fields& fields, const std::string& indent) {
   for (const auto& [key, value] : fields)
-    out.append("  \"").append(key).append("\": ").append(value).append(",\n");
-  const Matrix4 m = c.world_from_camera.value_or(Transform()).matrix();
-  // A name that is not UTF-8 (COLMAP's NAME is bytes) gets U+FFFD where it breaks, not an error.
-  std::string name = Json(c.image_name.empty() ? "image.png" : c.image_name)
-                         .dump(-1, ' ', false, Json::error_handler_t::replace);
-  out.append("  \"frames\": [\n    {\n      \"file_path\": ").append(name);
-  out.append(",\n      \"transform_matrix\": [\n");
-  for (int i = 0; i < 4; ++i) {
-    out.append("        [");
-    for (int j = 0; j < 4; ++j) out.append(j ? ", " : "").append(exact_number(m.m[i][j]));
-    out.append(i < 3 ? "],\n" : "]\n");
+    out.append(indent).append("\"").append(key).append("\": ").append(value).append(",\n");
+}
+
+}  // namespace
+
+std::string nerf_transforms_text(const CameraCalibration& c) {
+  return nerf_transforms_text(std::vector<CameraCalibration>{c});
+}
+
+std::string nerf_transforms_text(const std::vector<CameraCalibration>& frames) {
+  std::vector<Fields> intrinsics;
+  for (const CameraCalibration& c : frames) intrinsics.push_back(intrinsic_fields(c.projection));
+  // Intrinsics every frame shares go to the top level, as nerfstudio writes them; otherwise
+  // each frame carries its own (a frame's value wins in every reader).
+  const bool shared = std::all_of(intrinsics.begin(), intrinsics.end(),
+                                  [&](const Fields& f) { return f == intrinsics.front(); });
+  std::string out = "{\n";
+  if (shared && !intrinsics.empty()) append_fields(out, intrinsics.front(), "  ");
+  out.append("  \"frames\": [");
+  for (size_t i = 0; i < frames.size(); ++i) {
+    const CameraCalibration& c = frames[i];
+    out.append(i ? ",\n    {\n" : "\n    {\n");
+    if (!shared) append_fields(out, intrinsics[i], "      ");
+    const Matrix4 m = c.world_from_camera.value_or(Transform()).matrix();
+    // A name that is not UTF-8 (COLMAP's NAME is bytes) gets U+FFFD where it breaks, not an
+    // error.
+    std::string name = Json(c.image_name.empty() ? "image.png" : c.image_name)
+                           .dump(-1, ' ', false, Json::error_handler_t::replace);
+    out.append("      \"file_path\": ").append(name);
+    out.append(",\n      \"transform_matrix\": [\n");
+    for (int r = 0; r < 4; ++r) {
+      out.append("        [");
+      for (int j = 0; j < 4; ++j) out.append(j ? ", " : "").append(exact_number(m.m[r][j]));
+      out.append(r < 3 ? "],\n" : "]\n");
+    }
+    out.append("      ]\n    }");
   }
-  out.append("      ]\n    }\n  ]\n}\n");
+  out.append(frames.empty() ? "]\n}\n" : "\n  ]\n}\n");
   return out;
 }
 

@@ -13,6 +13,7 @@
 #pragma once
 
 #include <string>
+#include <vector>
 
 #include "obscura/io/camera_calibration.h"
 
@@ -30,5 +31,8 @@ CameraCalibration parse_nerf_transforms(const std::string& text, const std::stri
 // cannot hold: skew, OpenCV's rational (k4..k6), thin-prism or tilt terms, f-theta and classic
 // fisheyes other than the equidistant one.
 std::string nerf_transforms_text(const CameraCalibration& calibration);
+// A transforms.json with a frame for each calibration (its image_name as file_path, its pose):
+// intrinsics all frames share at the top level, otherwise each frame's own in the frame.
+std::string nerf_transforms_text(const std::vector<CameraCalibration>& frames);
 
 }  // namespace obscura

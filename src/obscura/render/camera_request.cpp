@@ -11,6 +11,7 @@
 #include "obscura/math/number_text.h"
 #include "obscura/math/request_error.h"
 #include "obscura/render/calibrated_camera_request.h"
+#include "obscura/render/camera_placement.h"
 #include "obscura/render/lens_system_request.h"
 
 namespace obscura {
@@ -251,6 +252,27 @@ void note_anisotropic_scaling(const Camera& camera, std::vector<std::string>* no
   notes->push_back(note);
 }
 
+// --position, --look-at, --up: a fixed pose, placed from the pose at the shutter's opening.
+void apply_placement(Camera& camera, const CameraRequest& o, std::vector<std::string>* notes) {
+  CameraPlacement placement;
+  if (o.position) {
+    Vector3d p = parse_placement_vector(*o.position, "--position");
+    placement.position = Point3d(p.x, p.y, p.z);
+  }
+  if (o.look_at) {
+    Vector3d p = parse_placement_vector(*o.look_at, "--look-at");
+    placement.look_at = Point3d(p.x, p.y, p.z);
+  }
+  if (o.up) placement.up = parse_placement_vector(*o.up, "--up");
+  if (placement.empty()) return;
+  if (notes && camera.world_from_camera.is_animated())
+    notes->push_back(
+        "the camera's keyframed motion is replaced by the fixed pose --position, "
+        "--look-at and --up give");
+  camera.world_from_camera =
+      AnimatedTransform(placed_pose(camera.world_from_camera.at(camera.shutter.open_s), placement));
+}
+
 }  // namespace
 
 Camera resolve_camera(const Scene& scene, const CameraRequest& request, std::optional<int> width_px,
@@ -272,6 +294,7 @@ Camera resolve_camera(const Scene& scene, const CameraRequest& request, std::opt
     apply_lens_overrides(camera, request);
     apply_calibrated_overrides(camera, request);
     apply_film_overrides(camera, request);
+    apply_placement(camera, request, notes);
     camera.validate();
   } catch (const RequestError&) {
     throw;

@@ -50,6 +50,8 @@ struct CameraRequest {
   std::optional<std::string> lens;          // a built-in lens's name
   std::optional<std::string> lens_file;     // a prescription file
   std::optional<std::string> lens_coating;  // "none" | "quarter-wave[:INDEX[:NM]]"
+  // Placement (render/camera_placement.h): "X,Y,Z" each; the pose becomes a fixed one.
+  std::optional<std::string> position, look_at, up;
   // The moment shown (--time): the shutter, its length kept, is centred on it.
   std::optional<double> time_s;
 };
