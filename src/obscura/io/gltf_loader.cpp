@@ -67,7 +67,7 @@ bool decode_image(tinygltf::Image* image, const int image_index, std::string*, s
     }
     store->decoded[image_index] =
         decode_texture(std::span<const uint8_t>(bytes, size_t(std::max(size, 0))), source, hint,
-                       TextureEncoding::kSrgb);
+                       TextureEncoding::kSrgb, &store->warnings);
   } catch (const Error& e) {
     store->failed[image_index] = e.what();
     return true;
@@ -304,7 +304,7 @@ Scene load_gltf_bytes(std::span<const uint8_t> bytes, const std::string& name,
                       const std::string& base_dir, const GltfLoadOptions& options) {
   tinygltf::TinyGLTF loader;
   tinygltf::Model model;
-  ImageStore images{name, &model, {}, {}};
+  ImageStore images{name, &model, {}, {}, {}};
   loader.SetImageLoader(decode_image, &images);
   std::vector<std::string> files_read;
   loader.SetFsCallbacks({file_exists, keep_path, read_bounded, nullptr, &files_read});
@@ -349,7 +349,8 @@ Scene load_gltf_bytes(std::span<const uint8_t> bytes, const std::string& name,
     throw Error(name,
                 "not a valid glTF file: " + (err.empty() ? std::string("unknown error") : err));
   }
-  std::vector<std::string> warnings;
+  // The images' own warnings first (texels replaced), in the order tinygltf decoded them.
+  std::vector<std::string> warnings = std::move(images.warnings);
   std::set<std::string> unsupported = validate_gltf_model(model, name, warnings);
   GltfDecompressedBuffers decompressed(model);
   decode_meshopt_buffer_views(model, name, decompressed);
