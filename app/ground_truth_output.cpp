@@ -55,7 +55,8 @@ std::optional<std::string> write_ground_truth_file(const GroundTruthOptions& opt
   if (InterruptGuard::requested()) return std::nullopt;
   const Camera& camera = scene.camera;
   const GroundTruthTimes times = ground_truth_times(options, camera);
-  FrameSettings settings{.renderer = renderer};
+  // The cancel reaches inside: the tracer stops between tiles, the rasterizer between rows.
+  FrameSettings settings{.renderer = renderer, .cancel = &InterruptGuard::requested()};
   apply_raster_options(raster, settings.raster);
   const GroundTruthBuffer buffer = render_ground_truth_frame(scene, camera, settings, times);
   if (InterruptGuard::requested()) return std::nullopt;

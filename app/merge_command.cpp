@@ -31,7 +31,7 @@ void run_merge(const MergeOptions& options) {
     if (InterruptGuard::requested()) {
       std::fprintf(stderr, "obscura: interrupted: %s is not written\n",
                    options.render.output.c_str());
-      set_exit_status(kExitInterrupted);
+      set_exit_status(interrupted_exit_status());
       return;
     }
     merger.add(read_shard(path));

@@ -1,5 +1,7 @@
 #include "partial_render.h"
 
+#include <atomic>
+#include <csignal>
 #include <cstdio>
 
 namespace obscura::app {
@@ -7,6 +9,8 @@ namespace obscura::app {
 namespace {
 
 int status_to_return = 0;
+std::atomic<int> interrupt_signal{0};
+static_assert(std::atomic<int>::is_always_lock_free, "stored from a signal handler");
 
 const char* reason(RenderEnd end) {
   return end == RenderEnd::kInterrupted ? "interrupted" : "time limit";
@@ -57,9 +61,17 @@ int exit_status() {
 }
 
 int exit_status_for(RenderEnd end) {
-  return end == RenderEnd::kInterrupted ? kExitInterrupted
+  return end == RenderEnd::kInterrupted ? interrupted_exit_status()
          : end == RenderEnd::kTimeLimit ? kExitTimeLimit
                                         : 0;
+}
+
+void note_interrupt_signal(int signal) noexcept {
+  interrupt_signal.store(signal);
+}
+
+int interrupted_exit_status() {
+  return interrupt_signal.load() == SIGTERM ? kExitTerminated : kExitInterrupted;
 }
 
 }  // namespace obscura::app

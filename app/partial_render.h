@@ -2,10 +2,11 @@
 // count given): the image so far is written, and both the file and the exit status say so.
 //
 // Exit status: 0 complete; 3 stopped by --time-limit before the samples (tracer) or frames
-// (rasterizer) asked for; 130 interrupted by Ctrl-C (SIGINT), as shells report an interrupted
-// command. In the file: "obscura:partial" = "time limit" or "interrupted" (EXR, PNG; Y4M as the
-// header tag XOBSCURA_PARTIAL) and an ImageDescription naming what was done (EXR, PNG, TIFF, JPEG).
-// HDR and PFM cannot hold either: a warning says so and the exit status remains.
+// (rasterizer) asked for; 128 + the signal when interrupted, as shells report a command a signal
+// ended: 130 for Ctrl-C (SIGINT), 143 for SIGTERM (a farm manager's or mpirun's cancel). In the
+// file: "obscura:partial" = "time limit" or "interrupted" (EXR, PNG; Y4M as the header tag
+// XOBSCURA_PARTIAL) and an ImageDescription naming what was done (EXR, PNG, TIFF, JPEG). HDR and
+// PFM cannot hold either: a warning says so and the exit status remains.
 #pragma once
 
 #include <string>
@@ -15,7 +16,8 @@
 namespace obscura::app {
 
 inline constexpr int kExitTimeLimit = 3;
-inline constexpr int kExitInterrupted = 130;
+inline constexpr int kExitInterrupted = 130;  // SIGINT, or a cancel that came with no signal
+inline constexpr int kExitTerminated = 143;   // SIGTERM
 
 enum class RenderEnd { kComplete, kTimeLimit, kInterrupted };
 
@@ -41,5 +43,11 @@ void warn_if_unmarked(const std::string& path, const RenderProgress& progress, b
 void set_exit_status(int status);
 int exit_status();
 int exit_status_for(RenderEnd end);
+
+// Records the signal that asked for the cancel (0: none yet). Async-signal-safe: the signal
+// handler calls it.
+void note_interrupt_signal(int signal) noexcept;
+// The exit status of an interrupted command: 143 after SIGTERM, else 130.
+int interrupted_exit_status();
 
 }  // namespace obscura::app

@@ -7,6 +7,7 @@
 #include "obscura/io/image_io.h"
 #include "obscura/render/renderer_backend.h"
 #include "option_ranges.h"
+#include "partial_render.h"
 #include "usage_error.h"
 
 namespace obscura::app {
@@ -16,6 +17,7 @@ namespace {
 std::atomic<bool> interrupt_requested{false};
 
 extern "C" void on_interrupt(int signal) {
+  note_interrupt_signal(signal);  // the exit status: 130 for SIGINT, 143 for SIGTERM
   interrupt_requested.store(true);
   std::signal(signal, SIG_DFL);  // a second Ctrl-C ends the process at once
 }
@@ -95,6 +97,7 @@ int samples_per_pixel(const TracerOptions& o, int spp) {
 
 InterruptGuard::InterruptGuard() {
   interrupt_requested.store(false);
+  note_interrupt_signal(0);
   std::signal(SIGINT, on_interrupt);
   // What mpirun sends every rank on Ctrl-C, and farm managers to cancel a task.
   std::signal(SIGTERM, on_interrupt);

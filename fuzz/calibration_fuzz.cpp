@@ -7,34 +7,11 @@
 #include <cstdint>
 #include <string>
 
+#include "calibration_input.h"
 #include "obscura/io/calibration_file.h"
-#include "obscura/io/colmap_model.h"
-#include "obscura/io/nerf_transforms.h"
-#include "obscura/io/opencv_calibration.h"
 #include "obscura/math/error.h"
 
 namespace {
-
-obscura::CameraCalibration read(char selector, const std::string& text) {
-  switch (selector) {
-    case 'y':
-      return obscura::parse_opencv_yaml(text, "fuzz.yaml");
-    case 'j':
-      return obscura::parse_opencv_json(text, "fuzz.json");
-    case 'n':
-      return obscura::parse_nerf_transforms(text, "transforms.json", "");
-    case 'c':
-      break;
-    default:
-      return read("yjnc"[static_cast<unsigned char>(selector) % 4], text);
-  }
-  size_t split = text.find('\0');
-  if (split == std::string::npos)
-    return obscura::parse_colmap_model(text, "cameras.txt", nullptr, "images.txt", "");
-  std::string images = text.substr(split + 1);
-  return obscura::parse_colmap_model(text.substr(0, split), "cameras.txt", &images, "images.txt",
-                                     "");
-}
 
 void use(const obscura::CameraCalibration& calibration) {
   obscura::Camera camera;
@@ -63,7 +40,7 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
   if (size == 0) return 0;
   try {
     std::string text(reinterpret_cast<const char*>(data) + 1, size - 1);
-    use(read(static_cast<char>(data[0]), text));
+    use(obscura::fuzz::read_calibration(static_cast<char>(data[0]), text));
   } catch (const obscura::Error&) {
     // a clear error for bad input: the expected outcome
   }

@@ -107,7 +107,7 @@ TEST_F(BoundedCostCli, SigtermDuringTheFlareStopsAndMarksTheFrame) {
                              "--flare -o " +
                              out) +
       " & sleep 3; kill -TERM $!; wait $!");
-  EXPECT_EQ(result.exit_code, 130) << result.output;
+  EXPECT_EQ(result.exit_code, 143) << result.output;  // 128 + SIGTERM
   EXPECT_NE(result.output.find("left out: flare"), std::string::npos) << result.output;
   auto in = OIIO::ImageInput::open(out);
   ASSERT_TRUE(in) << OIIO::geterror();

@@ -129,8 +129,8 @@ TEST_F(HostileValuesCli, GltfEmissiveStrengthBeyondTheBoundIsRefused) {
 
 TEST_F(HostileValuesCli, NanTextureAsMetallicRoughnessRenders) {
   // A 2 × 2 PFM of NaN as the metallic-roughness texture: NaN roughness once indexed the GGX
-  // energy tables at INT_MIN (SIGSEGV in both renderers). Now it renders (NaN pixels are
-  // written black with a warning).
+  // energy tables at INT_MIN (SIGSEGV in both renderers). Now the reader replaces the NaN texels
+  // (by 0; tests/io/texture_values_test.cpp checks the warning naming the file).
   std::string pfm = "PF\n2 2\n-1.0\n";
   const float nan = std::numeric_limits<float>::quiet_NaN();
   for (int i = 0; i < 12; ++i) pfm.append(reinterpret_cast<const char*>(&nan), sizeof nan);

@@ -1,6 +1,6 @@
 // Renders that end early — Ctrl-C, or a time limit reached before the samples asked for — in both
 // renderers: the image so far is written, marked partial in the file, and the exit status says
-// how the render ended (0 complete, 3 time limit, 130 interrupted).
+// how the render ended (0 complete, 3 time limit, 130 interrupted by SIGINT, 143 by SIGTERM).
 #include <gtest/gtest.h>
 
 #include <OpenImageIO/imageio.h>
@@ -41,8 +41,10 @@ class PartialRenderCli : public test::TempDirTest {};
 
 // Ctrl-C after `seconds` of a command started in the background (where a non-interactive shell
 // starts it with SIGINT ignored: the renderer must still stop).
-std::string interrupted_after(const std::string& arguments, double seconds) {
-  return arguments + " 2>&1 & sleep " + std::to_string(seconds) + "; kill -INT $!; wait $!";
+std::string interrupted_after(const std::string& arguments, double seconds,
+                              const std::string& signal = "INT") {
+  return arguments + " 2>&1 & sleep " + std::to_string(seconds) + "; kill -" + signal +
+         " $!; wait $!";
 }
 
 TEST_F(PartialRenderCli, TracerTimeLimitWithoutSppIsComplete) {
@@ -81,6 +83,17 @@ TEST_F(PartialRenderCli, TracerInterruptWritesTheImageMarkedInterrupted) {
   EXPECT_GT(read_image(path("i.exr")).rgb(32, 32).g, 0.f);
 }
 
+// SIGTERM (a farm manager's cancel) stops the render the same way; the exit status says which
+// signal it was: 128 + 15, as a shell reports a command SIGTERM ended.
+TEST_F(PartialRenderCli, TracerSigtermWritesTheImageMarkedInterruptedAndExits143) {
+  auto r = test::run_cli(interrupted_after(
+      "render --width 64 --height 64 --spp 100000 -o " + path("t.exr"), 2, "TERM"));
+  ASSERT_EQ(r.exit_code, 143) << r.output;
+  EXPECT_NE(r.output.find("[partial: interrupted, "), std::string::npos) << r.output;
+  EXPECT_EQ(marks_of(path("t.exr")).partial, "interrupted");
+  EXPECT_GT(read_image(path("t.exr")).rgb(32, 32).g, 0.f);
+}
+
 // The rasterizer accumulates frames for depth of field: 65,536 of them cannot finish in time.
 const std::string kManyRasterFrames =
     "render --renderer raster --width 256 --height 256 --fstop 2 --raster-samples 65536";
@@ -102,6 +115,12 @@ TEST_F(PartialRenderCli, RasterInterruptWritesTheFramesSoFar) {
   EXPECT_NE(r.output.find("[partial: interrupted, "), std::string::npos) << r.output;
   EXPECT_EQ(marks_of(path("r.exr")).partial, "interrupted");
   EXPECT_GT(read_image(path("r.exr")).rgb(128, 128).g, 0.f);
+}
+
+TEST_F(PartialRenderCli, RasterSigtermExits143) {
+  auto r = test::run_cli(interrupted_after(kManyRasterFrames + " -o " + path("r.exr"), 2, "TERM"));
+  ASSERT_EQ(r.exit_code, 143) << r.output;
+  EXPECT_EQ(marks_of(path("r.exr")).partial, "interrupted");
 }
 
 TEST_F(PartialRenderCli, FormatsWithoutMetadataWarnAndKeepTheExitStatus) {

@@ -217,7 +217,7 @@ TEST_F(SequenceCli, AHugeFrameRangeStartsAtOnceInBoundedMemory) {
                                   path("h_%d.exr")) +
                               " & sleep 3; kill -TERM $!; wait $!";
   auto result = test::run_shell(command);
-  EXPECT_EQ(result.exit_code, 130) << result.output;
+  EXPECT_EQ(result.exit_code, 143) << result.output;  // 128 + SIGTERM
   EXPECT_TRUE(fs::exists(path("h_-100000000.exr"))) << result.output;
   EXPECT_NE(result.output.find("sequence: 200000001 frames"), std::string::npos) << result.output;
 }

@@ -110,13 +110,15 @@ double fade(double distance_over_radius) {
 // Σ over bands of weight × the band's PSF integrated over each pixel, faded and normalised per
 // channel. Rows are independent and each sums its bands in order: thread-count independent.
 Image sensor_psf(const DiffractionOptics& o, int radius_px, const std::vector<Band>& bands,
-                 int channels) {
+                 int channels, const std::atomic<bool>* cancel = nullptr) {
+  auto cancelled = [cancel] { return cancel && cancel->load(std::memory_order_relaxed); };
   double shortest = bands.front().wavelength_nm, longest = shortest;
   for (const Band& b : bands) {
     shortest = std::min(shortest, b.wavelength_nm);
     longest = std::max(longest, b.wavelength_nm);
   }
   PupilPattern pattern = pattern_for(o, radius_px, shortest, longest);
+  if (cancelled()) return {};
   const double pattern_spacing = pattern.spacing;
   const SummedArea area(pattern);
   pattern = {};  // the table holds all that is needed
@@ -131,7 +133,7 @@ Image sensor_psf(const DiffractionOptics& o, int radius_px, const std::vector<Ba
   const double fade_radius = std::min(double(radius_px), grid_reach_px);
   tbb::parallel_for(tbb::blocked_range<int>(0, side), [&](const tbb::blocked_range<int>& rows) {
     std::vector<double> top(side + 1), bottom(side + 1);
-    for (int row = rows.begin(); row < rows.end(); ++row) {
+    for (int row = rows.begin(); row < rows.end() && !cancelled(); ++row) {
       const int b = row - radius_px;
       double* out = &sums[size_t(row) * side * channels];
       for (const Band& band : bands) {
@@ -157,6 +159,7 @@ Image sensor_psf(const DiffractionOptics& o, int radius_px, const std::vector<Ba
       }
     }
   });
+  if (cancelled()) return {};  // rows were left out
   for (int c = 0; c < channels; ++c) {
     double total = 0;
     for (size_t i = c; i < sums.size(); i += channels) total += sums[i];
@@ -238,7 +241,7 @@ Image monochromatic_psf(const DiffractionOptics& optics, double wavelength_nm, i
   return psf;
 }
 
-Image rgb_psf(const DiffractionOptics& optics, int radius_px) {
+Image rgb_psf(const DiffractionOptics& optics, int radius_px, const std::atomic<bool>* cancel) {
   validate(optics, radius_px);
   const Matrix3d rgb_from_xyz = xyz_from_rgb(primaries::kRec709).inverse();
   std::vector<Band> bands;
@@ -252,7 +255,8 @@ Image rgb_psf(const DiffractionOptics& optics, int radius_px) {
     bands.push_back({start + 0.5 * kBandNm,
                      {std::max(0.0, rgb[0]), std::max(0.0, rgb[1]), std::max(0.0, rgb[2])}});
   }
-  Image psf = sensor_psf(optics, radius_px, bands, 3);
+  Image psf = sensor_psf(optics, radius_px, bands, 3, cancel);
+  if (psf.data.empty()) return psf;  // cancelled
   psf.channel_names = {"R", "G", "B"};
   return psf;
 }

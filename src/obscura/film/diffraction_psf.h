@@ -23,6 +23,8 @@
 // pixels, where the whole pattern is a fraction of a pixel anyway).
 #pragma once
 
+#include <atomic>
+
 #include <functional>
 #include <vector>
 
@@ -56,7 +58,9 @@ PupilPattern pupil_pattern(const PupilShape& pupil, int size, double spacing);
 // The PSF at one wavelength as a one-channel image of (2·radius_px + 1)² pixels, the point's own
 // pixel at the centre; sums to 1. Throws obscura::Error for invalid optics or radius < 1.
 Image monochromatic_psf(const DiffractionOptics& optics, double wavelength_nm, int radius_px);
-// The colour PSF (R, G, B), each channel summing to 1.
-Image rgb_psf(const DiffractionOptics& optics, int radius_px);
+// The colour PSF (R, G, B), each channel summing to 1. `cancel`, once set (from another thread, a
+// signal handler), stops the work between rows of the PSF: an empty image (no pixels) is returned.
+Image rgb_psf(const DiffractionOptics& optics, int radius_px,
+              const std::atomic<bool>* cancel = nullptr);
 
 }  // namespace obscura

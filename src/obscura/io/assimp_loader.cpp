@@ -55,7 +55,7 @@ class AssimpImporter {
     if (!std::filesystem::is_regular_file(full, ec))
       throw Error(file_ + ": " + where,
                   "texture '" + relative + "' does not exist (looked for " + full.string() + ")");
-    Texture t = read_texture(full.string(), TextureEncoding::kSrgb);
+    Texture t = read_texture(full.string(), TextureEncoding::kSrgb, &scene_.warnings);
     scene_.input_files.push_back(full.string());
     auto index = int32_t(scene_.textures.size());
     scene_.textures.push_back(std::move(t));

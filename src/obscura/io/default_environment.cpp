@@ -34,7 +34,7 @@ Environment map_environment(Scene& scene, const std::string& file, float intensi
   std::error_code ec;
   if (!std::filesystem::is_regular_file(file, ec))
     throw Error(file, "environment map does not exist (or is not a regular file)");
-  Texture map = read_texture(file, TextureEncoding::kLinear);
+  Texture map = read_texture(file, TextureEncoding::kLinear, &scene.warnings);
   scene.input_files.push_back(file);
   map.wrap_v = TextureWrap::kClampToEdge;
   Environment env;

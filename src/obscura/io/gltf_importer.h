@@ -44,6 +44,7 @@ struct ImageStore {
   const tinygltf::Model* model = nullptr;  // filled by tinygltf while it parses
   std::map<int, Texture> decoded;          // by glTF image index
   std::map<int, std::string> failed;       // by glTF image index: why it could not be decoded
+  std::vector<std::string> warnings;       // the decoder's (texels it replaced), one per image
 };
 
 // Everything the loader builds while walking the file.

@@ -69,7 +69,7 @@ bool decode_image(tinygltf::Image* image, const int image_index, std::string*, s
     }
     store->decoded[image_index] =
         decode_texture(std::span<const uint8_t>(bytes, size_t(std::max(size, 0))), source, hint,
-                       TextureEncoding::kSrgb);
+                       TextureEncoding::kSrgb, &store->warnings);
   } catch (const Error& e) {
     store->failed[image_index] = e.what();
     return true;
@@ -361,7 +361,7 @@ Scene load_gltf_bytes(std::span<const uint8_t> bytes, const std::string& name,
   // On the heap: a poser (below) may keep them.
   auto model_holder = std::make_unique<tinygltf::Model>();
   tinygltf::Model& model = *model_holder;
-  auto images_holder = std::make_unique<ImageStore>(ImageStore{name, &model, {}, {}});
+  auto images_holder = std::make_unique<ImageStore>(ImageStore{name, &model, {}, {}, {}});
   ImageStore& images = *images_holder;
   loader.SetImageLoader(decode_image, &images);
   std::vector<std::string> files_read;
@@ -407,7 +407,8 @@ Scene load_gltf_bytes(std::span<const uint8_t> bytes, const std::string& name,
     throw Error(name,
                 "not a valid glTF file: " + (err.empty() ? std::string("unknown error") : err));
   }
-  std::vector<std::string> warnings;
+  // The images' own warnings first (texels replaced), in the order tinygltf decoded them.
+  std::vector<std::string> warnings = std::move(images.warnings);
   std::set<std::string> unsupported = validate_gltf_model(model, name, warnings);
   GltfDecompressedBuffers decompressed(model);
   decode_meshopt_buffer_views(model, name, decompressed);

@@ -107,7 +107,7 @@ void resolve_unusable_gltf_images(const tinygltf::Model& model, std::map<int, Te
           if (!hint.empty()) hint = hint.substr(1);
           decoded[index] = decode_texture(
               bytes, *nearby, model.images[i].mimeType.empty() ? hint : model.images[i].mimeType,
-              TextureEncoding::kSrgb);
+              TextureEncoding::kSrgb, &warnings);
           files_read.push_back(*nearby);
           warnings.push_back(at + "'" + uri + "' was not found; using '" + name +
                              "' found next to the model instead");

@@ -77,7 +77,7 @@ class JsonSceneReader {
     std::error_code ec;
     if (!std::filesystem::is_regular_file(file, ec))
       json.fail(key, "texture '" + file + "' does not exist");
-    Texture t = read_texture(file, encoding);
+    Texture t = read_texture(file, encoding, &scene_.warnings);
     scene_.input_files.push_back(file);
     auto index = int32_t(scene_.textures.size());
     scene_.textures.push_back(std::move(t));
@@ -453,7 +453,7 @@ class JsonSceneReader {
       if (!std::filesystem::is_regular_file(file, ec))
         json.fail("file", "environment map '" + file + "' does not exist");
       env.texture = int32_t(scene_.textures.size());
-      Texture t = read_texture(file, TextureEncoding::kLinear);
+      Texture t = read_texture(file, TextureEncoding::kLinear, &scene_.warnings);
       scene_.input_files.push_back(file);
       t.wrap_v = TextureWrap::kClampToEdge;
       scene_.textures.push_back(std::move(t));

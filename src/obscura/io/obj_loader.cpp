@@ -327,7 +327,7 @@ class ObjReader {
     }
     if (why.empty()) {
       try {
-        Texture decoded = read_texture(path, TextureEncoding::kSrgb);
+        Texture decoded = read_texture(path, TextureEncoding::kSrgb, &warnings_);
         scene_.textures.push_back(std::move(decoded));
         scene_.input_files.push_back(path);
         return int32_t(scene_.textures.size() - 1);

@@ -90,19 +90,23 @@ void check_ground_truth_camera(const Camera& camera) {
 
 GroundTruthBuffer render_ground_truth(const SceneRasterizer& rasterizer,
                                       const SurfaceMotion& motion, const Camera& camera,
-                                      const GroundTruthTimes& times) {
+                                      const GroundTruthTimes& times,
+                                      const std::atomic<bool>* cancel) {
+  auto cancelled = [cancel] { return cancel && cancel->load(std::memory_order_relaxed); };
   if (!rasterizer.settings().aovs || rasterizer.settings().msaa_samples != 1)
     throw Error("raster ground truth",
                 "needs a rasterizer with aovs on and one sample per pixel (no MSAA)");
   check_ground_truth_camera(camera);
   const Bounds2i crop = camera.film.crop_pixels();
   const double t0 = times.first_s, t1 = times.second_s;
+  GroundTruthBuffer buffer(crop.width(), crop.height());
+  if (cancelled()) return buffer;
   const RenderTarget first = draw_at(rasterizer, camera, t0);
+  if (cancelled()) return buffer;
   const RenderTarget second = draw_at(rasterizer, camera, t1);
   const PreparedCamera prepared = camera.prepare();
-  GroundTruthBuffer buffer(crop.width(), crop.height());
   const Scene& scene = motion.scene();
-  for (int y = 0; y < crop.height(); ++y)
+  for (int y = 0; y < crop.height() && !cancelled(); ++y)
     for (int x = 0; x < crop.width(); ++x) {
       const Point2d film_point(crop.min.x + x + 0.5, crop.min.y + y + 0.5);
       buffer.set_time(x, y, t0);

@@ -12,6 +12,8 @@
 // plane that disagrees with the drawn depth by more than 10⁻³ relative is not trusted either.
 #pragma once
 
+#include <atomic>
+
 #include "obscura/camera/camera.h"
 #include "obscura/film/ground_truth_buffer.h"
 #include "obscura/raster/scene_rasterizer.h"
@@ -27,8 +29,11 @@ namespace obscura::raster {
 // cannot give exactly: those without a projection matrix and rolling shutters.
 void check_ground_truth_camera(const Camera& camera);
 
+// `cancel`, once set (from another thread, a signal handler), stops the work between the two
+// drawings and between rows: the rows not yet done are left empty, for the caller to throw away.
 GroundTruthBuffer render_ground_truth(const SceneRasterizer& rasterizer,
                                       const SurfaceMotion& motion, const Camera& camera,
-                                      const GroundTruthTimes& times);
+                                      const GroundTruthTimes& times,
+                                      const std::atomic<bool>* cancel = nullptr);
 
 }  // namespace obscura::raster

@@ -156,13 +156,16 @@ Image finish_frame(const Image& film_sums, const std::vector<AovImage>& layers,
                                    .pixel_height_mm = glare->pixel_height_mm};
     validate(glare->settings);
     const int radius = glare_radius_px(glare->settings, image.width, image.height);
-    const bool cancelled = cancel && cancel->load();
-    if (cancelled ||
-        !convolve_with_psf(image,
-                           scale_scattered_light(rgb_psf(optics, radius), glare->settings.strength),
-                           cancel)) {
-      if (unfinished) *unfinished = true;
+    // The cancel is looked at before the PSF, between its rows (the longest part at a large
+    // radius) and between the convolution's channels.
+    bool cancelled = cancel && cancel->load();
+    if (!cancelled) {
+      const Image psf = rgb_psf(optics, radius, cancel);
+      cancelled =
+          psf.data.empty() ||
+          !convolve_with_psf(image, scale_scattered_light(psf, glare->settings.strength), cancel);
     }
+    if (cancelled && unfinished) *unfinished = true;
   }
   return image;
 }

@@ -79,7 +79,8 @@ class RasterBackend final : public RendererBackend {
     raster_settings.msaa_samples = 1;
     raster_settings.shadow_map_size = 0;
     const raster::SceneRasterizer rasterizer(scene, raster_settings);
-    return raster::render_ground_truth(rasterizer, SurfaceMotion(scene), camera, times);
+    return raster::render_ground_truth(rasterizer, SurfaceMotion(scene), camera, times,
+                                       settings.cancel);
   }
 };
 

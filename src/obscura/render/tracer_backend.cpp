@@ -94,10 +94,11 @@ class TracerBackend final : public RendererBackend {
   }
 
   GroundTruthBuffer ground_truth(const CompiledScene& compiled, const Camera& camera,
-                                 const FrameSettings&,
+                                 const FrameSettings& settings,
                                  const GroundTruthTimes& times) const override {
     const auto& traced = static_cast<const CompiledTraceScene&>(compiled);
-    return render_ground_truth(traced.trace(), SurfaceMotion(traced.scene()), camera, times);
+    return render_ground_truth(traced.trace(), SurfaceMotion(traced.scene()), camera, times,
+                               settings.cancel);
   }
 
  private:

@@ -43,7 +43,8 @@ void check_time(const Shutter& compiled, double time_s, const char* which) {
 }  // namespace
 
 GroundTruthBuffer render_ground_truth(const TraceScene& scene, const SurfaceMotion& motion,
-                                      const Camera& camera, const GroundTruthTimes& times) {
+                                      const Camera& camera, const GroundTruthTimes& times,
+                                      const std::atomic<bool>* cancel) {
   if (scene.has_motion()) {
     // The last line exposes a readout later.
     const double readout = camera.exposure_interval().close_s - camera.shutter.close_s;
@@ -57,6 +58,7 @@ GroundTruthBuffer render_ground_truth(const TraceScene& scene, const SurfaceMoti
   GroundTruthBuffer buffer(crop.width(), crop.height());
   for_each_tile_parallel(
       Bounds2i{{0, 0}, {crop.width(), crop.height()}}, kTileSize, [&](const Bounds2i& tile) {
+        if (cancel && cancel->load(std::memory_order_relaxed)) return;
         for (int y = tile.min.y; y < tile.max.y; ++y)
           for (int x = tile.min.x; x < tile.max.x; ++x) {
             const Point2d film_point(crop.min.x + x + 0.5, crop.min.y + y + 0.5);
