@@ -226,8 +226,9 @@ void bind_render(py::module_& m) {
       .def_readonly("aovs", &RenderResult::aovs,
                     "The requested AOVs by name, float32 (H, W, C): 'albedo' (3), 'normal' "
                     "(3, world space), 'depth' (1, depth along the camera's optical axis in "
-                    "metres, what Camera.unproject takes; +inf where nothing was hit), 'range' "
-                    "(1, distance along the ray in metres, +inf where nothing was hit), 'id' (1, "
+                    "metres, what Camera.unproject takes for planar projections; +inf where "
+                    "nothing was hit), 'range' (1, distance along the ray in metres, what "
+                    "unproject takes for spherical ones; +inf where nothing was hit), 'id' (1, "
                     "the mesh index, -1 where nothing was hit).")
       .def_readonly("seconds", &RenderResult::seconds, "Render time in seconds.")
       .def_readonly("rays", &RenderResult::rays, "Rays traced (tracer).")

@@ -3,8 +3,10 @@
 // something (id). Renderers write them tile by tile like the film (no locking needed).
 //
 // The names follow ground truth's (ground_truth_buffer.h): `depth` is the depth along the
-// camera's optical axis (camera-space −z, what Camera::project returns and unproject takes), for
-// every projection; `range` is the distance along the ray from its origin.
+// camera's optical axis (camera-space −z) for every projection — what Camera::project returns
+// and unproject takes for the planar ones; `range` is the distance along the ray from its origin
+// — what they take for the spherical ones (equirectangular, fisheye), whose rays start at the
+// camera.
 #pragma once
 
 #include <cstdint>
