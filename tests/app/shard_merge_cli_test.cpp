@@ -212,8 +212,8 @@ TEST_F(ShardMergeCliErrors, FilesThatAreNotPartialFilmsAreRefusedNamingTheFile) 
 TEST_F(ShardMergeCliErrors, PartsWrittenBeforeTheRangeAovAreRefused) {
   // Their depth image was the distance along the ray, which is the range now: merging them would
   // write it as depth along the optical axis. (Parts kept as fuzz seeds, tracer and rasterizer.)
-  for (const char* seed : {"part-0-of-1-aovs-before-range.exr",
-                           "raster-part-1-of-2-aovs-before-range.exr"}) {
+  for (const char* seed :
+       {"part-0-of-1-aovs-before-range.exr", "raster-part-1-of-2-aovs-before-range.exr"}) {
     const std::string part = test::source_path(std::string("fuzz/corpus/shard/") + seed);
     expect_refused({{part, {part, "no range image", "older obscura"}}});
   }
