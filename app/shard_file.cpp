@@ -257,6 +257,12 @@ ShardFile read_shard(const std::string& path) {
   const std::vector<AovImage> images = read_images(aov_entries);
   frame.layers = read_images(layer_entries);
   if (!images.empty()) {
+    // Parts written before the range AOV had the range where depth now is (along the axis).
+    if (std::none_of(images.begin(), images.end(),
+                     [](const AovImage& image) { return image.name == "range"; }))
+      throw Error(path,
+                  "obscura:aovs: no range image: the part was written by an older obscura, "
+                  "whose depth image was the range; render it again");
     try {
       frame.aovs = AovBuffers::from_images(images);
     } catch (const Error& e) {

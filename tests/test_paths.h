@@ -1,5 +1,7 @@
-// Where tests find the project's files and the CLI. Tests never read ../shared: a user's clone
-// does not have it.
+// Where tests find the project's files and the CLI. Tests do not need ../shared: a user's clone
+// does not have it. The one reader, the file corpus (render/file_corpus_test.cpp), renders
+// ../shared/assets/gltf's models when CI has it beside the clone and skips them, saying so,
+// when not.
 #pragma once
 
 #include <string>

@@ -188,7 +188,7 @@ class RenderSession:
 def render(scene: Union[Scene, RenderSession], camera: Optional[Camera] = None, *,
            renderer: Literal["path", "whitted", "direct", "raster"] = "path",
            spp: Optional[int] = None,
-           aovs: Sequence[Literal["albedo", "normal", "depth", "id"]] = (), threads: int = 0,
+           aovs: Sequence[Literal["albedo", "normal", "depth", "range", "id"]] = (), threads: int = 0,
            seed: Optional[int] = None, sampler: Literal["sobol", "independent"] = "sobol",
            max_depth: int = 0, time_limit: float = 0.0,
            progress: Optional[Callable[[int, int], object]] = None, msaa: Literal[1, 4, 8] = 1,

@@ -60,6 +60,7 @@ RenderResult result_of(RenderOutcome&& outcome, const std::vector<std::string>& 
       Image aov = name == "albedo"   ? outcome.aovs->albedo()
                   : name == "normal" ? outcome.aovs->normal()
                   : name == "depth"  ? outcome.aovs->depth()
+                  : name == "range"  ? outcome.aovs->range()
                                      : outcome.aovs->id();
       r.aovs[py::str(name)] = image_to_array(std::move(aov));
     }
@@ -96,16 +97,16 @@ RenderResult render_frame_py(const py::object& scene_or_session, std::optional<C
                              std::optional<bool> spectral, bool glare,
                              std::optional<double> glare_strength, std::optional<int> glare_radius,
                              std::optional<bool> flare) {
-  static const std::set<std::string> known{"albedo", "normal", "depth", "id"};
+  static const std::set<std::string> known{"albedo", "normal", "depth", "range", "id"};
   for (const std::string& name : aov_names)
     if (!known.count(name))
       throw py::value_error("aovs: unknown AOV '" + name +
-                            "'; expected 'albedo', 'normal', 'depth' or 'id'");
+                            "'; expected 'albedo', 'normal', 'depth', 'range' or 'id'");
   const std::optional<Renderer> kind = parse_renderer(renderer);  // unknown: render_call says so
   if (kind && !kind->capabilities().albedo &&
       std::count(aov_names.begin(), aov_names.end(), "albedo"))
     throw py::value_error("aovs: the renderer '" + std::string(kind->name()) +
-                          "' has no 'albedo' AOV (it has 'normal', 'depth' and 'id')");
+                          "' has no 'albedo' AOV (it has 'normal', 'depth', 'range' and 'id')");
   if (threads < 0)
     throw py::value_error("threads: expected 0 (all cores) or a positive count, got " +
                           std::to_string(threads));
@@ -224,9 +225,11 @@ void bind_render(py::module_& m) {
                     "Linear Rec.709 RGB, float32 (H, W, 3), sharing the film's memory.")
       .def_readonly("aovs", &RenderResult::aovs,
                     "The requested AOVs by name, float32 (H, W, C): 'albedo' (3), 'normal' "
-                    "(3, world space), 'depth' (1, distance along the ray in metres, +inf "
-                    "where nothing was hit), 'id' (1, the mesh index, -1 where nothing was "
-                    "hit).")
+                    "(3, world space), 'depth' (1, depth along the camera's optical axis in "
+                    "metres, what Camera.unproject takes for planar projections; +inf where "
+                    "nothing was hit), 'range' (1, distance along the ray in metres, what "
+                    "unproject takes for spherical ones; +inf where nothing was hit), 'id' (1, "
+                    "the mesh index, -1 where nothing was hit).")
       .def_readonly("seconds", &RenderResult::seconds, "Render time in seconds.")
       .def_readonly("rays", &RenderResult::rays, "Rays traced (tracer).")
       .def_readonly("samples_per_pixel", &RenderResult::done,
@@ -257,10 +260,10 @@ void bind_render(py::module_& m) {
         "RenderSession that keeps what it compiled for the next call) and returns a "
         "RenderResult whose .image is float32 (H, W, 3) linear RGB without a copy of the film. "
         "renderer: 'path', 'whitted', 'direct' or 'raster'; spp: samples per pixel (default: "
-        "the scene file's render.spp, else 32, as `obscura render`); aovs: any "
-        "of 'albedo' (tracer only), 'normal', 'depth', 'id'; threads: 0 = all cores (the image is "
-        "the same "
-        "for any count); seed, sampler ('sobol', 'independent'), max_depth (0: the renderer's "
+        "the scene file's render.spp, else 32, as `obscura render`); aovs: any of 'albedo' "
+        "(tracer only), 'normal', 'depth' (along the optical axis), 'range' (along the ray), "
+        "'id'; threads: 0 = all cores (the image is the same for any count); seed, sampler "
+        "('sobol', 'independent'), max_depth (0: the renderer's "
         "default), time_limit (seconds, 0: none) as on `obscura render`. progress(done, total) "
         "is called from this thread as passes complete; raising from it stops the render and "
         "re-raises. The GIL is released while rendering. Ctrl-C stops the render and raises "

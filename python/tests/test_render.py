@@ -42,9 +42,9 @@ def test_raster_options_and_aovs_match_the_cli(cli, tmp_path):
         "--shading", "flat", "--shadow-map", 256, "--aovs", "-q", "-o", out)
     scene, camera = small_scene_camera(40, 30)
     result = obscura.render(scene, camera, renderer="raster", msaa=4, shading="flat",
-                            shadow_map=256, aovs=["depth", "id", "normal"])
+                            shadow_map=256, aovs=["depth", "range", "id", "normal"])
     assert np.array_equal(result.image, obscura.read_exr(str(out))[0])
-    for name in ("depth", "id", "normal"):
+    for name in ("depth", "range", "id", "normal"):
         written = sorted(tmp_path.glob(f"*{name}*.exr"))
         assert written, f"the CLI wrote no {name} AOV"
         from_cli = obscura.read_exr(str(written[0]))[0]
@@ -71,19 +71,21 @@ def test_image_and_aovs_share_the_renderers_memory():
     assert result.aovs["depth"].shape[2] == 1 and result.aovs["albedo"].shape[2] == 3
 
 
-def test_depth_and_id_against_a_known_plane():
-    # A 4 x 4 m square 5 m in front of a pinhole camera at the origin: the centre pixel's ray
-    # travels 5 m; a ray at angle a from the axis travels 5 / cos(a).
+def test_depth_range_and_id_against_a_known_plane():
+    # A 4 x 4 m square 5 m in front of a pinhole camera at the origin, facing it: every pixel's
+    # depth along the optical axis is 5 m; a ray at angle a from the axis travels 5 / cos(a).
     scene = obscura.Scene()
     grey = scene.add_material("diffuse", color=(0.5, 0.5, 0.5))
     square = np.array([[-2, -2, -5], [2, -2, -5], [2, 2, -5], [-2, 2, -5]], dtype=np.float64)
     scene.add_mesh(square, np.array([[0, 1, 2], [0, 2, 3]]), material=grey)
     scene.set_environment(color=(1, 1, 1))
     camera = obscura.Camera.perspective(fov=90, width=33, height=33)
-    result = obscura.render(scene, camera, renderer="direct", spp=1, aovs=["depth", "id"])
+    result = obscura.render(scene, camera, renderer="direct", spp=1,
+                            aovs=["depth", "range", "id"])
     depth = result.aovs["depth"][..., 0]
+    rng = result.aovs["range"][..., 0]
     ids = result.aovs["id"][..., 0]
-    # One sample per pixel lands somewhere inside the pixel, so each depth lies between the
+    # One sample per pixel lands somewhere inside the pixel, so each range lies between the
     # distances through the pixel's nearest and farthest points (16.5 px = tan 45 degrees).
     def bounds(x, y):
         near = [max(0.0, abs(c - 16.5) - 0.5) for c in (x + 0.5, y + 0.5)]
@@ -93,10 +95,12 @@ def test_depth_and_id_against_a_known_plane():
 
     for x, y in [(16, 16), (20, 16), (12, 19), (21, 12)]:
         low, high = bounds(x, y)
-        assert low * (1 - 1e-6) <= depth[y, x] <= high * (1 + 1e-6), (x, y, depth[y, x])
+        assert low * (1 - 1e-6) <= rng[y, x] <= high * (1 + 1e-6), (x, y, rng[y, x])
+        assert abs(depth[y, x] - 5) <= 5e-6, (x, y, depth[y, x])
     assert ids[16, 16] == 0
     # The square spans +-2 m at 5 m: tan = 0.4 of the half-width 1 (fov 90), so the corners miss.
-    assert ids[0, 0] == -1 and np.isinf(depth[0, 0])
+    assert ids[0, 0] == -1 and np.isinf(depth[0, 0]) and np.isinf(rng[0, 0])
+
 
 
 def test_progress_reports_passes_in_order():

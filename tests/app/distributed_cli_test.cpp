@@ -31,12 +31,12 @@ struct RendererCase {
 
 std::vector<RendererCase> renderer_cases() {
   const std::string tracer_frame = "--width 64 --height 48 --spp 4 --seed 3";
-  const std::vector<std::string> tracer_aovs = {"albedo", "normal", "depth", "id"};
+  const std::vector<std::string> tracer_aovs = {"albedo", "normal", "depth", "range", "id"};
   return {
       {"path", "--renderer path " + tracer_frame, tracer_aovs},
       {"whitted", "--renderer whitted " + tracer_frame, tracer_aovs},
       // The rasterizer's tiles are 64 pixels: 3 × 2 of them, the last column and row cut short.
-      {"raster", "--renderer raster --width 160 --height 120", {"normal", "depth", "id"}},
+      {"raster", "--renderer raster --width 160 --height 120", {"normal", "depth", "range", "id"}},
   };
 }
 
@@ -126,7 +126,7 @@ class DistributedCli : public test::MpiCliTest {
       ASSERT_EQ(results[i + 1].exit_code, 0) << results[i + 1].output;
       const std::string out = path("np" + ranks + ".exr");
       EXPECT_TRUE(same_pixels(out, lone));
-      for (const std::string aov : {"normal", "depth", "id"})
+      for (const std::string aov : {"normal", "depth", "range", "id"})
         EXPECT_TRUE(same_pixels(aov_file(out, aov), aov_file(lone, aov))) << aov;
     }
   }

@@ -45,9 +45,9 @@ std::vector<MergeCase> merge_cases() {
   // render block (the night street asks for glare and flare itself).
   const std::string lens = "spheres-and-lights --lens double-gauss-50mm --width 64 --height 48";
   return {{"path", tracer, {}},
-          {"path_aovs", tracer + " --aovs", {"albedo", "normal", "depth", "id"}},
+          {"path_aovs", tracer + " --aovs", {"albedo", "normal", "depth", "range", "id"}},
           {"raster", raster, {}},
-          {"raster_aovs", raster + " --aovs", {"normal", "depth", "id"}},
+          {"raster_aovs", raster + " --aovs", {"normal", "depth", "range", "id"}},
           {"path_flare_glare", lens + " --spp 2 --flare --glare", {}},
           {"raster_flare_glare", lens + " --renderer raster --flare --glare", {}},
           {"raster_post_dof", "depth-of-field --raster-dof post " + raster, {}},
@@ -172,7 +172,7 @@ TEST_F(ShardMergeCliErrors, PartsThatDoNotMakeOneFrameAreRefusedNamingThePart) {
   auto r = test::run_cli("merge " + p1 + " " + p0 + " -q -o " + path("whole.exr"));
   ASSERT_EQ(r.exit_code, 0) << r.output;
   fs::remove(path("whole.exr"));
-  for (const char* aov : {"albedo", "normal", "depth", "id"})
+  for (const char* aov : {"albedo", "normal", "depth", "range", "id"})
     fs::remove(aov_file(path("whole.exr"), aov));
 
   expect_refused({
@@ -207,6 +207,16 @@ TEST_F(ShardMergeCliErrors, FilesThatAreNotPartialFilmsAreRefusedNamingTheFile) 
       {p0 + " " + no_aovs, {no_aovs, "obscura:aovs"}},
       {p0 + " " + aovs_unlisted, {aovs_unlisted, "obscura:aovs"}},
   });
+}
+
+TEST_F(ShardMergeCliErrors, PartsWrittenBeforeTheRangeAovAreRefused) {
+  // Their depth image was the distance along the ray, which is the range now: merging them would
+  // write it as depth along the optical axis. (Parts kept as fuzz seeds, tracer and rasterizer.)
+  for (const char* seed :
+       {"part-0-of-1-aovs-before-range.exr", "raster-part-1-of-2-aovs-before-range.exr"}) {
+    const std::string part = test::source_path(std::string("fuzz/corpus/shard/") + seed);
+    expect_refused({{part, {part, "no range image", "older obscura"}}});
+  }
 }
 
 TEST_F(ShardMergeCliErrors, ShardOptionsThatCannotWorkAreRefusedBeforeRendering) {

@@ -44,7 +44,7 @@ TEST_F(TracerCli, UnknownRendererOrSamplerIsAUsageError) {
 TEST_F(TracerCli, AovsAreWrittenBesideTheImage) {
   auto r = test::run_cli("render --width 16 --height 16 --spp 1 --aovs -o " + path("a.png"));
   ASSERT_EQ(r.exit_code, 0) << r.output;
-  for (const char* name : {"albedo", "normal", "depth", "id"}) {
+  for (const char* name : {"albedo", "normal", "depth", "range", "id"}) {
     std::string file = path(std::string("a.") + name + ".exr");
     EXPECT_TRUE(fs::exists(file)) << file;
     EXPECT_NE(r.output.find(file), std::string::npos);

@@ -50,7 +50,8 @@ NamedImages target_images(const Film& film, const RenderTarget& target, const Ca
   if (target.has_aovs()) {
     out.add("view depth", target.view_depth_image());
     out.add("normal", normal_image(target));
-    out.add("distance", distance_image(target, camera));
+    out.add("depth", depth_image(target));
+    out.add("range", range_image(target, camera));
     out.add("id", id_image(target));
   }
   return out;

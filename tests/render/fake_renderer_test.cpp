@@ -75,7 +75,7 @@ class SkyBackend final : public RendererBackend {
                       prepared.generate_ray(cs.film_point, {cs.lens.x, cs.lens.y}, cs.time_s);
                   film.add_sample({x, y}, ray ? sky(ray->direction) : Rgb(),
                                   float(cs.filter_weight));
-                  if (aovs) aovs->add_sample({x, y}, false, {}, {}, 0, 0);
+                  if (aovs) aovs->add_sample({x, y}, false, {}, {}, 0, 0, 0);
                 }
           },
           [&](int done, int count) { passes.report(progress, pass, done, count); });

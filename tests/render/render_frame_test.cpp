@@ -124,12 +124,12 @@ TEST(RenderFrame, RasterIsRasterRenderBitForBit) {
   AovBuffers direct_aovs(kSize, kSize);
   raster::render(scene, scene.camera, direct_settings, direct, &direct_aovs);
   EXPECT_TRUE(same_bits(film.sums(), direct.sums()));
-  ASSERT_EQ(aovs.images().size(), 3u);  // no albedo from the rasterizer
-  for (size_t i = 0; i < 3; ++i)
+  ASSERT_EQ(aovs.images().size(), 4u);  // no albedo from the rasterizer
+  for (size_t i = 0; i < 4; ++i)
     EXPECT_TRUE(same_bits(aovs.images()[i].image, direct_aovs.images()[i].image));
 }
 
-TEST(RenderFrame, BothRenderersFillTheAovsWithThePlanesDistanceNormalAndId) {
+TEST(RenderFrame, BothRenderersFillTheAovsWithThePlanesDepthRangeNormalAndId) {
   const Scene scene = plane_scene();
   for (Renderer renderer : {renderer_named("path"), renderer_named("raster")}) {
     SCOPED_TRACE(renderer.name());
@@ -138,11 +138,14 @@ TEST(RenderFrame, BothRenderersFillTheAovsWithThePlanesDistanceNormalAndId) {
     AovBuffers aovs(kSize, kSize);
     render_frame(scene, scene.camera, settings, film, &aovs);
     EXPECT_EQ(aovs.has_albedo(), renderer != renderer_named("raster"));
-    const Image depth = aovs.depth(), normal = aovs.normal(), id = aovs.id(),
+    const Image depth = aovs.depth(), range = aovs.range(), normal = aovs.normal(), id = aovs.id(),
                 albedo = aovs.albedo();
     for (int y = 0; y < kSize; ++y)
       for (int x = 0; x < kSize; ++x) {
-        ASSERT_NEAR(depth.at(x, y, 0), plane_distance(x, y), 2e-4 * plane_distance(x, y))
+        // depth along the optical axis: the plane faces the camera, so every pixel's is its
+        // distance; range along the pixel centre's ray.
+        ASSERT_NEAR(depth.at(x, y, 0), kPlaneDistance, 2e-4 * kPlaneDistance) << x << "," << y;
+        ASSERT_NEAR(range.at(x, y, 0), plane_distance(x, y), 2e-4 * plane_distance(x, y))
             << x << "," << y;
         ASSERT_NEAR(normal.at(x, y, 2), 1, 1e-5);
         ASSERT_EQ(id.at(x, y, 0), 0);

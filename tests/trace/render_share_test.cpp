@@ -28,12 +28,13 @@ constexpr int kWidth = 64, kHeight = 48;
 
 // What one process's render leaves: the film's sums and the AOV images, and its stats.
 struct PartImages {
-  std::vector<Image> images;  // sums, albedo, normal, depth, id
+  std::vector<Image> images;  // sums, albedo, normal, depth, range, id
   RenderStats stats;
 };
 
 const std::vector<std::string>& image_names() {
-  static const std::vector<std::string> names = {"film sums", "albedo", "normal", "depth", "id"};
+  static const std::vector<std::string> names = {"film sums", "albedo", "normal",
+                                                 "depth",     "range",  "id"};
   return names;
 }
 
@@ -60,7 +61,7 @@ PartImages render_images(const Integrator& integrator, const RenderSettings& set
   AovBuffers aovs(kWidth, kHeight);
   PartImages part;
   part.stats = render(box.trace_scene, box.scene.camera, integrator, settings, film, {}, &aovs);
-  part.images = {film.sums(), aovs.albedo(), aovs.normal(), aovs.depth(), aovs.id()};
+  part.images = {film.sums(), aovs.albedo(), aovs.normal(), aovs.depth(), aovs.range(), aovs.id()};
   return part;
 }
 

@@ -16,7 +16,7 @@ AovBuffers::AovBuffers(int width, int height, bool has_albedo)
 }
 
 void AovBuffers::add_sample(Point2i pixel, bool hit, Rgb albedo, Normal3f normal, float depth,
-                            uint32_t id) {
+                            float range, uint32_t id) {
   Pixel& p = pixels_[size_t(pixel.y) * width_ + pixel.x];
   ++p.samples;
   if (!hit) return;
@@ -24,14 +24,17 @@ void AovBuffers::add_sample(Point2i pixel, bool hit, Rgb albedo, Normal3f normal
   p.albedo += albedo;
   p.normal += to_vector(normal);
   p.depth += depth;
+  p.range += range;
   if (p.id < 0) p.id = int32_t(id);
 }
 
-void AovBuffers::set_pixel(Point2i pixel, Rgb albedo, Vector3f normal, float depth, int32_t id) {
+void AovBuffers::set_pixel(Point2i pixel, Rgb albedo, Vector3f normal, float depth, float range,
+                           int32_t id) {
   Pixel& p = pixels_[size_t(pixel.y) * width_ + pixel.x];
   p = Pixel{.albedo = albedo,
             .normal = normal,
             .depth = depth,
+            .range = range,
             .samples = 1,
             .hits = 1,
             .id = id,
@@ -65,15 +68,35 @@ Image AovBuffers::normal() const {
   return image;
 }
 
+namespace {
+
+// The mean of a per-hit quantity (`sum` over `hits`), the resolved value itself, or +∞ (no hit).
+float mean_over_hits(bool resolved, double sum, int hits) {
+  return resolved   ? float(sum)
+         : hits > 0 ? float(sum / hits)
+                    : std::numeric_limits<float>::infinity();
+}
+
+}  // namespace
+
 Image AovBuffers::depth() const {
   Image image(width_, height_, 1);
   image.channel_names = {"Z"};
   for (int y = 0; y < height_; ++y)
     for (int x = 0; x < width_; ++x) {
       const Pixel& p = pixels_[size_t(y) * width_ + x];
-      image.at(x, y, 0) = p.resolved   ? float(p.depth)
-                          : p.hits > 0 ? float(p.depth / p.hits)
-                                       : std::numeric_limits<float>::infinity();
+      image.at(x, y, 0) = mean_over_hits(p.resolved, p.depth, p.hits);
+    }
+  return image;
+}
+
+Image AovBuffers::range() const {
+  Image image(width_, height_, 1);
+  image.channel_names = {"range"};
+  for (int y = 0; y < height_; ++y)
+    for (int x = 0; x < width_; ++x) {
+      const Pixel& p = pixels_[size_t(y) * width_ + x];
+      image.at(x, y, 0) = mean_over_hits(p.resolved, p.range, p.hits);
     }
   return image;
 }
@@ -91,6 +114,7 @@ std::vector<AovImage> AovBuffers::images() const {
   if (has_albedo_) images.push_back({"albedo", albedo()});
   images.push_back({"normal", normal()});
   images.push_back({"depth", depth()});
+  images.push_back({"range", range()});
   images.push_back({"id", id()});
   return images;
 }
@@ -107,15 +131,18 @@ AovBuffers AovBuffers::from_images(const std::vector<AovImage>& images) {
     return found;
   };
   for (const AovImage& aov : images)
-    if (aov.name != "albedo" && aov.name != "normal" && aov.name != "depth" && aov.name != "id")
-      throw Error("AOV image '" + aov.name + "'", "expected albedo, normal, depth or id");
+    if (aov.name != "albedo" && aov.name != "normal" && aov.name != "depth" &&
+        aov.name != "range" && aov.name != "id")
+      throw Error("AOV image '" + aov.name + "'", "expected albedo, normal, depth, range or id");
   const Image* albedo = find("albedo", 3);
   const Image* normal = find("normal", 3);
   const Image* depth = find("depth", 1);
+  const Image* range = find("range", 1);
   const Image* id = find("id", 1);
-  if (!normal || !depth || !id) throw Error("AOV images", "expected normal, depth and id images");
+  if (!normal || !depth || !range || !id)
+    throw Error("AOV images", "expected normal, depth, range and id images");
   const int width = normal->width, height = normal->height;
-  for (const Image* image : {albedo, depth, id})
+  for (const Image* image : {albedo, depth, range, id})
     if (image && (image->width != width || image->height != height))
       throw Error("AOV images", "expected every image of " + std::to_string(width) + "x" +
                                     std::to_string(height) + " pixels");
@@ -124,7 +151,7 @@ AovBuffers AovBuffers::from_images(const std::vector<AovImage>& images) {
     for (int x = 0; x < width; ++x)
       buffers.set_pixel({x, y}, albedo ? albedo->rgb(x, y) : Rgb(),
                         {normal->at(x, y, 0), normal->at(x, y, 1), normal->at(x, y, 2)},
-                        depth->at(x, y, 0), int32_t(id->at(x, y, 0)));
+                        depth->at(x, y, 0), range->at(x, y, 0), int32_t(id->at(x, y, 0)));
   return buffers;
 }
 

@@ -12,7 +12,7 @@ std::string aov_path(const std::string& output, const std::string& name) {
 
 std::vector<std::string> aov_paths(const std::string& output, bool albedo) {
   std::vector<std::string> paths;
-  for (const char* name : {"albedo", "normal", "depth", "id"})
+  for (const char* name : {"albedo", "normal", "depth", "range", "id"})
     if (albedo || std::string(name) != "albedo") paths.push_back(aov_path(output, name));
   return paths;
 }

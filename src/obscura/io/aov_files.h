@@ -1,6 +1,6 @@
 // The one writer of AOVs: each of a frame's auxiliary images to its own OpenEXR file beside the
-// image (render.png → render.albedo.exr, render.normal.exr, render.depth.exr, render.id.exr), for
-// either renderer.
+// image (render.png → render.albedo.exr, render.normal.exr, render.depth.exr, render.range.exr,
+// render.id.exr), for either renderer. depth is along the optical axis, range along the ray.
 #pragma once
 
 #include <string>

@@ -119,7 +119,7 @@ struct RenderedView {
   ScreenWindow window;
   int width = 0, height = 0;
   Image color;
-  std::optional<Image> normal, distance, id;
+  std::optional<Image> normal, depth, id;  // depth along the view's axis
 
   // The view's raster point for direction `d` (camera frame); nothing behind the view.
   std::optional<Point2d> raster_of(Vector3d d) const {
@@ -128,6 +128,12 @@ struct RenderedView {
     double tx = l.x / -l.z, ty = l.y / -l.z;
     return Point2d((tx - window.x_min) / (window.x_max - window.x_min) * width,
                    (window.y_max - ty) / (window.y_max - window.y_min) * height);
+  }
+  // The point (camera frame) the view's pixel (x, y) sees at its centre, `view_depth` deep.
+  Point3d point_at(int x, int y, double view_depth) const {
+    double tx = window.x_min + (x + 0.5) / width * (window.x_max - window.x_min);
+    double ty = window.y_max - (y + 0.5) / height * (window.y_max - window.y_min);
+    return inverse(view_from_camera)(Point3d(tx * view_depth, ty * view_depth, -view_depth));
   }
 };
 
@@ -249,7 +255,7 @@ LensRender render_through_lens(const SceneRasterizer& rasterizer, const Camera& 
       for (float& value : r.color.data) value *= rescale;
     if (aovs) {
       r.normal = normal_image(target);
-      r.distance = distance_image(target, view);
+      r.depth = depth_image(target);
       r.id = id_image(target);
     }
   }
@@ -278,8 +284,10 @@ LensRender render_through_lens(const SceneRasterizer& rasterizer, const Camera& 
   if (aovs) {
     result.normal.emplace(width, height, 3);
     result.normal->channel_names = {"X", "Y", "Z"};
-    result.distance.emplace(width, height, 1);
-    result.distance->channel_names = {"Z"};
+    result.depth.emplace(width, height, 1);
+    result.depth->channel_names = {"Z"};
+    result.range.emplace(width, height, 1);
+    result.range->channel_names = {"range"};
     result.id.emplace(width, height, 1);
     result.id->channel_names = {"id"};
   }
@@ -301,7 +309,8 @@ LensRender render_through_lens(const SceneRasterizer& rasterizer, const Camera& 
       if (!aovs) continue;
       // The AOVs: the nearest view pixel along the pixel centre's ray.
       float inf = std::numeric_limits<float>::infinity();
-      result.distance->at(x, y, 0) = inf;
+      result.depth->at(x, y, 0) = inf;
+      result.range->at(x, y, 0) = inf;
       result.id->at(x, y, 0) = -1;
       auto ray = prepared.generate_ray({crop.min.x + x + 0.5, crop.min.y + y + 0.5});
       auto at = ray ? locate(ray->direction) : std::nullopt;
@@ -310,7 +319,19 @@ LensRender render_through_lens(const SceneRasterizer& rasterizer, const Camera& 
       int vx = std::clamp(int(at->second.x), 0, v.width - 1);
       int vy = std::clamp(int(at->second.y), 0, v.height - 1);
       for (int c = 0; c < 3; ++c) result.normal->at(x, y, c) = v.normal->at(vx, vy, c);
-      result.distance->at(x, y, 0) = v.distance->at(vx, vy, 0);
+      const float view_depth = v.depth->at(vx, vy, 0);
+      if (std::isfinite(view_depth)) {
+        const Point3d seen = v.point_at(vx, vy, view_depth);
+        const double depth = -seen.z;
+        // The range of the point of the pixel centre's ray at that depth (exact on surfaces facing
+        // the camera); rays nearly across the axis, where depth tells little, take the seen
+        // point's projection onto the ray.
+        const double along = -ray->direction.z;
+        const double range = std::abs(along) > 0.05 ? (depth + ray->origin.z) / along
+                                                    : dot(seen - ray->origin, ray->direction);
+        result.depth->at(x, y, 0) = float(depth);
+        result.range->at(x, y, 0) = float(range);
+      }
       result.id->at(x, y, 0) = v.id->at(vx, vy, 0);
     }
   });

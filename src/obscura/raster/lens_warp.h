@@ -44,9 +44,9 @@ struct LensViews {
 LensViews plan_lens_views(const Camera& camera, const LensWarpSettings& settings);
 
 struct LensRender {
-  // With the rasterizer's AOVs on: the tracer's normal, distance and id images, looked up at each
-  // pixel centre's ray (nearest view pixel).
-  std::optional<Image> normal, distance, id;
+  // With the rasterizer's AOVs on: the tracer's normal, depth (along the optical axis), range
+  // (along the ray) and id images, looked up at each pixel centre's ray (nearest view pixel).
+  std::optional<Image> normal, depth, range, id;
   std::vector<std::string> warnings;
 };
 // Renders `camera` (any projection) through its lens views into `film` (the crop's size), one

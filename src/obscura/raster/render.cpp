@@ -24,23 +24,25 @@ double seconds_since(Clock::time_point start) {
   return std::chrono::duration<double>(Clock::now() - start).count();
 }
 
-// Fills `aovs` (replaced by buffers without albedo) from the rasterizer's normal, distance and
-// id images.
-void fill_aovs(AovBuffers& aovs, const Image& normal, const Image& distance, const Image& id) {
+// Fills `aovs` (replaced by buffers without albedo) from the rasterizer's normal, depth, range
+// and id images.
+void fill_aovs(AovBuffers& aovs, const Image& normal, const Image& depth, const Image& range,
+               const Image& id) {
   aovs = AovBuffers(normal.width, normal.height, false);
   for (int y = 0; y < normal.height; ++y)
     for (int x = 0; x < normal.width; ++x)
       aovs.set_pixel({x, y}, Rgb(), {normal.at(x, y, 0), normal.at(x, y, 1), normal.at(x, y, 2)},
-                     distance.at(x, y, 0), int32_t(id.at(x, y, 0)));
+                     depth.at(x, y, 0), range.at(x, y, 0), int32_t(id.at(x, y, 0)));
 }
 
 void fill_aovs(AovBuffers& aovs, const RenderTarget& target, const Camera& camera) {
-  fill_aovs(aovs, normal_image(target), distance_image(target, camera), id_image(target));
+  fill_aovs(aovs, normal_image(target), depth_image(target), range_image(target, camera),
+            id_image(target));
 }
 
 // Draws one frame of `camera` (a global shutter) into `film` and returns its AOV images (normal,
-// distance, id) when the rasterizer keeps them: through the camera's matrices, or — for a camera
-// without a projection matrix (calibrated lens, fisheye, panorama) — through pinhole views
+// depth, range, id) when the rasterizer keeps them: through the camera's matrices, or — for a
+// camera without a projection matrix (calibrated lens, fisheye, panorama) — through pinhole views
 // resampled along its rays (lens_warp.h).
 std::vector<Image> draw_frame(const SceneRasterizer& rasterizer, const Camera& camera, Film& film,
                               const WorkShare& share, std::vector<std::string>& warnings) {
@@ -50,13 +52,14 @@ std::vector<Image> draw_frame(const SceneRasterizer& rasterizer, const Camera& c
     for (const std::string& w : lens.warnings)
       if (std::find(warnings.begin(), warnings.end(), w) == warnings.end()) warnings.push_back(w);
     if (!lens.normal) return {};
-    return {std::move(*lens.normal), std::move(*lens.distance), std::move(*lens.id)};
+    return {std::move(*lens.normal), std::move(*lens.depth), std::move(*lens.range),
+            std::move(*lens.id)};
   }
   RenderTarget target = rasterizer.make_target(camera);
   target.set_share(share.part, share.parts);
   rasterizer.render(camera, film, &target);
   if (!rasterizer.settings().aovs) return {};
-  return {normal_image(target), distance_image(target, camera), id_image(target)};
+  return {normal_image(target), depth_image(target), range_image(target, camera), id_image(target)};
 }
 
 // One sharp frame at mid-shutter (or band by band for a rolling shutter).
@@ -81,7 +84,7 @@ RenderStats render_sharp(const Scene& scene, const Camera& camera, const RenderS
         "the rasterizer draws this " + std::string(projection_name(camera.projection)) + " camera" +
         (rolling ? " with a rolling shutter" : "") + " without motion blur (the tracer blurs it)");
   stats.frames = stats.frames_requested = 1;
-  if (aovs && images.size() == 3) fill_aovs(*aovs, images[0], images[1], images[2]);
+  if (aovs && images.size() == 4) fill_aovs(*aovs, images[0], images[1], images[2], images[3]);
   return stats;
 }
 

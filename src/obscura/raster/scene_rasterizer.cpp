@@ -221,6 +221,20 @@ Matrix4 crop_from_full_ndc(const Camera& camera) {
   return crop_ndc_from_raster * camera.raster_from_ndc();
 }
 
+// An orthographic projection's clip w is 1, which the tile rasterizer keeps as the aovs' view
+// depth: there the view depth is read back from the window depth instead, which is linear in it
+// (z_ndc = a·z + b for camera-space z = −depth, window z = (z_ndc + 1) / 2).
+void orthographic_view_depth(RenderTarget& target, const Matrix4& projection) {
+  const double a = projection[2][2], b = projection[2][3];
+  float* view_depth = target.view_depth();
+  for (int y = 0; y < target.height(); ++y)
+    for (int x = 0; x < target.width(); ++x)
+      for (int s = 0; s < target.samples(); ++s) {
+        float& depth = view_depth[target.sample_index(x, y, s)];
+        if (std::isfinite(depth)) depth = float(-((2.0 * target.depth_at(x, y, s) - 1) - b) / a);
+      }
+}
+
 // The target's colours resolved to one per pixel (the mean of its samples), row-major.
 std::vector<Rgb> resolved_colors(const RenderTarget& target) {
   std::vector<Rgb> pixels(size_t(target.width()) * size_t(target.height()));
@@ -432,8 +446,8 @@ void SceneRasterizer::render_frame(const Camera& camera, const RasterFrame& fram
                     std::to_string(crop.width()) + "x" + std::to_string(crop.height()) + ")");
   const Matrix4 view = frame.view ? *frame.view : camera.view_matrix(frame.time_s);
   const Matrix4 projection = frame.projection ? *frame.projection : camera.projection_matrix();
-  const Matrix4 clip_from_world =
-      crop_from_full_ndc(camera) * fit_depth_range(projection, view, bounds_, camera.near_m) * view;
+  const Matrix4 fitted = fit_depth_range(projection, view, bounds_, camera.near_m);
+  const Matrix4 clip_from_world = crop_from_full_ndc(camera) * fitted * view;
   std::optional<Matrix4> world_from_clip = inverse(clip_from_world);
   std::optional<Matrix4> world_from_camera = inverse(view);
   if (!world_from_clip || !world_from_camera)
@@ -493,6 +507,7 @@ void SceneRasterizer::render_frame(const Camera& camera, const RasterFrame& fram
     for (size_t i : transmissive) draw_instance(target, base, clip_from_world, i, frame.time_s);
   }
   if (!blended.empty()) draw_blended(target, base, clip_from_world, view, blended, frame.time_s);
+  if (base.eye_at_infinity && target.has_aovs()) orthographic_view_depth(target, fitted);
 }
 
 void SceneRasterizer::draw_instance(RenderTarget& target, const InstanceUniforms& base,
@@ -609,9 +624,15 @@ Image id_image(const RenderTarget& target) {
   return image;
 }
 
-Image distance_image(const RenderTarget& target, const Camera& camera) {
+Image depth_image(const RenderTarget& target) {
   Image image = target.view_depth_image();
   image.channel_names = {"Z"};
+  return image;
+}
+
+Image range_image(const RenderTarget& target, const Camera& camera) {
+  Image image = target.view_depth_image();
+  image.channel_names = {"range"};
   if (!std::holds_alternative<Perspective>(camera.projection)) return image;
   Bounds2i crop = camera.film.crop_pixels();
   const PreparedCamera prepared = camera.prepare();

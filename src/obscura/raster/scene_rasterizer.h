@@ -127,9 +127,12 @@ class SceneRasterizer {
 // The outputs the tracer also writes (its AOVs), from a target rendered with aovs on:
 // the instance index per pixel (−1 for the background), as float;
 Image id_image(const RenderTarget& target);
-// the distance from the camera along the pixel centre's ray (m; +∞ for the background), from
-// the view depth (perspective: scaled by the ray's length per unit depth);
-Image distance_image(const RenderTarget& target, const Camera& camera);
+// the depth along the camera's optical axis (camera-space −z, m; +∞ for the background), one
+// channel "Z" (the view depth);
+Image depth_image(const RenderTarget& target);
+// the distance from the camera along the pixel centre's ray (m; +∞ for the background), one
+// channel "range", from the view depth (perspective: scaled by the ray's length per unit depth);
+Image range_image(const RenderTarget& target, const Camera& camera);
 // the world-space shading normal facing the camera.
 Image normal_image(const RenderTarget& target);
 

@@ -15,7 +15,8 @@ void record_first_hit(const TraceScene& scene, const SurfaceHit& hit, Vector3f d
   first_hit->hit = true;
   first_hit->albedo = scene.material(hit.material).bsdf_at(hit).albedo();
   first_hit->normal = reflection_normal(hit, normalize(-direction));
-  first_hit->depth = hit.t * length(direction);
+  first_hit->position = hit.position;
+  first_hit->range = hit.t * length(direction);
   first_hit->id = hit.mesh;
 }
 

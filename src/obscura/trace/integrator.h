@@ -25,10 +25,11 @@ struct RayCounts {
 // What the camera ray met first: the auxiliary outputs (AOVs) denoisers and compositors use.
 struct FirstHit {
   bool hit = false;
-  Rgb albedo;       // the surface's reflectance (see AnyBsdf::albedo)
-  Normal3f normal;  // world-space shading normal, facing the camera
-  float depth = 0;  // distance from the ray origin (m)
-  uint32_t id = 0;  // the mesh hit
+  Rgb albedo;        // the surface's reflectance (see AnyBsdf::albedo)
+  Normal3f normal;   // world-space shading normal, facing the camera
+  Point3f position;  // world-space point hit
+  float range = 0;   // distance from the ray origin (m)
+  uint32_t id = 0;   // the mesh hit
 };
 
 class Integrator {

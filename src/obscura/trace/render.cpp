@@ -10,6 +10,7 @@
 #include "obscura/color/rgb_to_spectrum.h"
 #include "obscura/film/pass_schedule.h"
 #include "obscura/math/error.h"
+#include "obscura/scene/ground_truth.h"
 
 namespace obscura {
 
@@ -106,7 +107,12 @@ RenderStats render(const TraceScene& scene, const Camera& camera, const Integrat
             radiance = integrator.radiance(scene, *ray, sampler, counts, first_hit);
           film.add_sample({x, y}, radiance * (exposure * ray_weight), float(cs.filter_weight));
           if (aovs)
-            aovs->add_sample({x, y}, first.hit, first.albedo, first.normal, first.depth, first.id);
+            aovs->add_sample({x, y}, first.hit, first.albedo, first.normal,
+                             // ground truth's Z (scene/ground_truth.h) at the sample's time
+                             first.hit ? float(optical_axis_depth(
+                                             prepared_camera, Point3d(first.position), cs.time_s))
+                                       : 0.f,
+                             first.range, first.id);
         }
       }
     }
