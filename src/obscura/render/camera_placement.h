@@ -11,9 +11,9 @@
 namespace obscura {
 
 struct CameraPlacement {
-  std::optional<Point3d> position;  // where the camera's centre is (m)
-  std::optional<Point3d> look_at;   // the point the optical axis passes through
-  std::optional<Vector3d> up;       // the direction the image's up is turned towards
+  std::optional<Point3d> position = std::nullopt;  // where the camera's centre is (m)
+  std::optional<Point3d> look_at = std::nullopt;   // the point the optical axis passes through
+  std::optional<Vector3d> up = std::nullopt;       // the direction the image's up is turned towards
   bool empty() const { return !position && !look_at && !up; }
 };
 

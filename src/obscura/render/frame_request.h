@@ -18,13 +18,13 @@ inline constexpr int kDefaultSamplesPerPixel = 32;
 
 // Each field set only when the caller gave it.
 struct FrameRequest {
-  std::optional<int> samples_per_pixel;
-  std::optional<uint64_t> seed;
-  std::optional<bool> spectral;          // the path tracer's spectral transport
-  bool glare = false;                    // --glare: the aperture's own strength unless given
-  std::optional<double> glare_strength;  // implies glare
-  std::optional<int> glare_radius_px;
-  std::optional<bool> flare;
+  std::optional<int> samples_per_pixel = std::nullopt;
+  std::optional<uint64_t> seed = std::nullopt;
+  std::optional<bool> spectral = std::nullopt;  // the path tracer's spectral transport
+  bool glare = false;                           // --glare: the aperture's own strength unless given
+  std::optional<double> glare_strength = std::nullopt;  // implies glare
+  std::optional<int> glare_radius_px = std::nullopt;
+  std::optional<bool> flare = std::nullopt;
 };
 
 struct ResolvedFrameRequest {

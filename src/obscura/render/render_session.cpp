@@ -13,9 +13,9 @@
 namespace obscura {
 
 struct RenderSession::Compiled {
-  std::string_view form;  // RendererBackend::compiled_form
-  std::unique_ptr<CompiledScene> scene;
-  std::vector<uint32_t> changed;  // meshes posed again since it was compiled or brought up to date
+  std::string_view form = {};  // RendererBackend::compiled_form
+  std::unique_ptr<CompiledScene> scene = nullptr;
+  std::vector<uint32_t> changed = {};  // meshes posed again since compiled or brought up to date
 };
 
 RenderSession::RenderSession(const Scene& scene) : scene_(scene) {}
@@ -35,7 +35,8 @@ const CompiledScene& RenderSession::compiled(Renderer renderer, const Shutter& i
       return *it->scene;
     }
   }
-  if (it == compiled_.end()) it = compiled_.insert(compiled_.end(), {backend.compiled_form(), {}});
+  if (it == compiled_.end())
+    it = compiled_.insert(compiled_.end(), Compiled{.form = backend.compiled_form()});
   it->scene.reset();  // the old compilation's memory goes before the new one is built
   it->changed.clear();
   it->scene = backend.compile(scene_, interval);
