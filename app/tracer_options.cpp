@@ -60,8 +60,10 @@ void add_tracer_options(CLI::App& render, TracerOptions& o) {
       "Spectral light transport (path tracer only): wavelengths per path, colours lifted to "
       "spectra, dispersive glass; whitted, direct and raster refuse it. --no-spectral: RGB "
       "transport even where the scene file asks for spectral");
-  render.add_flag("--aovs", o.aovs,
-                  "Also write albedo, normal, depth and id images beside the output (.exr)");
+  render.add_flag(
+      "--aovs", o.aovs,
+      "Also write albedo, normal, depth (along the optical axis), range (along the ray) and id "
+      "images beside the output (.exr)");
 }
 
 void validate(TracerOptions& o) {

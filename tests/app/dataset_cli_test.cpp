@@ -167,7 +167,9 @@ TEST_F(DatasetMpi, RanksWriteTheSameBytesAsOneProcess) {
   ASSERT_EQ(runs[0].exit_code, 0) << runs[0].output;
   ASSERT_EQ(runs[1].exit_code, 0) << runs[1].output;
   const auto one = files_of(path("one")), three = files_of(path("three"));
-  EXPECT_EQ(one.size(), 5u * 6 + 3 + 1 + 5);  // images + 4 AOVs + ground truth; model; opencv
+  // Per view: the image, 5 AOVs (albedo, normal, depth, range, id), ground truth; the model
+  // (3 COLMAP files, transforms.json); 5 OpenCV files.
+  EXPECT_EQ(one.size(), 5u * 7 + 3 + 1 + 5);
   ASSERT_EQ(one.size(), three.size());
   for (const auto& [name, bytes] : one) EXPECT_TRUE(three.at(name) == bytes) << name;
 }

@@ -31,6 +31,13 @@ bool same_bytes(const std::vector<T>& a, const std::vector<T>& b) {
   return a.size() == b.size() && std::memcmp(a.data(), b.data(), a.size() * sizeof(T)) == 0;
 }
 
+GltfLoadOptions at_moment(double time_s, double exposure_s) {
+  GltfLoadOptions options;
+  options.time_s = time_s;
+  options.exposure_s = exposure_s;
+  return options;
+}
+
 bool same_mesh(const Mesh& a, const Mesh& b) {
   if (a.deformation.positions.size() != b.deformation.positions.size() ||
       a.deformation.normals.size() != b.deformation.normals.size())
@@ -53,7 +60,7 @@ TEST(ScenePose, PosingAgainIsReadingTheFileAtThatMoment) {
     for (auto [time, exposure] : {std::pair{0.5, 0.0}, {1.7, 1.0 / 30}, {3.1, 0.0}, {0.2, 0.5}}) {
       const std::vector<uint32_t> posed = scene.pose(time, exposure);
       ASSERT_FALSE(posed.empty());
-      const Scene read = load_gltf(path, {.time_s = time, .exposure_s = exposure});
+      const Scene read = load_gltf(path, at_moment(time, exposure));
       ASSERT_EQ(read.meshes.size(), scene.meshes.size());
       for (size_t m = 0; m < read.meshes.size(); ++m)
         EXPECT_TRUE(same_mesh(scene.meshes[m], read.meshes[m]))
@@ -136,7 +143,7 @@ TEST(TraceSceneUpdate, APosedSkinTracesAsANewCompilation) {
 
 TEST(TraceSceneUpdate, ADeformingSkinOverTheSameShutterTracesAsANewCompilation) {
   // Motion blur: the skin is a prototype with vertices per time step over the shutter.
-  Scene scene = load_gltf(test::data_path(kSkin), {.time_s = 0.5, .exposure_s = 0.2});
+  Scene scene = load_gltf(test::data_path(kSkin), at_moment(0.5, 0.2));
   const Shutter shutter{.open_s = 0.4, .close_s = 0.6};
   TraceScene kept(scene, device(), {.shutter = shutter});
   ASSERT_TRUE(kept.has_motion());
@@ -253,7 +260,7 @@ TEST(RenderSession, ASkinPosedPerFrameRendersAsTheFileLoadedAtEachMoment) {
     const double times[] = {0.25, 1.0, 1.75, 3.0};
     for (double time : times) {
       session.scene_changed(scene.pose(time, 0));
-      const Scene alone = load_scene(path, {.time_s = time});
+      const Scene alone = load_scene(path, at_moment(time, 0));
       // The automatic camera frames the file at time 0 whatever the moment.
       ASSERT_EQ(alone.camera.world_from_camera.at(0).matrix(),
                 scene.camera.world_from_camera.at(0).matrix());
