@@ -4,6 +4,7 @@
 #include <pybind11/stl.h>
 
 #include "bindings.h"
+#include "interruptible.h"
 #include "obscura/render/dataset.h"
 #include "obscura/render/render_session.h"
 #include "render_call.h"
@@ -29,13 +30,14 @@ py::dict render_dataset_py(const Scene& scene, const std::string& views, const s
   plan.outputs.aovs = aovs;
   plan.outputs.formats = formats;
   DatasetReport report;
-  {
-    py::gil_scoped_release release;
+  run_interruptible([&](const std::atomic<bool>& cancel) {
+    // Ctrl-C stops the view in progress (written views stay: a later call resumes).
+    plan.settings.cancel = &cancel;
     const Camera base = camera ? *camera : copy->camera;
     plan.views = dataset_views(*copy, base, views);
     RenderSession session(*copy);
     report = render_dataset(session, plan);
-  }
+  });
   for (const std::string& warning : report.warnings)
     if (PyErr_WarnEx(PyExc_UserWarning, warning.c_str(), 1) != 0) throw py::error_already_set();
   py::dict out;

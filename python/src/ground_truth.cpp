@@ -1,7 +1,7 @@
 // ground_truth(): the exact per-pixel-centre channels `obscura render --ground-truth` writes
 // (docs/ground_truth.md) as numpy arrays by layer — depth, range, position, normals, ids,
 // forward and backward optical flow and time — from either renderer's visibility, with the GIL
-// released while it renders.
+// released while it renders and Ctrl-C stopping it (KeyboardInterrupt).
 #include <pybind11/stl.h>
 
 #include <algorithm>
@@ -9,6 +9,7 @@
 
 #include "arrays.h"
 #include "bindings.h"
+#include "interruptible.h"
 #include "obscura/math/error.h"
 #include "obscura/render/ground_truth_frame.h"
 
@@ -37,11 +38,11 @@ py::dict ground_truth_py(const Scene& scene, std::optional<Camera> camera,
                                      ? GroundTruthTimes{flow_times->first, flow_times->second}
                                      : default_ground_truth_times(view);
   Image image;
-  {
-    py::gil_scoped_release release;
+  run_interruptible([&](const std::atomic<bool>& cancel) {
     view.validate();
-    image = render_ground_truth_frame(snapshot, view, {.renderer = *kind}, times).image();
-  }
+    image = render_ground_truth_frame(snapshot, view, {.renderer = *kind, .cancel = &cancel}, times)
+                .image();
+  });
   // Channels grouped by layer, in the file's order: one (H, W, C) array each.
   std::vector<std::string> layers;
   std::map<std::string, std::vector<int>> channels;

@@ -5,6 +5,7 @@
 #include "obscura/film/diffraction_psf.h"
 
 #include <algorithm>
+#include <atomic>
 #include <cmath>
 #include <numbers>
 #include <vector>
@@ -168,6 +169,35 @@ TEST(DiffractionPsf, ChannelsSumToOneAndRedSpreadsWiderThanBlue) {
   for (int c = 0; c < 3; ++c) EXPECT_NEAR(sum[c], 1, 1e-5);
   EXPECT_GT(second_moment[0], 1.2 * second_moment[2]);
   EXPECT_GT(second_moment[1], second_moment[2]);
+}
+
+// Pixels thousands of λ·N wide (a wide aperture on a film of a few pixels) hold all but the Airy
+// pattern's encircled-energy tail in the centre pixel: the fraction of an Airy pattern beyond
+// radius r is J₀(v)² + J₁(v)² at v = π·r/(λ·N) (Rayleigh), and the square pixel contains the
+// disc of radius half a pixel. The wings would need a pupil grid far beyond the largest one.
+TEST(DiffractionPsf, PixelsFarWiderThanThePatternKeepItsEnergyInTheCentre) {
+  const double f_number = 1, pixel_mm = 5;
+  Image psf = rgb_psf({.pupil = iris(0),
+                       .f_number = f_number,
+                       .pixel_width_mm = pixel_mm,
+                       .pixel_height_mm = pixel_mm},
+                      4);
+  ASSERT_EQ(psf.width, 9);
+  const double v = kPi * 0.5 * pixel_mm / (780e-6 * f_number);  // the longest wavelength: widest
+  const double beyond =
+      std::pow(std::cyl_bessel_j(0.0, v), 2) + std::pow(std::cyl_bessel_j(1.0, v), 2);
+  ASSERT_LT(beyond, 1e-3);
+  for (int c = 0; c < 3; ++c) EXPECT_GE(psf.at(4, 4, c), 1 - beyond) << "channel " << c;
+}
+
+// A cancel set before the work starts stops it: no pattern, no PSF.
+TEST(DiffractionPsf, StopsWhenCancelled) {
+  std::atomic<bool> cancel{true};
+  EXPECT_TRUE(pupil_pattern(iris(6), 4096, 0.5, &cancel).intensity.empty());
+  Image psf =
+      rgb_psf({.pupil = iris(0), .f_number = 2, .pixel_width_mm = 0.05, .pixel_height_mm = 0.05},
+              64, &cancel);
+  EXPECT_TRUE(psf.data.empty());
 }
 
 TEST(DiffractionPsf, RejectsBadOptics) {

@@ -55,8 +55,12 @@ int even_fft_size(double at_least) {
 // pixel at the longest wavelength (whose pattern is the widest, so its pixels the smallest in
 // λ·N units), never coarser than ½ (aliasing), and wide enough to reach the kernel's edge at the
 // shortest wavelength.
-PupilPattern pattern_for(const DiffractionOptics& o, int radius_px, double shortest_nm,
-                         double longest_nm) {
+struct PatternGrid {
+  int size = 0;
+  double spacing = 0;
+};
+PatternGrid grid_for(const DiffractionOptics& o, int radius_px, double shortest_nm,
+                     double longest_nm) {
   double smaller_pixel = std::min(o.pixel_width_mm, o.pixel_height_mm);
   double larger_pixel = std::max(o.pixel_width_mm, o.pixel_height_mm);
   double spacing =
@@ -65,8 +69,13 @@ PupilPattern pattern_for(const DiffractionOptics& o, int radius_px, double short
   spacing = std::max(spacing, kLeastPupilSamples / kLargestGrid);
   double reach =
       (radius_px + 1) * larger_pixel / (shortest_nm * kMillimetresPerNanometre * o.f_number);
-  int size = even_fft_size(std::max(2 * reach, kLeastPupilSamples) / spacing);
-  return pupil_pattern(o.pupil, size, spacing);
+  return {even_fft_size(std::max(2 * reach, kLeastPupilSamples) / spacing), spacing};
+}
+
+// How far (in pixels of the larger pitch) a grid reaches at the shortest wavelength.
+double grid_reach_px(const DiffractionOptics& o, const PatternGrid& grid, double shortest_nm) {
+  return (0.5 * grid.size - 1) * grid.spacing * shortest_nm * kMillimetresPerNanometre *
+         o.f_number / std::max(o.pixel_width_mm, o.pixel_height_mm);
 }
 
 // Σ of the pattern over [0, i) × [0, j), (size + 1)² entries: the integral of the pattern, seen
@@ -117,20 +126,27 @@ Image sensor_psf(const DiffractionOptics& o, int radius_px, const std::vector<Ba
     shortest = std::min(shortest, b.wavelength_nm);
     longest = std::max(longest, b.wavelength_nm);
   }
-  PupilPattern pattern = pattern_for(o, radius_px, shortest, longest);
-  if (cancelled()) return {};
+  const PatternGrid grid = grid_for(o, radius_px, shortest, longest);
+  const int side = 2 * radius_px + 1;
+  Image psf(side, side, channels);
+  const double larger_pixel = std::max(o.pixel_width_mm, o.pixel_height_mm);
+  const double fade_radius = std::min(double(radius_px), grid_reach_px(o, grid, shortest));
+  // When the fade ends within one pixel of the centre — pixels so wide that even the largest grid
+  // ends inside the centre pixel (a very wide aperture, a film of a few pixels), or a radius of
+  // one — it zeroes every other pixel: the kernel is the centre alone, known without the pattern
+  // (whose largest grid costs seconds). There the Airy energy beyond half a pixel,
+  // ≈ 2/(π²·ρ) at ρ = ½·pixel/(λ·N) ≥ 250, is under 1e-3 of the total.
+  if (fade_radius * larger_pixel <= std::min(o.pixel_width_mm, o.pixel_height_mm)) {
+    for (int c = 0; c < channels; ++c) psf.at(radius_px, radius_px, c) = 1;
+    return psf;
+  }
+  PupilPattern pattern = pupil_pattern(o.pupil, grid.size, grid.spacing, cancel);
+  if (pattern.intensity.empty()) return {};  // cancelled
   const double pattern_spacing = pattern.spacing;
   const SummedArea area(pattern);
   pattern = {};  // the table holds all that is needed
-  const int side = 2 * radius_px + 1;
-  Image psf(side, side, channels);
   std::vector<double> sums(size_t(side) * side * channels, 0.0);
   const double centre = area.size / 2 + 0.5;  // the cell of the pattern's centre spans [c, c + 1]
-  const double larger_pixel = std::max(o.pixel_width_mm, o.pixel_height_mm);
-  // How far (in pixels of the larger pitch) the grid reaches at the shortest wavelength.
-  const double grid_reach_px = (0.5 * area.size - 1) * pattern_spacing * shortest *
-                               kMillimetresPerNanometre * o.f_number / larger_pixel;
-  const double fade_radius = std::min(double(radius_px), grid_reach_px);
   tbb::parallel_for(tbb::blocked_range<int>(0, side), [&](const tbb::blocked_range<int>& rows) {
     std::vector<double> top(side + 1), bottom(side + 1);
     for (int row = rows.begin(); row < rows.end() && !cancelled(); ++row) {
@@ -171,12 +187,15 @@ Image sensor_psf(const DiffractionOptics& o, int radius_px, const std::vector<Ba
 
 }  // namespace
 
-PupilPattern pupil_pattern(const PupilShape& pupil, int size, double spacing) {
+PupilPattern pupil_pattern(const PupilShape& pupil, int size, double spacing,
+                           const std::atomic<bool>* cancel) {
+  auto cancelled = [cancel] { return cancel && cancel->load(std::memory_order_relaxed); };
   if (size < 16 || size % 2 != 0)
     throw Error("pupil pattern",
                 "grid size must be even and at least 16; got " + std::to_string(size));
   if (!(spacing > 0 && spacing <= 0.5))
     throw Error("pupil pattern", "spacing must be in (0, 0.5]; got " + number_text(spacing));
+  if (cancelled()) return {};
   FourierPlane plane(size, size);
   const int c = size / 2;
   const double radius = 0.5 * spacing * size;  // the pupil's radius in grid samples
@@ -190,12 +209,12 @@ PupilPattern pupil_pattern(const PupilShape& pupil, int size, double spacing) {
   const int corners = last - first + 1;
   std::vector<char> corner(size_t(corners) * corners);
   tbb::parallel_for(tbb::blocked_range<int>(0, corners), [&](const tbb::blocked_range<int>& r) {
-    for (int j = r.begin(); j < r.end(); ++j)
+    for (int j = r.begin(); j < r.end() && !cancelled(); ++j)
       for (int i = 0; i < corners; ++i)
         corner[size_t(j) * corners + i] = inside(first + i - c - 0.5, first + j - c - 0.5);
   });
   tbb::parallel_for(tbb::blocked_range<int>(first, last), [&](const tbb::blocked_range<int>& rows) {
-    for (int j = rows.begin(); j < rows.end(); ++j)
+    for (int j = rows.begin(); j < rows.end() && !cancelled(); ++j)
       for (int i = first; i < last; ++i) {
         const char* top = &corner[size_t(j - first) * corners + (i - first)];
         const char* bottom = top + corners;
@@ -212,7 +231,9 @@ PupilPattern pupil_pattern(const PupilShape& pupil, int size, double spacing) {
         plane.row(j)[i] = double(hits) / (kPupilSupersamples * kPupilSupersamples);
       }
   });
-  plane.forward();
+  if (cancelled()) return {};
+  plane.forward();  // about a second at the largest grid; FFTW cannot be interrupted
+  if (cancelled()) return {};
   PupilPattern pattern{size, spacing, std::vector<double>(size_t(size) * size)};
   // |F|² everywhere from the half spectrum: F(−u, −v) is F(u, v)'s conjugate for a real pupil.
   tbb::parallel_for(tbb::blocked_range<int>(0, size), [&](const tbb::blocked_range<int>& rows) {

@@ -20,7 +20,8 @@
 // radius (a hard edge would show as a ring or square around bright lights); the energy beyond,
 // about 2/(π²·r/(λ·N)) of the total for a circle, is given back to the rest by the
 // normalisation. It is also cut where a 4096² pupil grid reaches (very wide apertures on large
-// pixels, where the whole pattern is a fraction of a pixel anyway).
+// pixels, where the whole pattern is a fraction of a pixel anyway); when that is within the
+// centre pixel the PSF is the centre pixel alone, found without computing the pattern.
 #pragma once
 
 #include <atomic>
@@ -52,8 +53,10 @@ struct PupilPattern {
   double spacing = 0;
   std::vector<double> intensity;  // row-major; row index grows along −y (down the image)
 };
-// Throws obscura::Error for size < 16 or spacing outside (0, ½].
-PupilPattern pupil_pattern(const PupilShape& pupil, int size, double spacing);
+// Throws obscura::Error for size < 16 or spacing outside (0, ½]. `cancel`, once set, stops the
+// work between rows (and before and after the FFT): an empty pattern is returned.
+PupilPattern pupil_pattern(const PupilShape& pupil, int size, double spacing,
+                           const std::atomic<bool>* cancel = nullptr);
 
 // The PSF at one wavelength as a one-channel image of (2·radius_px + 1)² pixels, the point's own
 // pixel at the centre; sums to 1. Throws obscura::Error for invalid optics or radius < 1.
