@@ -28,7 +28,10 @@ const char* const kMorph = "gltf/AnimatedMorphCube/AnimatedMorphCube.glb";
 
 template <class T>
 bool same_bytes(const std::vector<T>& a, const std::vector<T>& b) {
-  return a.size() == b.size() && std::memcmp(a.data(), b.data(), a.size() * sizeof(T)) == 0;
+  // std::equal, not memcmp: an empty vector's data() may be null, which memcmp must not see.
+  return a.size() == b.size() && std::equal(reinterpret_cast<const char*>(a.data()),
+                                            reinterpret_cast<const char*>(a.data() + a.size()),
+                                            reinterpret_cast<const char*>(b.data()));
 }
 
 GltfLoadOptions at_moment(double time_s, double exposure_s) {
