@@ -2,12 +2,21 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstring>
 #include <limits>
+#include <optional>
+#include <span>
+#include <string>
 
 #include <tbb/parallel_for.h>
 
 #include "obscura/color/spectral.h"
 #include "obscura/color/spectral_working_space.h"
+#include "obscura/math/disk_cache.h"
+
+#ifndef OBSCURA_TABLE_KEY  // cmake/table_key.cmake; a build without it never shares a cache entry
+#define OBSCURA_TABLE_KEY "unkeyed"
+#endif
 
 namespace obscura {
 
@@ -105,7 +114,7 @@ double norm(const Vec3d& v) {
 
 // Gauss–Newton (the system is square: three residuals, three unknowns) from `c`, halving steps
 // that do not reduce the residual. Returns the final ΔE.
-double fit(const FitData& d, const Vec3d& rgb, Vec3d& c) {
+double fit_point(const FitData& d, const Vec3d& rgb, Vec3d& c) {
   Vec3d target = lab_of(d.xyz_from_rgb * rgb, d.white_xyz).value;
   auto residual_of = [&](const Lab& lab) {
     return Vec3d{target[0] - lab.value[0], target[1] - lab.value[1], target[2] - lab.value[2]};
@@ -151,13 +160,37 @@ float SigmoidPolynomial::operator()(float nm) const {
 }
 
 const RgbToSpectrumTable& RgbToSpectrumTable::working_space() {
-  static const RgbToSpectrumTable table;
+  static const RgbToSpectrumTable& table = cached_or_fitted();
   return table;
 }
 
-RgbToSpectrumTable::RgbToSpectrumTable() {
-  for (int k = 0; k < kRes; ++k) scale_[k] = float(smoothstep(smoothstep(double(k) / (kRes - 1))));
-  coefficients_.assign(size_t(3) * kRes * kRes * kRes * 3, 0.f);
+// The cache entry: the scale values, the coefficients and the worst ΔE, as the floats they are.
+const RgbToSpectrumTable& RgbToSpectrumTable::cached_or_fitted() {
+  static RgbToSpectrumTable table;
+  const std::string name = std::string("rgb-to-spectrum-") + OBSCURA_TABLE_KEY + ".bin";
+  const size_t count = size_t(kRes) + size_t(3) * kRes * kRes * kRes * 3 + 1;
+  if (std::optional<std::vector<std::byte>> bytes =
+          read_cached_table(name, count * sizeof(float))) {
+    std::vector<float> floats(count);
+    std::memcpy(floats.data(), bytes->data(), bytes->size());
+    std::copy_n(floats.begin(), kRes, table.scale_.begin());
+    table.coefficients_.assign(floats.begin() + kRes, floats.end() - 1);
+    table.worst_delta_e_ = floats.back();
+    return table;
+  }
+  table = fit();
+  std::vector<float> floats(table.scale_.begin(), table.scale_.end());
+  floats.insert(floats.end(), table.coefficients_.begin(), table.coefficients_.end());
+  floats.push_back(table.worst_delta_e_);
+  write_cached_table(name, std::as_bytes(std::span<const float>(floats)));
+  return table;
+}
+
+RgbToSpectrumTable RgbToSpectrumTable::fit() {
+  RgbToSpectrumTable table;
+  for (int k = 0; k < kRes; ++k)
+    table.scale_[k] = float(smoothstep(smoothstep(double(k) / (kRes - 1))));
+  table.coefficients_.assign(size_t(3) * kRes * kRes * kRes * 3, 0.f);
   const FitData data = make_fit_data();
   std::vector<float> worst(size_t(3) * kRes * kRes, 0.f);
   // One column of the largest channel's values per task: walk from a mid-grey-ish start up and
@@ -166,14 +199,14 @@ RgbToSpectrumTable::RgbToSpectrumTable() {
   tbb::parallel_for(0, 3 * kRes * kRes, [&](int column) {
     const int largest = column / (kRes * kRes), y = column / kRes % kRes, x = column % kRes;
     auto solve = [&](int k, Vec3d& c) {
-      double z = scale_[k];
+      double z = table.scale_[k];
       Vec3d rgb{};
       rgb[largest] = z;
       rgb[(largest + 1) % 3] = z * x / (kRes - 1);
       rgb[(largest + 2) % 3] = z * y / (kRes - 1);
-      double error = fit(data, rgb, c);
+      double error = fit_point(data, rgb, c);
       if (z > 0) worst[column] = std::max(worst[column], float(error));
-      float* out = &coefficients_[((size_t(largest * kRes + k) * kRes + y) * kRes + x) * 3];
+      float* out = &table.coefficients_[((size_t(largest * kRes + k) * kRes + y) * kRes + x) * 3];
       for (int i = 0; i < 3; ++i) out[i] = float(c[i]);
     };
     const int start = kRes / 5;
@@ -182,7 +215,8 @@ RgbToSpectrumTable::RgbToSpectrumTable() {
     c = {0, 0, 0};
     for (int k = start; k >= 0; --k) solve(k, c);
   });
-  worst_delta_e_ = *std::max_element(worst.begin(), worst.end());
+  table.worst_delta_e_ = *std::max_element(worst.begin(), worst.end());
+  return table;
 }
 
 SigmoidPolynomial RgbToSpectrumTable::operator()(Rgb rgb) const {

@@ -3,7 +3,9 @@
 // s(λ) = S(c₀t² + c₁t + c₂) with t = (λ − 360 nm) / 470 nm and the sigmoid
 // S(x) = ½ + x / (2√(1 + x²)): smooth, and bounded in [0, 1] by construction. The three
 // coefficients of each colour come from a table over the RGB cube, fitted by OUR code at first
-// use (a second or less, then cached in memory): at every grid point, Gauss–Newton iterations
+// use (a second or less; kept in memory, and between runs in the cache folder of
+// math/disk_cache.h, keyed by the code and compiler that fitted it): at every grid point,
+// Gauss–Newton iterations
 // match the spectrum's colour under the working white (D65; spectral_working_space.h), in CIELAB,
 // to the grid point's RGB. Between grid points, coefficients are interpolated trilinearly.
 //
@@ -29,8 +31,11 @@ class RgbToSpectrumTable {
  public:
   static constexpr int kResolution = 32;
 
-  // The working space's table, fitted on first use (thread-safe), then shared.
+  // The working space's table, on first use (thread-safe) read from the cache folder or else
+  // fitted (and stored there), then shared.
   static const RgbToSpectrumTable& working_space();
+  // The table fitted now, never read from the cache (what working_space() stores).
+  static RgbToSpectrumTable fit();
 
   // The reflectance spectrum of `rgb`, each channel clamped to [0, 1] first. Greys are exact:
   // the constant spectrum of their value.
@@ -38,9 +43,12 @@ class RgbToSpectrumTable {
 
   // Largest fitting error over the grid, in CIELAB ΔE (1976): how well the fit converged.
   float worst_fit_delta_e() const { return worst_delta_e_; }
+  // The fitted coefficients, [largest channel][scale][y][x][3].
+  const std::vector<float>& coefficients() const { return coefficients_; }
 
  private:
-  RgbToSpectrumTable();
+  RgbToSpectrumTable() = default;
+  static const RgbToSpectrumTable& cached_or_fitted();
   std::array<float, kResolution> scale_{};  // the largest channel's grid values
   std::vector<float> coefficients_;         // [largest channel][scale][y][x][3]
   float worst_delta_e_ = 0;

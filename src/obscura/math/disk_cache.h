@@ -1,0 +1,29 @@
+// A folder of tables that are expensive to compute and identical from run to run (the spectral
+// lift's fitted coefficients: about a second in a release build, half a minute under the
+// sanitizers), kept between processes so that each computes them once, not every run.
+//
+// The folder: $OBSCURA_CACHE_DIR, else $XDG_CACHE_HOME/obscura, else $HOME/.cache/obscura;
+// OBSCURA_CACHE_DIR=off (or no home at all) turns the cache off. An entry is a regular file with
+// the bytes and a checksum after them; one that is missing, of another size, not a regular file
+// (a FIFO would block a read) or whose checksum disagrees is a miss, and the caller computes
+// the table again. Writes go to a temporary file renamed into place, so a reader never sees half
+// an entry; a folder that cannot be written only means the next run computes again.
+//
+// The name must change whenever the bytes would: callers put a key of the code and the compiler
+// that made them into it (CMake's OBSCURA_TABLE_KEY).
+#pragma once
+
+#include <cstddef>
+#include <optional>
+#include <span>
+#include <string>
+#include <vector>
+
+namespace obscura {
+
+// The entry `name` if it holds exactly `size` bytes with a good checksum.
+std::optional<std::vector<std::byte>> read_cached_table(const std::string& name, size_t size);
+// Stores `bytes` as `name`; best effort (returns false when the folder is off or unwritable).
+bool write_cached_table(const std::string& name, std::span<const std::byte> bytes);
+
+}  // namespace obscura
