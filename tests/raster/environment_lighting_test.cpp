@@ -12,9 +12,15 @@
 
 #include <gtest/gtest.h>
 
+#include <unistd.h>
+
 #include <cmath>
+#include <cstdlib>
+#include <filesystem>
 #include <memory>
 #include <numbers>
+#include <optional>
+#include <string>
 
 #include "obscura/camera/frames.h"
 #include "obscura/io/texture_loader.h"
@@ -71,6 +77,53 @@ TEST(EnvironmentLighting, PrefilteringAUniformMapGivesItBack) {
   for (float roughness : {0.f, 0.1f, 0.5f, 0.9f, 1.f})
     EXPECT_NEAR(env.prefiltered(normalize(Vector3f(0.3f, -0.5f, 0.8f)), roughness).r, 2, 1e-4);
   EXPECT_NEAR(env.irradiance(normalize(Vector3f(0.3f, -0.5f, 0.8f))).r, 2 * kPi, 1e-3);
+}
+
+// The tables of a map are kept in the cache folder: a second construction from the same map and
+// scale reads them and answers every lookup bit for bit as a fresh prefiltering does (with the
+// cache off); another scale is another entry.
+TEST(EnvironmentLighting, TablesFromTheCacheFolderAreTheFreshOnesBitForBit) {
+  namespace fs = std::filesystem;
+  const std::optional<std::string> saved =
+      std::getenv("OBSCURA_CACHE_DIR")
+          ? std::optional<std::string>(std::getenv("OBSCURA_CACHE_DIR"))
+          : std::nullopt;
+  const fs::path folder =
+      fs::temp_directory_path() / ("obscura-env-cache-test-" + std::to_string(::getpid()));
+  fs::remove_all(folder);
+  Image map = equirect(600, 300, [](Vector3f d) {  // over 512 across: the box-filtered level 0
+    return 0.2 + std::pow(std::max(0.f, d.x * 0.6f + d.y * 0.8f), 40.f) * 50;
+  });
+  const Transform rotation = Transform::rotate_y(0.7);
+  ::setenv("OBSCURA_CACHE_DIR", "off", 1);
+  const EnvironmentLighting fresh(map, Rgb(1.5f, 1, 0.5f), rotation);
+  ::setenv("OBSCURA_CACHE_DIR", folder.c_str(), 1);
+  const EnvironmentLighting first(map, Rgb(1.5f, 1, 0.5f), rotation);  // prefilters and stores
+  const auto entries = [&] {
+    return std::distance(fs::directory_iterator(folder), fs::directory_iterator());
+  };
+  EXPECT_EQ(entries(), 1);
+  const EnvironmentLighting second(map, Rgb(1.5f, 1, 0.5f), rotation);  // reads
+  EXPECT_EQ(entries(), 1);
+  const EnvironmentLighting other_scale(map, Rgb(1.f), rotation);
+  EXPECT_EQ(entries(), 2);
+  auto same = [](Rgb a, Rgb b) { return a.r == b.r && a.g == b.g && a.b == b.b; };
+  for (int i = 0; i < 200; ++i) {
+    const float z = 1 - 2 * (i + 0.5f) / 200, phi = 2.39996f * float(i);
+    const float r = std::sqrt(1 - z * z);
+    const Vector3f d(r * std::cos(phi), z, r * std::sin(phi));
+    EXPECT_TRUE(same(second.irradiance(d), fresh.irradiance(d))) << i;
+    for (float roughness : {0.f, 0.13f, 0.5f, 1.f})
+      EXPECT_TRUE(same(second.prefiltered(d, roughness), fresh.prefiltered(d, roughness)))
+          << i << " roughness " << roughness;
+  }
+  EXPECT_FALSE(same(other_scale.prefiltered({0.6f, 0.8f, 0}, 0.5f),
+                    second.prefiltered({0.6f, 0.8f, 0}, 0.5f)));
+  if (saved)
+    ::setenv("OBSCURA_CACHE_DIR", saved->c_str(), 1);
+  else
+    ::unsetenv("OBSCURA_CACHE_DIR");
+  fs::remove_all(folder);
 }
 
 // --- Spheres, raster against tracer -----------------------------------------------------------

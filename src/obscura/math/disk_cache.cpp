@@ -2,6 +2,7 @@
 
 #include <unistd.h>
 
+#include <algorithm>
 #include <cctype>
 #include <cstdint>
 #include <cstdlib>
@@ -46,7 +47,56 @@ bool plain_name(const std::string& name) {
   return name.front() != '.';
 }
 
+// Keeps the folder within kCacheFolderBytes: the oldest entries (by write time) go first. Other
+// processes may be adding and removing entries meanwhile: every failure is ignored.
+void trim(const fs::path& folder, const fs::path& keep) {
+  std::error_code error;
+  std::vector<std::pair<fs::file_time_type, fs::path>> entries;
+  uintmax_t total = 0;
+  for (fs::directory_iterator it(folder, error), end; !error && it != end; it.increment(error)) {
+    if (!it->is_regular_file(error) || it->path().filename().string().front() == '.') continue;
+    const uintmax_t size = it->file_size(error);
+    if (error) continue;
+    total += size;
+    entries.emplace_back(it->last_write_time(error), it->path());
+  }
+  if (total <= kCacheFolderBytes) return;
+  std::sort(entries.begin(), entries.end());
+  for (const auto& [time, path] : entries) {
+    if (total <= kCacheFolderBytes) break;
+    if (path == keep) continue;
+    const uintmax_t size = fs::file_size(path, error);
+    if (!error && fs::remove(path, error)) total -= size;
+  }
+}
+
 }  // namespace
+
+uint64_t content_hash(std::span<const std::byte> bytes) {
+  // Eight bytes at a time through a multiply–xorshift mixer (splitmix64's finaliser).
+  auto mix = [](uint64_t z) {
+    z = (z ^ (z >> 30)) * 0xbf58476d1ce4e5b9ull;
+    z = (z ^ (z >> 27)) * 0x94d049bb133111ebull;
+    return z ^ (z >> 31);
+  };
+  uint64_t h = mix(bytes.size() + 0x9e3779b97f4a7c15ull);
+  size_t i = 0;
+  for (; i + 8 <= bytes.size(); i += 8) {
+    uint64_t word;
+    std::memcpy(&word, bytes.data() + i, 8);
+    h = mix(h ^ word) + 0x9e3779b97f4a7c15ull;
+  }
+  uint64_t tail = 0;
+  if (i < bytes.size()) std::memcpy(&tail, bytes.data() + i, bytes.size() - i);
+  return mix(h ^ tail);
+}
+
+std::string hex64(uint64_t value) {
+  static const char* const kDigits = "0123456789abcdef";
+  std::string text(16, '0');
+  for (int i = 15; i >= 0; --i, value >>= 4) text[size_t(i)] = kDigits[value & 15];
+  return text;
+}
 
 std::optional<std::vector<std::byte>> read_cached_table(const std::string& name, size_t size) {
   const std::optional<fs::path> folder = cache_folder();
@@ -86,8 +136,12 @@ bool write_cached_table(const std::string& name, std::span<const std::byte> byte
     }
   }
   fs::rename(temporary, *folder / name, error);
-  if (error) fs::remove(temporary, error);
-  return !error;
+  if (error) {
+    fs::remove(temporary, error);
+    return false;
+  }
+  trim(*folder, *folder / name);
+  return true;
 }
 
 }  // namespace obscura

@@ -10,16 +10,26 @@
 // an entry; a folder that cannot be written only means the next run computes again.
 //
 // The name must change whenever the bytes would: callers put a key of the code and the compiler
-// that made them into it (CMake's OBSCURA_TABLE_KEY).
+// that made them into it (CMake's OBSCURA_TABLE_KEY) and, for a table made from data (an
+// environment map), a content_hash of that data. The folder holds at most kCacheFolderBytes of
+// entries: storing one beyond that removes the least recently written first.
 #pragma once
 
 #include <cstddef>
+#include <cstdint>
 #include <optional>
 #include <span>
 #include <string>
 #include <vector>
 
 namespace obscura {
+
+inline constexpr size_t kCacheFolderBytes = size_t(256) << 20;
+
+// A 64-bit hash of `bytes` for naming entries by content (not cryptographic: a cache key).
+uint64_t content_hash(std::span<const std::byte> bytes);
+// `value` as 16 hexadecimal digits, for entry names.
+std::string hex64(uint64_t value);
 
 // The entry `name` if it holds exactly `size` bytes with a good checksum.
 std::optional<std::vector<std::byte>> read_cached_table(const std::string& name, size_t size);

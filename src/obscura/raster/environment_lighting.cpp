@@ -4,9 +4,18 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstring>
 #include <numbers>
+#include <optional>
+#include <span>
+#include <string>
 
+#include "obscura/math/disk_cache.h"
 #include "obscura/math/safe_index.h"
+
+#ifndef OBSCURA_TABLE_KEY  // cmake/table_key.cmake; a build without it never shares a cache entry
+#define OBSCURA_TABLE_KEY "unkeyed"
+#endif
 
 namespace obscura::raster {
 
@@ -159,13 +168,37 @@ EnvironmentLighting::EnvironmentLighting(const Image& map, Rgb scale,
   Image source(map.width, map.height, 3);
   for (int y = 0; y < map.height; ++y)
     for (int x = 0; x < map.width; ++x) source.set_rgb(x, y, map.rgb(x, y) * scale);
+  // The same map and scale always give the same tables: an earlier run's, from the cache folder,
+  // spare the prefiltering (about a second for the studio map); the rotation is applied at lookup.
+  const std::string name = cache_name(source);
+  if (read_cache(name, source.width, source.height)) return;
+  prepare(std::move(source));
+  write_cache(name);
+}
+
+// Level 0 is the map box-filtered to at most 512 texels across; level k ≥ 1 is max(32, w₀ >> k)
+// × half that (at least 16) — rough lobes are smooth.
+std::array<std::pair<int, int>, EnvironmentLighting::kLevels> EnvironmentLighting::level_sizes(
+    int width, int height) {
+  while (width > 512) width = std::max(1, width / 2), height = std::max(1, height / 2);
+  std::array<std::pair<int, int>, kLevels> sizes{};
+  sizes[0] = {width, height};
+  for (int k = 1; k < kLevels; ++k) {
+    const int w = std::max(32, width >> k);
+    sizes[size_t(k)] = {w, std::max(16, w / 2)};
+  }
+  return sizes;
+}
+
+void EnvironmentLighting::prepare(Image source) {
   // Irradiance: the cosine lobe's harmonic weights Â_l = π, 2π/3, π/4.
   const std::array<Rgb, 9> sh = project(source);
   constexpr float kBand[9] = {kPi,     2 * kPi / 3, 2 * kPi / 3, 2 * kPi / 3, kPi / 4,
                               kPi / 4, kPi / 4,     kPi / 4,     kPi / 4};
   for (size_t k = 0; k < 9; ++k) irradiance_sh_[k] = sh[k] * kBand[k];
   // Specular: a box-filtered chain from at most 512 texels across down to 8, then one
-  // prefiltered level per roughness step, halving in size with each (rough lobes are smooth).
+  // prefiltered level per roughness step (level_sizes).
+  const auto sizes = level_sizes(source.width, source.height);
   std::vector<Image> chain{std::move(source)};
   while (chain.back().width > 512) chain.push_back(downsample(chain.back()));
   chain.erase(chain.begin(), chain.end() - 1);
@@ -174,10 +207,45 @@ EnvironmentLighting::EnvironmentLighting(const Image& map, Rgb scale,
   levels_.push_back(chain[0]);  // roughness 0: the mirror image
   for (int k = 1; k < kLevels; ++k) {
     const float roughness = float(k) / (kLevels - 1);
-    const int width = std::max(32, chain[0].width >> k);
-    levels_.push_back(
-        prefilter(chain, width, std::max(16, width / 2), std::max(roughness * roughness, 1e-3f)));
+    levels_.push_back(prefilter(chain, sizes[size_t(k)].first, sizes[size_t(k)].second,
+                                std::max(roughness * roughness, 1e-3f)));
   }
+}
+
+// The entry: the tables' code and compiler (OBSCURA_TABLE_KEY), then the scaled map's content.
+std::string EnvironmentLighting::cache_name(const Image& source) {
+  std::vector<float> header{float(source.width), float(source.height)};
+  const uint64_t content = content_hash(std::as_bytes(std::span<const float>(source.data))) ^
+                           content_hash(std::as_bytes(std::span<const float>(header)));
+  return std::string("raster-environment-") + OBSCURA_TABLE_KEY + "-" + hex64(content) + ".bin";
+}
+
+// The entry's floats: the 9 irradiance coefficients (RGB), then every level's texels (RGB).
+bool EnvironmentLighting::read_cache(const std::string& name, int width, int height) {
+  const auto sizes = level_sizes(width, height);
+  size_t count = 9 * 3;
+  for (const auto& [w, h] : sizes) count += size_t(w) * h * 3;
+  const std::optional<std::vector<std::byte>> bytes = read_cached_table(name, count * 4);
+  if (!bytes) return false;
+  std::vector<float> floats(count);
+  std::memcpy(floats.data(), bytes->data(), bytes->size());
+  const float* at = floats.data();
+  for (Rgb& c : irradiance_sh_) c = Rgb(at[0], at[1], at[2]), at += 3;
+  for (const auto& [w, h] : sizes) {
+    Image level(w, h, 3);
+    std::copy_n(at, level.data.size(), level.data.begin());
+    at += level.data.size();
+    levels_.push_back(std::move(level));
+  }
+  return true;
+}
+
+void EnvironmentLighting::write_cache(const std::string& name) const {
+  std::vector<float> floats;
+  for (const Rgb& c : irradiance_sh_) floats.insert(floats.end(), {c.r, c.g, c.b});
+  for (const Image& level : levels_)
+    floats.insert(floats.end(), level.data.begin(), level.data.end());
+  write_cached_table(name, std::as_bytes(std::span<const float>(floats)));
 }
 
 Vector3f EnvironmentLighting::to_environment(Vector3f d) const {

@@ -12,12 +12,16 @@
 // For a uniform environment both parts are exact (the prefilter's weights sum to one, a constant
 // has only the l = 0 harmonic), so a convex object reflects exactly its directional albedo × L.
 //
-// Compiled once per SceneRasterizer (per scene and environment) and shared by every frame.
+// Compiled once per SceneRasterizer (per scene and environment) and shared by every frame; the
+// tables of a map at a scale are kept between runs in the cache folder (math/disk_cache.h), named
+// by the scaled map's content and the code that prefilters it, so only the first run pays.
 // Deterministic: every output texel is a fixed sum (a Hammersley set of lobe samples), and the
 // harmonics are summed row by row in a fixed order, whatever the number of threads.
 #pragma once
 
 #include <array>
+#include <string>
+#include <utility>
 #include <vector>
 
 #include "obscura/color/rgb.h"
@@ -53,6 +57,12 @@ class EnvironmentLighting {
 
  private:
   Vector3f to_environment(Vector3f d) const;
+  // The sizes of the levels a width × height map gives.
+  static std::array<std::pair<int, int>, kLevels> level_sizes(int width, int height);
+  void prepare(Image source);  // the tables from the scaled map
+  static std::string cache_name(const Image& source);
+  bool read_cache(const std::string& name, int width, int height);
+  void write_cache(const std::string& name) const;
   Rgb uniform_;
   bool has_map_ = false;
   Transform environment_from_world_;
