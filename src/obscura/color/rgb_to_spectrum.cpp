@@ -14,8 +14,9 @@
 #include "obscura/color/spectral_working_space.h"
 #include "obscura/math/disk_cache.h"
 
-#ifndef OBSCURA_TABLE_KEY  // cmake/table_key.cmake; a build without it never shares a cache entry
-#define OBSCURA_TABLE_KEY "unkeyed"
+#ifndef OBSCURA_TABLE_KEY  // names this file's entries in the cache folder by the code that made
+                           // them
+#error "OBSCURA_TABLE_KEY comes from cmake/table_key.cmake"
 #endif
 
 namespace obscura {

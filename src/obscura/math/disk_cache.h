@@ -17,9 +17,11 @@
 
 #include <cstddef>
 #include <cstdint>
+#include <cstring>
 #include <optional>
 #include <span>
 #include <string>
+#include <type_traits>
 #include <vector>
 
 namespace obscura {
@@ -35,5 +37,20 @@ std::string hex64(uint64_t value);
 std::optional<std::vector<std::byte>> read_cached_table(const std::string& name, size_t size);
 // Stores `bytes` as `name`; best effort (returns false when the folder is off or unwritable).
 bool write_cached_table(const std::string& name, std::span<const std::byte> bytes);
+
+// A table of plain numbers (a trivially copyable T): the entry `name` when the folder has it,
+// else make() stored as `name`.
+template <class T, class Make>
+T cached_table(const std::string& name, Make make) {
+  static_assert(std::is_trivially_copyable_v<T>, "a table of plain numbers");
+  if (std::optional<std::vector<std::byte>> bytes = read_cached_table(name, sizeof(T))) {
+    T table;
+    std::memcpy(&table, bytes->data(), sizeof(T));
+    return table;
+  }
+  const T table = make();
+  write_cached_table(name, std::as_bytes(std::span<const T>(&table, 1)));
+  return table;
+}
 
 }  // namespace obscura

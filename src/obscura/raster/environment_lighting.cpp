@@ -13,8 +13,9 @@
 #include "obscura/math/disk_cache.h"
 #include "obscura/math/safe_index.h"
 
-#ifndef OBSCURA_TABLE_KEY  // cmake/table_key.cmake; a build without it never shares a cache entry
-#define OBSCURA_TABLE_KEY "unkeyed"
+#ifndef OBSCURA_TABLE_KEY  // names this file's entries in the cache folder by the code that made
+                           // them
+#error "OBSCURA_TABLE_KEY comes from cmake/table_key.cmake"
 #endif
 
 namespace obscura::raster {

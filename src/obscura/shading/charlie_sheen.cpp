@@ -3,9 +3,16 @@
 #include <algorithm>
 #include <cmath>
 #include <numbers>
+#include <string>
 
+#include "obscura/math/disk_cache.h"
 #include "obscura/math/safe_index.h"
 #include "obscura/shading/gauss_legendre.h"
+
+#ifndef OBSCURA_TABLE_KEY  // names this file's entries in the cache folder by the code that made
+                           // them
+#error "OBSCURA_TABLE_KEY comes from cmake/table_key.cmake"
+#endif
 
 namespace obscura::shading {
 
@@ -67,15 +74,18 @@ struct Table {
 };
 
 const Table& table() {
-  static const Table t = [] {
-    Table t;
-    for (int j = 0; j < kRoughnessSize; ++j) {
-      double r = double(j) / (kRoughnessSize - 1);
-      double alpha = std::max(r * r, double(kMinSheenAlpha));
-      for (int i = 0; i < kMuSize; ++i) t.e[j][i] = float(integrate((i + 0.5) / kMuSize, alpha));
-    }
-    return t;
-  }();
+  // Integrated once; later runs read it from the cache folder (math/disk_cache.h).
+  static const Table t =
+      cached_table<Table>(std::string("charlie-sheen-") + OBSCURA_TABLE_KEY + ".bin", [] {
+        Table t;
+        for (int j = 0; j < kRoughnessSize; ++j) {
+          double r = double(j) / (kRoughnessSize - 1);
+          double alpha = std::max(r * r, double(kMinSheenAlpha));
+          for (int i = 0; i < kMuSize; ++i)
+            t.e[j][i] = float(integrate((i + 0.5) / kMuSize, alpha));
+        }
+        return t;
+      });
   return t;
 }
 

@@ -4,9 +4,16 @@
 #include <array>
 #include <cmath>
 #include <numbers>
+#include <string>
 
+#include "obscura/math/disk_cache.h"
 #include "obscura/math/safe_index.h"
 #include "obscura/shading/gauss_legendre.h"
+
+#ifndef OBSCURA_TABLE_KEY  // names this file's entries in the cache folder by the code that made
+                           // them
+#error "OBSCURA_TABLE_KEY comes from cmake/table_key.cmake"
+#endif
 
 namespace obscura::shading {
 
@@ -69,24 +76,26 @@ double node_alpha(int j) {
 }
 
 const Tables& tables() {
-  static const Tables t = [] {
-    Tables t;
-    static const GaussLegendre<32> gmu;
-    for (int j = 0; j < kRoughnessSize; ++j) {
-      double alpha = node_alpha(j);
-      for (int i = 0; i < kMuSize; ++i) {
-        Albedo a = integrate(node_mu(i), alpha);
-        t.e1[j][i] = float(a.e1), t.e5[j][i] = float(a.e5);
-      }
-      double s1 = 0, s5 = 0;  // 2 ∫ E(μ) μ dμ
-      for (int k = 0; k < 32; ++k) {
-        Albedo a = integrate(gmu.x[k], alpha);
-        s1 += gmu.w[k] * a.e1 * gmu.x[k], s5 += gmu.w[k] * a.e5 * gmu.x[k];
-      }
-      t.average1[j] = float(2 * s1), t.average5[j] = float(2 * s5);
-    }
-    return t;
-  }();
+  // Integrated once; later runs read it from the cache folder (math/disk_cache.h).
+  static const Tables t =
+      cached_table<Tables>(std::string("ggx-energy-") + OBSCURA_TABLE_KEY + ".bin", [] {
+        Tables t;
+        static const GaussLegendre<32> gmu;
+        for (int j = 0; j < kRoughnessSize; ++j) {
+          double alpha = node_alpha(j);
+          for (int i = 0; i < kMuSize; ++i) {
+            Albedo a = integrate(node_mu(i), alpha);
+            t.e1[j][i] = float(a.e1), t.e5[j][i] = float(a.e5);
+          }
+          double s1 = 0, s5 = 0;  // 2 ∫ E(μ) μ dμ
+          for (int k = 0; k < 32; ++k) {
+            Albedo a = integrate(gmu.x[k], alpha);
+            s1 += gmu.w[k] * a.e1 * gmu.x[k], s5 += gmu.w[k] * a.e5 * gmu.x[k];
+          }
+          t.average1[j] = float(2 * s1), t.average5[j] = float(2 * s5);
+        }
+        return t;
+      });
   return t;
 }
 

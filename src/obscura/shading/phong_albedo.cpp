@@ -3,10 +3,17 @@
 #include <algorithm>
 #include <cmath>
 #include <numbers>
+#include <string>
 
+#include "obscura/math/disk_cache.h"
 #include "obscura/math/safe_index.h"
 #include "obscura/shading/gauss_legendre.h"
 #include "obscura/shading/phong_lobe.h"
+
+#ifndef OBSCURA_TABLE_KEY  // names this file's entries in the cache folder by the code that made
+                           // them
+#error "OBSCURA_TABLE_KEY comes from cmake/table_key.cmake"
+#endif
 
 namespace obscura::shading {
 
@@ -72,15 +79,17 @@ struct Tables {
 };
 
 const Tables& tables() {
-  static const Tables t = [] {
-    Tables t;
-    for (int j = 0; j < kExponentSize; ++j)
-      for (int i = 0; i < kMuSize; ++i) {
-        t.phong[j][i] = float(integrate(node_mu(i), node_exponent(j), false));
-        t.blinn[j][i] = float(integrate(node_mu(i), node_exponent(j), true));
-      }
-    return t;
-  }();
+  // Integrated once; later runs read it from the cache folder (math/disk_cache.h).
+  static const Tables t =
+      cached_table<Tables>(std::string("phong-albedo-") + OBSCURA_TABLE_KEY + ".bin", [] {
+        Tables t;
+        for (int j = 0; j < kExponentSize; ++j)
+          for (int i = 0; i < kMuSize; ++i) {
+            t.phong[j][i] = float(integrate(node_mu(i), node_exponent(j), false));
+            t.blinn[j][i] = float(integrate(node_mu(i), node_exponent(j), true));
+          }
+        return t;
+      });
   return t;
 }
 
