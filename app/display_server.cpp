@@ -53,8 +53,9 @@ class Message {
 std::pair<std::string, std::string> split_address(const std::string& address) {
   const size_t colon = address.rfind(':');
   if (colon == std::string::npos || colon == 0 || colon + 1 == address.size())
-    throw UsageError("--display-server: expected HOST:PORT (tev listens on 127.0.0.1:14158); got '" +
-                     address + "'");
+    throw UsageError(
+        "--display-server: expected HOST:PORT (tev listens on 127.0.0.1:14158); got '" + address +
+        "'");
   std::string host = address.substr(0, colon), port = address.substr(colon + 1);
   if (host.size() > 2 && host.front() == '[' && host.back() == ']')
     host = host.substr(1, host.size() - 2);
@@ -115,7 +116,9 @@ class Connection {
 
 }  // namespace
 
-void check_display_server_address(const std::string& address) { split_address(address); }
+void check_display_server_address(const std::string& address) {
+  split_address(address);
+}
 
 DisplayServerImage display_image(const std::string& name, const Image& rgb,
                                  const std::vector<AovImage>& aovs) {

@@ -27,7 +27,7 @@ struct DisplayServerImage {
 };
 
 DisplayServerImage display_image(const std::string& name, const Image& rgb,
-                           const std::vector<AovImage>& aovs);
+                                 const std::vector<AovImage>& aovs);
 
 // Throws UsageError unless `address` is HOST:PORT (checked before rendering).
 void check_display_server_address(const std::string& address);

@@ -103,7 +103,8 @@ void run_render(RenderOptions options, const std::string& job) {
         "frame with its own --ground-truth file)");
   if (!options.display_server.empty()) {
     if (!options.frames.empty() || !options.shard.empty())
-      throw UsageError("--display-server shows one whole frame: it does not take --frames or --shard");
+      throw UsageError(
+          "--display-server shows one whole frame: it does not take --frames or --shard");
     check_display_server_address(options.display_server);
   }
   if (!options.frames.empty()) return run_sequence(options, team);
@@ -197,7 +198,8 @@ void run_render(RenderOptions options, const std::string& job) {
     // The image is written whatever tev says: a display that cannot be reached is a warning.
     if (!options.display_server.empty()) {
       try {
-        const std::vector<AovImage> aovs = frame.aovs ? frame.aovs->images() : std::vector<AovImage>{};
+        const std::vector<AovImage> aovs =
+            frame.aovs ? frame.aovs->images() : std::vector<AovImage>{};
         push_to_display_server(options.display_server,
                                display_image(options.output, frame.finished(), aovs));
       } catch (const Error& e) {

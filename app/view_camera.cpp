@@ -26,13 +26,11 @@ constexpr double kMinFNumber = 0.5, kMaxFNumber = 1024;
 constexpr double kMinFocusDistanceM = 1e-3;
 
 double json_number_in(const Json& value, const char* key, double low, double high) {
-  if (!value.is_number())
-    throw RequestError(std::string("camera.") + key, "expected a number");
+  if (!value.is_number()) throw RequestError(std::string("camera.") + key, "expected a number");
   const double v = value.get<double>();
   if (!std::isfinite(v) || v < low || v > high)
-    throw RequestError(std::string("camera.") + key, "expected a number in [" +
-                                                         exact_number(low) + ", " +
-                                                         exact_number(high) + "]");
+    throw RequestError(std::string("camera.") + key, "expected a number in [" + exact_number(low) +
+                                                         ", " + exact_number(high) + "]");
   return v;
 }
 
@@ -179,7 +177,8 @@ std::vector<std::string> render_arguments(const std::vector<std::string>& argume
     out.insert(out.end(), {"--position", triple(view.position), "--look-at", triple(view.target),
                            "--up", triple(view.up)});
   }
-  if (view.focal_length_mm) out.insert(out.end(), {"--focal-length", exact_number(*view.focal_length_mm)});
+  if (view.focal_length_mm)
+    out.insert(out.end(), {"--focal-length", exact_number(*view.focal_length_mm)});
   if (view.f_number) out.insert(out.end(), {"--fstop", exact_number(*view.f_number)});
   if (view.focus_distance_m)
     out.insert(out.end(), {"--focus-distance", exact_number(*view.focus_distance_m)});

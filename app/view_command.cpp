@@ -30,8 +30,7 @@ void add_view_command(CLI::App& app, int argc, char** argv) {
       ->group("View");
   view->add_flag("--open", server->open, "Ask the desktop to open the page in a browser")
       ->group("View");
-  view->add_flag("--no-watch", server->no_watch,
-                 "Do not reload the scene file when it changes")
+  view->add_flag("--no-watch", server->no_watch, "Do not reload the scene file when it changes")
       ->group("View");
   // main() runs `obscura view …` with `view` as the first word (the commands are checked there).
   std::vector<std::string> arguments;

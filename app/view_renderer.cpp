@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 
 #include <CLI/CLI.hpp>
 #include <nlohmann/json.hpp>
@@ -96,14 +97,22 @@ ViewRenderer::ViewRenderer(std::vector<std::string> arguments, bool watch)
   load();
 }
 
-ViewRenderer::~ViewRenderer() { stop(); }
+ViewRenderer::~ViewRenderer() {
+  stop();
+}
 
 void ViewRenderer::load() {
   ParsedRender parsed = parse_render(render_arguments(arguments_, ViewCamera{}));
   RenderOptions& options = *parsed.options;
+  if (options.threads > 0 && !thread_limit_)
+    thread_limit_.emplace(tbb::global_control::max_allowed_parallelism, size_t(options.threads));
   auto scene = std::make_unique<Scene>(load_render_scene(options, false));
   std::vector<std::string> notes;
   const Camera camera = resolve_render_camera(*scene, options, false, &notes);
+  if (!options.quiet) {
+    for (const std::string& w : scene->warnings) std::fprintf(stderr, "warning: %s\n", w.c_str());
+    for (const std::string& n : notes) std::fprintf(stderr, "warning: %s\n", n.c_str());
+  }
   // The page orbits about the point the camera looks at, as far ahead as the scene's centre.
   const Bounds3f bounds = scene->bounds();
   const Point3d eye = camera.world_from_camera.at(camera.shutter.open_s)(Point3d(0, 0, 0));
@@ -205,12 +214,18 @@ std::string ViewRenderer::event_json() const {
   nlohmann::json json = {{"event", event_}, {"message", message_}};
   if (latest_) {
     const ViewFrame& f = *latest_;
-    json["frame"] = {{"event", f.event},          {"generation", f.generation},
-                     {"renderer", f.renderer},    {"pass", f.pass},
-                     {"samples", f.samples},      {"samples_target", f.samples_target},
-                     {"final", f.final},          {"seconds", f.seconds},
-                     {"width", f.image.width},    {"height", f.image.height},
-                     {"command", f.command},      {"scene_camera", f.scene_camera_json},
+    json["frame"] = {{"event", f.event},
+                     {"generation", f.generation},
+                     {"renderer", f.renderer},
+                     {"pass", f.pass},
+                     {"samples", f.samples},
+                     {"samples_target", f.samples_target},
+                     {"final", f.final},
+                     {"seconds", f.seconds},
+                     {"width", f.image.width},
+                     {"height", f.image.height},
+                     {"command", f.command},
+                     {"scene_camera", f.scene_camera_json},
                      {"camera", nlohmann::json::parse(f.camera_json)}};
   }
   json["current_generation"] = generation_;
@@ -259,8 +274,7 @@ void ViewRenderer::loop() {
         continue;
       } catch (const std::exception& e) {
         // The last good scene stays; the page shows why the edit did not load.
-        set_message(std::string("the scene file did not load, so the last one stays: ") +
-                    e.what());
+        set_message(std::string("the scene file did not load, so the last one stays: ") + e.what());
       }
     }
     if (generation == rendered) continue;
@@ -346,10 +360,10 @@ void ViewRenderer::render(uint64_t generation, const ViewCamera& view) {
     frame->normal = normal;
     publish(std::move(frame));
   };
-  const FrameStats stats = session_->render(camera, settings, film, aovs ? &*aovs : nullptr,
-                                            asked.capabilities().takes_samples_per_pixel
-                                                ? ProgressCallback(progress)
-                                                : ProgressCallback());
+  const FrameStats stats =
+      session_->render(camera, settings, film, aovs ? &*aovs : nullptr,
+                       asked.capabilities().takes_samples_per_pixel ? ProgressCallback(progress)
+                                                                    : ProgressCallback());
   if (stats.cancelled || cancel_) return;
   auto frame = frame_of(asked.name(), film.to_image());
   frame->pass = ++pass;

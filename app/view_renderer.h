@@ -20,6 +20,8 @@
 #include <thread>
 #include <vector>
 
+#include <tbb/global_control.h>
+
 #include "obscura/color/develop.h"
 #include "obscura/film/image.h"
 #include "view_camera.h"
@@ -102,6 +104,7 @@ class ViewRenderer {
   std::unique_ptr<Scene> scene_;
   std::unique_ptr<RenderSession> session_;
   double target_distance_m_ = 1;
+  std::optional<tbb::global_control> thread_limit_;  // --threads
 
   mutable std::mutex mutex_;
   mutable std::condition_variable changed_;  // the render thread waits for a new camera

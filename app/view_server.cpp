@@ -186,7 +186,8 @@ class Routes {
     });
     server.Get("/api/depth", [this](const httplib::Request& req, httplib::Response& res) {
       try {
-        const double x = std::stod(req.get_param_value("x")), y = std::stod(req.get_param_value("y"));
+        const double x = std::stod(req.get_param_value("x")),
+                     y = std::stod(req.get_param_value("y"));
         const std::optional<double> depth = renderer_.depth_at(x, y);
         if (!depth) return send_error(res, 404, "nothing there");
         send_json(res, Json{{"depth_m", *depth}}.dump());
@@ -251,8 +252,6 @@ class Routes {
 }  // namespace
 
 void run_view_server(const ViewServerOptions& options) {
-  ViewRenderer renderer(options.arguments, !options.no_watch);
-
   httplib::Server server;
   // SO_REUSEADDR alone (httplib's default adds SO_REUSEPORT, which would let a second view share
   // the port silently): a port in use is refused, one left in TIME_WAIT is not.
@@ -276,9 +275,14 @@ void run_view_server(const ViewServerOptions& options) {
     port = server.bind_to_any_port("127.0.0.1");
     if (port <= 0) throw Error("obscura view", "no free port on 127.0.0.1");
   }
+  // The port first: a second view on it says so before loading anything.
+  ViewRenderer renderer(options.arguments, !options.no_watch);
   const std::string token = random_token();
   Routes routes(renderer, token, port);
   routes.install(server);
+  // Ctrl-C and SIGTERM stop the server (listen_after_bind returns once it has), from the moment
+  // the address is printed.
+  InterruptGuard interrupt;
   renderer.start();
 
   const std::string url = "http://127.0.0.1:" + std::to_string(port) + "/?token=" + token;
@@ -287,8 +291,6 @@ void run_view_server(const ViewServerOptions& options) {
   std::fprintf(stderr, "obscura view: serving on 127.0.0.1:%d; Ctrl-C stops\n", port);
   if (options.open) open_in_browser(url);
 
-  // Ctrl-C and SIGTERM stop the server; listen_after_bind returns once it has.
-  InterruptGuard interrupt;
   std::atomic<bool> done{false};
   std::thread watcher([&] {
     while (!done && !InterruptGuard::requested())

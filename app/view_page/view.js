@@ -73,6 +73,7 @@ async function flush() {
 }
 function rememberSend(generation, time) {
   view.sentAt.set(generation, time);
+  view.lastSent = Math.max(view.lastSent || 0, generation);
   if (view.sentAt.size > 64) view.sentAt.delete(view.sentAt.keys().next().value);
 }
 function sendPose() {

@@ -235,13 +235,17 @@ if (bench) {
     const x = box.x + box.width / 2, y = box.y + box.height / 2;
     await page.evaluate(() => { window.obscuraView.timings = []; });
     for (let i = 0; i < 12; i++) {
+      const before = await page.evaluate(() => window.obscuraView.lastSent || 0);
       await page.mouse.move(x, y);
       await page.mouse.down();
       await page.mouse.move(x + 8, y);
       await page.mouse.up();
-      await waitShown(false);
-      await page.waitForFunction(() => { const t = window.obscuraView.timings; const g = window.obscuraView.state.current_generation;
-        return t.some((e) => e.generation === g && e.renderer === 'path'); }, { timeout: 60000 });
+      // Until the path tracer's first pass of this move is on the page.
+      await page.waitForFunction((before) => {
+        const v = window.obscuraView, g = v.lastSent || 0;
+        return g > before && v.timings.some((e) => e.generation === g && e.renderer === 'path');
+      }, { timeout: 60000, polling: 10 }, before);
+      await new Promise((r) => setTimeout(r, 300));
     }
     const timings = await page.evaluate(() => window.obscuraView.timings);
     const firstOf = (renderer) => {
