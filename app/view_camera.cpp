@@ -24,6 +24,8 @@ using Json = nlohmann::json;
 constexpr double kMinFocalLengthMm = 1, kMaxFocalLengthMm = 5000;
 constexpr double kMinFNumber = 0.5, kMaxFNumber = 1024;
 constexpr double kMinFocusDistanceM = 1e-3;
+constexpr double kMinShutterS = 1e-6, kMaxShutterS = 60;
+constexpr double kMinIso = 1, kMaxIso = 1e6;
 
 double json_number_in(const Json& value, const char* key, double low, double high) {
   if (!value.is_number()) throw RequestError(std::string("camera.") + key, "expected a number");
@@ -103,6 +105,15 @@ ViewCamera parse_view_camera(const std::string& text, const ViewCamera& current)
           optional_in(value, "focus_distance_m", kMinFocusDistanceM, kMaxWorldCoordinateM);
     } else if (key == "exposure_ev") {
       view.exposure_ev = optional_in(value, "exposure_ev", -kMaxExposureEv, kMaxExposureEv);
+    } else if (key == "shutter_s") {
+      view.shutter_s = optional_in(value, "shutter_s", kMinShutterS, kMaxShutterS);
+    } else if (key == "iso") {
+      view.iso = optional_in(value, "iso", kMinIso, kMaxIso);
+    } else if (key == "physical_exposure") {
+      if (!value.is_null() && !value.is_boolean())
+        throw RequestError("camera.physical_exposure", "expected true, false or null");
+      view.physical_exposure =
+          value.is_null() ? std::nullopt : std::optional<bool>(value.get<bool>());
     } else {
       throw RequestError("camera", "unknown key '" + key + "'");
     }
@@ -121,6 +132,10 @@ std::string view_camera_json(const ViewCamera& view, const Camera& resolved) {
   json["f_number"] = optional(view.f_number);
   json["focus_distance_m"] = optional(view.focus_distance_m);
   json["exposure_ev"] = optional(view.exposure_ev);
+  json["shutter_s"] = optional(view.shutter_s);
+  json["iso"] = optional(view.iso);
+  json["physical_exposure"] =
+      view.physical_exposure ? Json(*view.physical_exposure) : Json(nullptr);
   // What the resolved camera has, for the page's read-outs.
   const Vector2d fov = resolved.fov_degrees();
   json["resolved"] = {{"focal_length_mm", resolved.focal_length_mm()},
@@ -129,6 +144,9 @@ std::string view_camera_json(const ViewCamera& view, const Camera& resolved) {
                       {"depth_of_field", resolved.lens.depth_of_field},
                       {"focus_distance_m", resolved.lens.focus_distance_m},
                       {"exposure_ev", resolved.exposure.compensation_ev},
+                      {"shutter_s", resolved.shutter.duration_s()},
+                      {"iso", resolved.exposure.iso},
+                      {"physical_exposure", resolved.exposure.mode == ExposureMode::physical},
                       {"width", resolved.film.width_px},
                       {"height", resolved.film.height_px}};
   return json.dump();
@@ -147,7 +165,10 @@ ViewCamera initial_view_camera(const Camera& camera, double target_distance_m) {
           .focal_length_mm = std::nullopt,
           .f_number = std::nullopt,
           .focus_distance_m = std::nullopt,
-          .exposure_ev = std::nullopt};
+          .exposure_ev = std::nullopt,
+          .shutter_s = std::nullopt,
+          .iso = std::nullopt,
+          .physical_exposure = std::nullopt};
 }
 
 std::vector<std::string> render_arguments(const std::vector<std::string>& arguments,
@@ -160,6 +181,9 @@ std::vector<std::string> render_arguments(const std::vector<std::string>& argume
   if (view.f_number) replaced.insert("--fstop");
   if (view.focus_distance_m) replaced.insert("--focus-distance");
   if (view.exposure_ev) replaced.insert("--exposure");
+  if (view.shutter_s) replaced.insert("--shutter");
+  if (view.iso) replaced.insert("--iso");
+  if (view.physical_exposure) replaced.insert("--exposure-mode");
   std::vector<std::string> out;
   for (size_t i = 0; i < arguments.size(); ++i) {
     const std::string& a = arguments[i];
@@ -183,6 +207,10 @@ std::vector<std::string> render_arguments(const std::vector<std::string>& argume
   if (view.focus_distance_m)
     out.insert(out.end(), {"--focus-distance", exact_number(*view.focus_distance_m)});
   if (view.exposure_ev) out.insert(out.end(), {"--exposure", exact_number(*view.exposure_ev)});
+  if (view.shutter_s) out.insert(out.end(), {"--shutter", "0:" + exact_number(*view.shutter_s)});
+  if (view.iso) out.insert(out.end(), {"--iso", exact_number(*view.iso)});
+  if (view.physical_exposure)
+    out.insert(out.end(), {"--exposure-mode", *view.physical_exposure ? "physical" : "radiance"});
   return out;
 }
 

@@ -24,10 +24,14 @@ struct ViewCamera {
   std::optional<double> f_number = std::nullopt;
   std::optional<double> focus_distance_m = std::nullopt;
   std::optional<double> exposure_ev = std::nullopt;
+  std::optional<double> shutter_s = std::nullopt;  // open from 0 for this long
+  std::optional<double> iso = std::nullopt;
+  std::optional<bool> physical_exposure = std::nullopt;  // --exposure-mode physical / radiance
 };
 
 // The page's JSON ({"position": [x, y, z], "target": …, "up": …, "focal_length_mm": 35,
-// "f_number": 2.8 or null, "focus_distance_m": …, "exposure_ev": …}; every key optional, absent
+// "f_number": 2.8 or null, "focus_distance_m": …, "exposure_ev": …, "shutter_s": …, "iso": …,
+// "physical_exposure": true or false}; every key optional, absent
 // ones kept from `current`). Throws RequestError for malformed JSON, an unknown key, a value of the
 // wrong type, not finite or out of range.
 ViewCamera parse_view_camera(const std::string& text, const ViewCamera& current);

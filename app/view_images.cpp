@@ -83,4 +83,22 @@ std::string normal_png(const Image& normal) {
   return png_of(rgb, normal.width, normal.height);
 }
 
+std::string id_png(const Image& id) {
+  std::vector<uint8_t> rgb(size_t(id.width) * id.height * 3, 0);
+  for (size_t p = 0; p < size_t(id.width) * id.height; ++p) {
+    const float value = id.data[p * id.channels];
+    if (!(value >= 0)) continue;
+    // A hue per id from the golden ratio, so that neighbouring ids differ most.
+    const double hue = std::fmod(double(value) * 0.6180339887498949 + 0.1, 1.0) * 6;
+    const int sector = int(hue) % 6;
+    const double f = hue - std::floor(hue);
+    const double v = 0.95, s = 0.65, lo = v * (1 - s), down = v * (1 - s * f),
+                 up = v * (1 - s * (1 - f));
+    const double rgb_of[6][3] = {{v, up, lo},   {down, v, lo}, {lo, v, up},
+                                 {lo, down, v}, {up, lo, v},   {v, lo, down}};
+    for (int c = 0; c < 3; ++c) rgb[3 * p + c] = uint8_t(std::lround(255 * rgb_of[sector][c]));
+  }
+  return png_of(rgb, id.width, id.height);
+}
+
 }  // namespace obscura::app

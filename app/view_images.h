@@ -21,4 +21,7 @@ std::string depth_png(const Image& depth, double* near_m = nullptr, double* far_
 // World-space normals as colours, (n + 1) / 2; misses black.
 std::string normal_png(const Image& normal);
 
+// Mesh ids as colours, a fixed well-spread colour per id; misses (−1) black.
+std::string id_png(const Image& id);
+
 }  // namespace obscura::app

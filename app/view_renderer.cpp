@@ -73,6 +73,8 @@ bool is_pass_end(int done, int samples, int largest) {
 
 // The tracer's largest pass (trace/render.cpp).
 constexpr int kTracerLargestPass = 64;
+// Frames the rasterizer's preview accumulates, at most, for depth of field and motion blur.
+constexpr int kPreviewEffectSamples = 8;
 
 }  // namespace
 
@@ -87,6 +89,8 @@ std::string ViewFrame::png(const std::string& view) const {
     bytes = depth_png(*depth);
   else if (view == "normal" && normal)
     bytes = normal_png(*normal);
+  else if (view == "id" && id)
+    bytes = id_png(*id);
   else
     return {};
   return encoded_[view] = std::move(bytes);
@@ -318,8 +322,14 @@ void ViewRenderer::render(uint64_t generation, const ViewCamera& view) {
   const Renderer raster = parse_renderer("raster").value();
   FrameSettings settings = frame_settings(options, scene_->render, WorkShare{});
   settings.cancel = &cancel_;
+  const bool raster_only = asked == raster;
   FrameSettings raster_settings = settings;
   raster_settings.renderer = raster;
+  // A preview before the tracer's frame: depth of field and motion blur from a few accumulated
+  // frames keep it quick (the rasterizer asked for as the renderer keeps its own count).
+  if (!raster_only)
+    raster_settings.raster.effect_samples =
+        std::min(raster_settings.raster.effect_samples, kPreviewEffectSamples);
   Film raster_film(crop.width(), crop.height());
   AovBuffers raster_aovs(crop.width(), crop.height(), false);
   const FrameStats raster_stats =
@@ -327,7 +337,7 @@ void ViewRenderer::render(uint64_t generation, const ViewCamera& view) {
   if (raster_stats.cancelled || cancel_) return;
   auto depth = std::make_shared<const Image>(raster_aovs.depth());
   auto normal = std::make_shared<const Image>(raster_aovs.normal());
-  const bool raster_only = asked == raster;
+  auto id = std::make_shared<const Image>(raster_aovs.id());
   {
     auto frame = frame_of("raster", raster_film.to_image());
     frame->pass = 1;
@@ -335,6 +345,7 @@ void ViewRenderer::render(uint64_t generation, const ViewCamera& view) {
     frame->final = raster_only;
     frame->depth = depth;
     frame->normal = normal;
+    frame->id = id;
     publish(std::move(frame));
   }
   if (raster_only) return;
@@ -358,6 +369,7 @@ void ViewRenderer::render(uint64_t generation, const ViewCamera& view) {
     frame->samples_target = samples;
     frame->depth = depth;
     frame->normal = normal;
+    frame->id = id;
     publish(std::move(frame));
   };
   const FrameStats stats =
@@ -372,6 +384,7 @@ void ViewRenderer::render(uint64_t generation, const ViewCamera& view) {
   frame->final = true;
   frame->depth = depth;
   frame->normal = normal;
+  frame->id = id;
   publish(std::move(frame));
 }
 

@@ -195,6 +195,23 @@ $('exposure').addEventListener('input', () => {
   $('exposure-out').textContent = (ev > 0 ? '+' : '') + ev + ' EV';
   sendCamera({ exposure_ev: ev });
 });
+// Shutter in third stops from 1/4096 s to 1 s (slider −36…0), ISO in third stops from 50.
+const shutterOf = (v) => Math.pow(2, v / 3);
+const sliderOfShutter = (t) => Math.round(3 * Math.log2(t));
+const isoOf = (v) => Math.round(100 * Math.pow(2, v / 3));
+const sliderOfIso = (iso) => Math.round(3 * Math.log2(iso / 100));
+const shutterText = (t) => t >= 1 ? t.toPrecision(3) + ' s' : '1/' + Math.round(1 / t) + ' s';
+$('shutter').addEventListener('input', () => {
+  const t = shutterOf(+$('shutter').value);
+  $('shutter-out').textContent = shutterText(t);
+  sendCamera({ shutter_s: t });
+});
+$('iso').addEventListener('input', () => {
+  const iso = isoOf(+$('iso').value);
+  $('iso-out').textContent = String(iso);
+  sendCamera({ iso });
+});
+$('physical').addEventListener('change', () => sendCamera({ physical_exposure: $('physical').checked }));
 for (const radio of document.querySelectorAll('input[name=view]'))
   radio.addEventListener('change', () => { view.mode = radio.value; view.shownEvent = 0; fetchFrame(); });
 
@@ -224,6 +241,41 @@ function showResolved(r) {
   $('fstop-out').textContent = 'f/' + r.f_number.toPrecision(3);
   $('focus-out').textContent = r.depth_of_field ? r.focus_distance_m.toPrecision(4) + ' m' : '(pinhole: all sharp)';
   $('exposure-out').textContent = (r.exposure_ev > 0 ? '+' : '') + r.exposure_ev + ' EV';
+  $('shutter-out').textContent = r.shutter_s > 0 ? shutterText(r.shutter_s) : 'instant';
+  $('iso-out').textContent = String(r.iso);
+}
+
+// The histogram of the image shown (its display codes, per channel) and a meter: the mean
+// luma and the share of clipped pixels, to judge exposure by.
+const scratch = document.createElement('canvas');
+function drawHistogram() {
+  const canvas = $('histogram');
+  if (!canvas || !frameImage.naturalWidth) return;
+  scratch.width = frameImage.naturalWidth;
+  scratch.height = frameImage.naturalHeight;
+  const context = scratch.getContext('2d', { willReadFrequently: true });
+  context.drawImage(frameImage, 0, 0);
+  const pixels = context.getImageData(0, 0, scratch.width, scratch.height).data;
+  const bins = 64, counts = [new Array(bins).fill(0), new Array(bins).fill(0), new Array(bins).fill(0)];
+  let luma = 0, clipped = 0;
+  for (let i = 0; i < pixels.length; i += 4) {
+    for (let c = 0; c < 3; c++) counts[c][pixels[i + c] >> 2]++;
+    luma += 0.2126 * pixels[i] + 0.7152 * pixels[i + 1] + 0.0722 * pixels[i + 2];
+    if (pixels[i] === 255 || pixels[i + 1] === 255 || pixels[i + 2] === 255) clipped++;
+  }
+  const n = pixels.length / 4, g = canvas.getContext('2d');
+  g.clearRect(0, 0, canvas.width, canvas.height);
+  const peak = Math.max(1, ...counts.flat().slice(1, -1));
+  const colours = ['rgba(255,80,80,0.6)', 'rgba(80,255,80,0.6)', 'rgba(90,140,255,0.6)'];
+  for (let c = 0; c < 3; c++) {
+    g.fillStyle = colours[c];
+    for (let b = 0; b < bins; b++) {
+      const h = Math.min(1, counts[c][b] / peak) * canvas.height;
+      g.fillRect(b * canvas.width / bins, canvas.height - h, canvas.width / bins, h);
+    }
+  }
+  $('meter-out').textContent = 'mean ' + (100 * luma / n / 255).toFixed(1) + ' % · clipped ' +
+    (100 * clipped / n).toFixed(2) + ' %';
 }
 
 let fetching = false;
@@ -241,6 +293,7 @@ async function fetchFrame() {
       if (frameImage.dataset.url) URL.revokeObjectURL(frameImage.dataset.url);
       frameImage.dataset.url = url;
       view.shownEvent = shown;
+      if (view.mode === 'beauty') drawHistogram();
       if (view.sentAt.has(frame.generation)) {
         view.timings.push({ generation: frame.generation, renderer: frame.renderer, pass: frame.pass,
           samples: frame.samples, ms: performance.now() - view.sentAt.get(frame.generation) });
@@ -272,6 +325,9 @@ function onState(state) {
     $('fstop').value = sliderOfFstop(view.resolved.f_number);
     $('dof').checked = view.resolved.depth_of_field;
     $('exposure').value = view.resolved.exposure_ev;
+    $('physical').checked = view.resolved.physical_exposure;
+    if (view.resolved.shutter_s > 0) $('shutter').value = sliderOfShutter(view.resolved.shutter_s);
+    $('iso').value = sliderOfIso(view.resolved.iso);
     showCamera();
   }
   if (frame.generation === state.current_generation) showResolved(view.resolved);
