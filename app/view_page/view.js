@@ -17,6 +17,7 @@ const view = {
   resolved: null,      // what the server resolved it to (field of view, focus, …)
   state: null,         // the last event's JSON
   shownEvent: 0,       // the event of the image on screen
+  shownMode: 'beauty', // and its view
   shownGeneration: 0,
   mode: 'beauty',
   moves: 0,            // camera changes sent
@@ -213,7 +214,7 @@ $('iso').addEventListener('input', () => {
 });
 $('physical').addEventListener('change', () => sendCamera({ physical_exposure: $('physical').checked }));
 for (const radio of document.querySelectorAll('input[name=view]'))
-  radio.addEventListener('change', () => { view.mode = radio.value; view.shownEvent = 0; fetchFrame(); });
+  radio.addEventListener('change', () => { view.mode = radio.value; fetchFrame(); });
 
 // --- copy camera -------------------------------------------------------------------------------
 function copyText(text) {
@@ -281,11 +282,13 @@ function drawHistogram() {
 let fetching = false;
 async function fetchFrame() {
   const state = view.state;
-  if (fetching || !state || !state.frame || state.frame.event === view.shownEvent) return;
+  // The server sends its latest frame, which may be newer than the event that asked for it.
+  if (fetching || !state || !state.frame) return;
+  if (state.frame.event <= view.shownEvent && view.shownMode === view.mode) return;
   fetching = true;
-  const frame = state.frame;
+  const frame = state.frame, mode = view.mode;
   try {
-    const res = await fetch(api('/api/frame?view=' + view.mode + '&event=' + frame.event));
+    const res = await fetch(api('/api/frame?view=' + mode + '&event=' + frame.event));
     if (res.ok) {
       const shown = +res.headers.get('X-Obscura-Event');
       const url = URL.createObjectURL(await res.blob());
@@ -293,6 +296,7 @@ async function fetchFrame() {
       if (frameImage.dataset.url) URL.revokeObjectURL(frameImage.dataset.url);
       frameImage.dataset.url = url;
       view.shownEvent = shown;
+      view.shownMode = mode;
       if (view.mode === 'beauty') drawHistogram();
       if (view.sentAt.has(frame.generation)) {
         view.timings.push({ generation: frame.generation, renderer: frame.renderer, pass: frame.pass,
@@ -308,7 +312,8 @@ async function fetchFrame() {
     }
   } finally {
     fetching = false;
-    if (view.state && view.state.frame && view.state.frame.event !== view.shownEvent) fetchFrame();
+    const latest = view.state && view.state.frame;
+    if (latest && (latest.event > view.shownEvent || view.shownMode !== view.mode)) fetchFrame();
   }
 }
 

@@ -103,7 +103,7 @@ async function waitShown(final = true, minGeneration = 0) {
   await page.waitForFunction((final, minGeneration) => {
     const v = window.obscuraView, s = v && v.state;
     return s && s.frame && s.frame.generation === s.current_generation &&
-      s.frame.generation >= minGeneration && v.shownEvent === s.frame.event && (!final || s.frame.final);
+      s.frame.generation >= minGeneration && v.shownEvent >= s.frame.event && (!final || s.frame.final);
   }, { timeout: 300000, polling: 50 }, final, minGeneration);
   return state();
 }
@@ -197,8 +197,8 @@ await check('click-to-focus sets the focus to the depth under the cursor', async
 
 await check('the depth view shows the depth AOV', async () => {
   await page.click('input[name=view][value=depth]');
-  await page.waitForFunction(() => window.obscuraView.shownEvent === window.obscuraView.state.frame.event &&
-    window.obscuraView.mode === 'depth', { timeout: 60000 });
+  await page.waitForFunction(() => window.obscuraView.shownEvent >= window.obscuraView.state.frame.event &&
+    window.obscuraView.shownMode === 'depth', { timeout: 60000 });
   await page.screenshot({ path: path.join(work, 'view_depth.png') });
   await page.click('input[name=view][value=beauty]');
   await waitShown();
