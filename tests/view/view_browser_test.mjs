@@ -15,7 +15,7 @@ const [cli, chromium, work] = process.argv.slice(2);
 const require = createRequire(path.join(work, 'node_modules', 'index.js'));
 const puppeteer = require('puppeteer-core');
 const bench = process.env.OBSCURA_VIEW_BENCH === '1';
-const [width, height] = bench ? [640, 360] : [320, 180];
+const [width, height] = [320, 180];
 // The measured Cornell box's back wall: the plane z = 559.2 mm, 556 × 548.8 mm.
 const wallZ = 0.5592;
 
@@ -228,46 +228,68 @@ await check('a screenshot of the page', async () => {
 });
 
 if (bench) {
-  // Camera moves a second apart: the time from sending each to the rasterizer's image and to the
-  // path tracer's first pass on the page; then frames shown per second during a steady orbit.
-  await check('interaction latency', async () => {
-    const box = await frameBox();
-    const x = box.x + box.width / 2, y = box.y + box.height / 2;
-    await page.evaluate(() => { window.obscuraView.timings = []; });
-    for (let i = 0; i < 12; i++) {
-      const before = await page.evaluate(() => window.obscuraView.lastSent || 0);
-      await page.mouse.move(x, y);
-      await page.mouse.down();
-      await page.mouse.move(x + 8, y);
-      await page.mouse.up();
-      // Until the path tracer's first pass of this move is on the page.
-      await page.waitForFunction((before) => {
-        const v = window.obscuraView, g = v.lastSent || 0;
-        return g > before && v.timings.some((e) => e.generation === g && e.renderer === 'path');
-      }, { timeout: 60000, polling: 10 }, before);
-      await new Promise((r) => setTimeout(r, 300));
-    }
-    const timings = await page.evaluate(() => window.obscuraView.timings);
-    const firstOf = (renderer) => {
-      const byGen = new Map();
-      for (const t of timings) if (t.renderer === renderer && !byGen.has(t.generation)) byGen.set(t.generation, t.ms);
-      const v = [...byGen.values()].sort((a, b) => a - b);
-      return { median: v[v.length >> 1], min: v[0], max: v[v.length - 1], n: v.length };
-    };
-    const raster = firstOf('raster'), path1 = firstOf('path');
-    const start = Date.now(), shownBefore = await page.evaluate(() => window.obscuraView.timings.length);
-    await page.mouse.move(x, y);
-    await page.mouse.down();
-    for (let i = 0; i < 120; i++) { await page.mouse.move(x + 200 * Math.sin(i / 20), y); await new Promise((r) => setTimeout(r, 16)); }
-    await page.mouse.up();
-    const seconds = (Date.now() - start) / 1000;
-    const shown = (await page.evaluate(() => window.obscuraView.timings.length)) - shownBefore;
-    const load = readFileSync('/proc/loadavg', 'utf8').trim();
-    const report = { width, height, raster_ms: raster, path_first_pass_ms: path1,
-      orbit_fps: shown / seconds, loadavg: load };
-    console.log('  BENCH ' + JSON.stringify(report));
-    writeFileSync(path.join(work, 'view_bench.json'), JSON.stringify(report, null, 2));
-  });
+  // Camera moves a while apart: the time from sending each to the rasterizer's image and to the
+  // path tracer's first pass on the page; then images shown per second during a steady orbit.
+  // The Cornell box, and each scene file OBSCURA_VIEW_BENCH_SCENES names (':'-separated).
+  const scenes = [['cornell-box'], ...(process.env.OBSCURA_VIEW_BENCH_SCENES || '').split(':')
+    .filter((s) => s).map((s) => [s])];
+  for (const benchScene of scenes) {
+    await check('interaction latency: ' + benchScene[0], async () => {
+      const benchServer = await startView([...benchScene, '--width', '640', '--height', '360', '--spp', '8']);
+      const benchPage = await browser.newPage();
+      try {
+        await benchPage.goto(benchServer.url);
+        await benchPage.waitForFunction(() => window.obscuraView && window.obscuraView.state &&
+          window.obscuraView.state.frame && window.obscuraView.state.frame.final &&
+          window.obscuraView.shownEvent >= window.obscuraView.state.frame.event, { timeout: 300000 });
+        const r = await benchPage.evaluate(() => {
+          const b = document.getElementById('frame').getBoundingClientRect();
+          return { x: b.left + b.width / 2, y: b.top + b.height / 2 };
+        });
+        for (let i = 0; i < 12; i++) {
+          const before = await benchPage.evaluate(() => window.obscuraView.lastSent || 0);
+          await benchPage.mouse.move(r.x, r.y);
+          await benchPage.mouse.down();
+          await benchPage.mouse.move(r.x + 8, r.y);
+          await benchPage.mouse.up();
+          // Until the path tracer's first pass of this move is on the page.
+          await benchPage.waitForFunction((before) => {
+            const v = window.obscuraView, g = v.lastSent || 0;
+            return g > before && v.timings.some((e) => e.generation === g && e.renderer === 'path');
+          }, { timeout: 120000, polling: 10 }, before);
+          await new Promise((resolve) => setTimeout(resolve, 300));
+        }
+        const timings = await benchPage.evaluate(() => window.obscuraView.timings);
+        const firstOf = (renderer) => {
+          const byGen = new Map();
+          for (const t of timings) if (t.renderer === renderer && !byGen.has(t.generation)) byGen.set(t.generation, t.ms);
+          const v = [...byGen.values()].sort((a, b) => a - b);
+          return { median: Math.round(v[v.length >> 1]), min: Math.round(v[0]), max: Math.round(v[v.length - 1]), n: v.length };
+        };
+        const raster = firstOf('raster'), path1 = firstOf('path');
+        const shownBefore = await benchPage.evaluate(() => window.obscuraView.timings.length);
+        const start = Date.now();
+        await benchPage.mouse.move(r.x, r.y);
+        await benchPage.mouse.down();
+        for (let i = 0; i < 120; i++) {
+          await benchPage.mouse.move(r.x + 200 * Math.sin(i / 20), r.y);
+          await new Promise((resolve) => setTimeout(resolve, 16));
+        }
+        await benchPage.mouse.up();
+        const seconds = (Date.now() - start) / 1000;
+        const shown = (await benchPage.evaluate(() => window.obscuraView.timings.length)) - shownBefore;
+        const report = { scene: benchScene[0], width: 640, height: 360, raster_ms: raster,
+          path_first_pass_ms: path1, orbit_images_per_s: +(shown / seconds).toFixed(1),
+          loadavg: readFileSync('/proc/loadavg', 'utf8').trim() };
+        console.log('  BENCH ' + JSON.stringify(report));
+        writeFileSync(path.join(work, 'view_bench_' + path.basename(benchScene[0]) + '.json'),
+          JSON.stringify(report, null, 2));
+      } finally {
+        await benchPage.close();
+        benchServer.child.kill('SIGTERM');
+      }
+    });
+  }
 }
 
 await check('no script errors on the page', async () => {
