@@ -296,7 +296,11 @@ void run_view_server(const ViewServerOptions& options) {
     while (!done && !InterruptGuard::requested())
       std::this_thread::sleep_for(std::chrono::milliseconds(100));
     renderer.stop();  // wakes the event streams, so the workers can finish
-    server.stop();
+    // Until listening has ended: a stop before it began would be missed.
+    while (!done) {
+      server.stop();
+      std::this_thread::sleep_for(std::chrono::milliseconds(50));
+    }
   });
   server.listen_after_bind();
   done = true;
