@@ -35,7 +35,8 @@ void add_view_command(CLI::App& app, int argc, char** argv) {
   // main() runs `obscura view …` with `view` as the first word (the commands are checked there).
   std::vector<std::string> arguments;
   for (int i = 2; i < argc; ++i) arguments.emplace_back(argv[i]);
-  view->callback([server, arguments] {
+  // The options live as long as the parser that writes into them.
+  view->callback([options, server, arguments] {
     ViewServerOptions run = *server;
     run.arguments = arguments;
     run_view_server(run);

@@ -9,6 +9,7 @@
 
 #include "obscura/io/image_codecs.h"
 #include "obscura/io/image_codecs_loader.h"
+#include "obscura/io/image_io.h"
 
 namespace obscura::app {
 
