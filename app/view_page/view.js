@@ -104,7 +104,7 @@ viewport.addEventListener('pointermove', (e) => {
   if (drag.mode === 'orbit') {
     // Turning about the camera's own up and right keeps a rolled horizon rolled.
     let offset = sub(c.position, c.target), up = c.up;
-    const yaw = -dx * 0.01, pitch = -dy * 0.01;
+    const yaw = -dx * 0.005, pitch = -dy * 0.005;
     offset = rotate(offset, axes.up, yaw);
     up = rotate(up, axes.up, yaw);
     const right = rotate(axes.right, axes.up, yaw);
