@@ -236,10 +236,10 @@ std::string ViewRenderer::event_json() const {
   return json.dump();
 }
 
-void ViewRenderer::publish(std::shared_ptr<ViewFrame> frame) {
+void ViewRenderer::publish(std::shared_ptr<ViewFrame> frame, bool even_if_stale) {
   {
     std::lock_guard lock(mutex_);
-    if (frame->generation != generation_) return;  // a camera newer than this frame is asked for
+    if (frame->generation != generation_ && !even_if_stale) return;
     frame->event = ++event_;
     message_.clear();
     latest_ = std::move(frame);
@@ -334,7 +334,7 @@ void ViewRenderer::render(uint64_t generation, const ViewCamera& view) {
   AovBuffers raster_aovs(crop.width(), crop.height(), false);
   const FrameStats raster_stats =
       session_->render(camera, raster_settings, raster_film, &raster_aovs);
-  if (raster_stats.cancelled || cancel_) return;
+  // The rasterizer completes the frame under way when cancelled, so it is shown even then.
   auto depth = std::make_shared<const Image>(raster_aovs.depth());
   auto normal = std::make_shared<const Image>(raster_aovs.normal());
   auto id = std::make_shared<const Image>(raster_aovs.id());
@@ -342,13 +342,13 @@ void ViewRenderer::render(uint64_t generation, const ViewCamera& view) {
     auto frame = frame_of("raster", raster_film.to_image());
     frame->pass = 1;
     frame->samples = frame->samples_target = raster_stats.done;
-    frame->final = raster_only;
+    frame->final = raster_only && !raster_stats.cancelled;
     frame->depth = depth;
     frame->normal = normal;
     frame->id = id;
-    publish(std::move(frame));
+    publish(std::move(frame), true);
   }
-  if (raster_only) return;
+  if (raster_only || cancel_) return;
 
   // 2. The renderer asked for, pass by pass: between two passes every tile is done and none of
   //    the next has started, so the film holds whole passes and is copied as it is.

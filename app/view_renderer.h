@@ -91,7 +91,10 @@ class ViewRenderer {
   void load();  // parses the arguments and loads the scene; throws
   bool scene_file_changed();
   void render(uint64_t generation, const ViewCamera& view);
-  void publish(std::shared_ptr<ViewFrame> frame);
+  // Makes `frame` the latest unless a newer camera is asked for — or, with `even_if_stale`
+  // (the rasterizer's preview), always: while the camera keeps moving, the last camera's image is
+  // better than none.
+  void publish(std::shared_ptr<ViewFrame> frame, bool even_if_stale = false);
   void set_message(const std::string& message);
 
   std::vector<std::string> arguments_;

@@ -19,6 +19,7 @@ chromium=${OBSCURA_CHROMIUM:-$(command -v chromium || command -v chromium-browse
 [ -n "$chromium" ] || skip "no Chromium (Debian's chromium; scripts/setup installs it)"
 command -v node >/dev/null || skip "no node (scripts/setup installs nodejs)"
 mkdir -p "$work"
+work=$(cd "$work" && pwd)
 if [ ! -f "$work/node_modules/puppeteer-core/package.json" ] ||
    ! grep -q "\"version\": \"$puppeteer_version\"" "$work/node_modules/puppeteer-core/package.json"; then
   command -v npm >/dev/null || skip "no npm to install puppeteer-core with"
