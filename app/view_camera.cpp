@@ -59,7 +59,7 @@ Json array_of(const std::array<double, 3>& v) {
 }
 
 // Options `obscura view` has and `obscura render` has not; their values come after them.
-const std::set<std::string> kViewOnlyWithValue = {"--port"};
+const std::set<std::string> kViewOnlyWithValue = {"--port", "--max-requests-per-second"};
 const std::set<std::string> kViewOnlyFlags = {"--open", "--no-watch"};
 
 }  // namespace

@@ -30,6 +30,12 @@ void add_view_command(CLI::App& app, int argc, char** argv) {
       ->group("View");
   view->add_flag("--open", server->open, "Ask the desktop to open the page in a browser")
       ->group("View");
+  view->add_option("--max-requests-per-second", server->max_requests_per_second,
+                   "Requests the server takes in a second; more are answered 429 (Too Many "
+                   "Requests)")
+      ->check(integer_in(1, 1000000))
+      ->capture_default_str()
+      ->group("View");
   view->add_flag("--no-watch", server->no_watch, "Do not reload the scene file when it changes")
       ->group("View");
   // main() runs `obscura view …` with `view` as the first word (the commands are checked there).

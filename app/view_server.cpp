@@ -22,7 +22,9 @@ void run_view_server(const ViewServerOptions&) {
 
 #include <atomic>
 #include <chrono>
+#include <cstdint>
 #include <cstdio>
+#include <mutex>
 #include <random>
 #include <string_view>
 #include <thread>
@@ -127,13 +129,16 @@ void open_in_browser(const std::string& url) {
 
 class Routes {
  public:
-  Routes(ViewRenderer& renderer, std::string token, int port)
-      : renderer_(renderer), token_(std::move(token)), port_(port) {}
+  Routes(ViewRenderer& renderer, std::string token, int port, int max_requests_per_second)
+      : renderer_(renderer),
+        token_(std::move(token)),
+        port_(port),
+        max_requests_per_second_(max_requests_per_second) {}
 
   void install(httplib::Server& server) {
     server.set_pre_routing_handler([this](const httplib::Request& req, httplib::Response& res) {
-      return admit(req, res) ? httplib::Server::HandlerResponse::Unhandled
-                             : httplib::Server::HandlerResponse::Handled;
+      return admit(req, res) && within_rate(res) ? httplib::Server::HandlerResponse::Unhandled
+                                                 : httplib::Server::HandlerResponse::Handled;
     });
     server.set_post_routing_handler([](const httplib::Request&, httplib::Response& res) {
       // The token travels in the page's URLs: no other site is told it, nor may frame the page.
@@ -245,9 +250,30 @@ class Routes {
     return true;
   }
 
+  // At most max_requests_per_second_ admitted requests in each second (a fixed window): a client
+  // in a loop cannot keep the workers from everyone else for long.
+  bool within_rate(httplib::Response& res) {
+    const int64_t second = std::chrono::duration_cast<std::chrono::seconds>(
+                               std::chrono::steady_clock::now().time_since_epoch())
+                               .count();
+    std::lock_guard lock(rate_mutex_);
+    if (second != window_) window_ = second, in_window_ = 0;
+    if (++in_window_ <= max_requests_per_second_) return true;
+    res.status = 429;
+    res.set_header("Retry-After", "1");
+    res.set_content(
+        "too many requests: at most " + std::to_string(max_requests_per_second_) + " a second\n",
+        "text/plain");
+    return false;
+  }
+
   ViewRenderer& renderer_;
   std::string token_;
   int port_;
+  int max_requests_per_second_;
+  std::mutex rate_mutex_;
+  int64_t window_ = 0;
+  int in_window_ = 0;
   std::atomic<int> streams_{0};
 };
 
@@ -280,7 +306,7 @@ void run_view_server(const ViewServerOptions& options) {
   // The port first: a second view on it says so before loading anything.
   ViewRenderer renderer(options.arguments, !options.no_watch);
   const std::string token = random_token();
-  Routes routes(renderer, token, port);
+  Routes routes(renderer, token, port, options.max_requests_per_second);
   routes.install(server);
   // Ctrl-C and SIGTERM stop the server (listen_after_bind returns once it has), from the moment
   // the address is printed.

@@ -12,6 +12,7 @@ struct ViewServerOptions {
   int port = 0;                        // 0: a free port
   bool open = false;                   // --open: xdg-open the page
   bool no_watch = false;
+  int max_requests_per_second = 400;  // beyond it, 429 until the next second
 };
 
 // Loads the scene, serves until SIGINT or SIGTERM. Prints the page's address (with its token) on

@@ -227,6 +227,19 @@ def test_second_view_on_the_same_port(view):
     assert "in use" in result.stderr and str(view.port) in result.stderr, result.stderr
 
 
+def test_request_rate_is_bounded():
+    view = ViewServer(CLI, base_args("--max-requests-per-second", "20"))
+    try:
+        statuses = [view.request("GET", "/api/state")[0] for _ in range(60)]
+        assert 429 in statuses and statuses.count(200) <= 40, statuses
+        time.sleep(1.1)
+        assert view.request("GET", "/api/state")[0] == 200
+        # The view's own options are not offered to `obscura render`.
+        assert "--max-requests-per-second" not in json.dumps(view.state())
+    finally:
+        assert view.stop() == 0
+
+
 def test_scene_file_edits(workdir):
     scene = os.path.join(workdir, "box.json")
     with open(os.path.join(SOURCE, "scenes", "cornell-box.json")) as f:
