@@ -59,7 +59,8 @@ Json array_of(const std::array<double, 3>& v) {
 }
 
 // Options `obscura view` has and `obscura render` has not; their values come after them.
-const std::set<std::string> kViewOnlyWithValue = {"--port", "--max-requests-per-second"};
+const std::set<std::string> kViewOnlyWithValue = {"--port", "--max-requests-per-second", "-o",
+                                                  "--output"};
 const std::set<std::string> kViewOnlyFlags = {"--open", "--no-watch"};
 
 }  // namespace
@@ -190,6 +191,8 @@ std::vector<std::string> render_arguments(const std::vector<std::string>& argume
     const size_t equals = a.find('=');
     const std::string name = a.rfind("--", 0) == 0 ? a.substr(0, equals) : a;
     const bool inline_value = a.rfind("--", 0) == 0 && equals != std::string::npos;
+    if (a.size() > 2 && a.rfind("-o", 0) == 0 && a[1] == 'o' && a.rfind("--", 0) != 0)
+      continue;  // -oFILE
     if (kViewOnlyFlags.count(name)) continue;
     if (kViewOnlyWithValue.count(name) || replaced.count(name)) {
       if (!inline_value) ++i;  // its value

@@ -4,6 +4,7 @@
 #include <string>
 #include <vector>
 
+#include "obscura/io/image_io.h"
 #include "option_ranges.h"
 #include "render_command.h"
 #include "render_options.h"
@@ -30,6 +31,11 @@ void add_view_command(CLI::App& app, int argc, char** argv) {
       ->group("View");
   view->add_flag("--open", server->open, "Ask the desktop to open the page in a browser")
       ->group("View");
+  view->add_option("-o,--output", server->output,
+                   "Where the page's Save writes the frame shown; the format follows the "
+                   "extension, as render's -o")
+      ->capture_default_str()
+      ->group("View");
   view->add_option("--max-requests-per-second", server->max_requests_per_second,
                    "Requests the server takes in a second; more are answered 429 (Too Many "
                    "Requests)")
@@ -43,6 +49,7 @@ void add_view_command(CLI::App& app, int argc, char** argv) {
   for (int i = 2; i < argc; ++i) arguments.emplace_back(argv[i]);
   // The options live as long as the parser that writes into them.
   view->callback([options, server, arguments] {
+    check_output_path(server->output, "--output");  // before serving, not at the first save
     ViewServerOptions run = *server;
     run.arguments = arguments;
     run_view_server(run);

@@ -33,6 +33,7 @@ void run_view_server(const ViewServerOptions&) {
 #include <httplib.h>
 #include <nlohmann/json.hpp>
 
+#include "obscura/io/image_io.h"
 #include "obscura/math/error.h"
 #include "obscura/math/request_error.h"
 #include "tracer_options.h"
@@ -129,11 +130,13 @@ void open_in_browser(const std::string& url) {
 
 class Routes {
  public:
-  Routes(ViewRenderer& renderer, std::string token, int port, int max_requests_per_second)
+  Routes(ViewRenderer& renderer, std::string token, int port, int max_requests_per_second,
+         std::string output)
       : renderer_(renderer),
         token_(std::move(token)),
         port_(port),
-        max_requests_per_second_(max_requests_per_second) {}
+        max_requests_per_second_(max_requests_per_second),
+        output_(std::move(output)) {}
 
   void install(httplib::Server& server) {
     server.set_pre_routing_handler([this](const httplib::Request& req, httplib::Response& res) {
@@ -178,6 +181,23 @@ class Routes {
         send_json(res, renderer_.set_camera(req.body));
       } catch (const Error& e) {
         send_error(res, 400, e.what());
+      }
+    });
+    server.Post("/api/save", [this](const httplib::Request&, httplib::Response& res) {
+      const std::shared_ptr<const ViewFrame> frame = renderer_.latest();
+      if (!frame) return send_error(res, 503, "no frame yet");
+      try {
+        // The file says what it is: the renderer, how far it got and the command that renders
+        // it whole.
+        ImageWriteOptions write{.display = frame->display, .exr_half = false, .metadata = {}};
+        write.metadata.description =
+            "obscura view: " + frame->renderer + ", " + std::to_string(frame->samples) + " of " +
+            std::to_string(frame->samples_target) +
+            (frame->renderer == "raster" ? " frames" : " spp") + "; " + frame->command;
+        write_image(output_, frame->image, write);
+        send_json(res, Json{{"path", output_}, {"final", frame->final}}.dump());
+      } catch (const Error& e) {
+        send_error(res, 500, e.what());
       }
     });
     server.Post("/api/focus", [this](const httplib::Request& req, httplib::Response& res) {
@@ -271,6 +291,7 @@ class Routes {
   std::string token_;
   int port_;
   int max_requests_per_second_;
+  std::string output_;
   std::mutex rate_mutex_;
   int64_t window_ = 0;
   int in_window_ = 0;
@@ -306,7 +327,7 @@ void run_view_server(const ViewServerOptions& options) {
   // The port first: a second view on it says so before loading anything.
   ViewRenderer renderer(options.arguments, !options.no_watch);
   const std::string token = random_token();
-  Routes routes(renderer, token, port, options.max_requests_per_second);
+  Routes routes(renderer, token, port, options.max_requests_per_second, options.output);
   routes.install(server);
   // Ctrl-C and SIGTERM stop the server (listen_after_bind returns once it has), from the moment
   // the address is printed.

@@ -13,6 +13,7 @@ struct ViewServerOptions {
   bool open = false;                   // --open: xdg-open the page
   bool no_watch = false;
   int max_requests_per_second = 400;  // beyond it, 429 until the next second
+  std::string output = "view.png";    // -o: where the page's "save" writes the frame
 };
 
 // Loads the scene, serves until SIGINT or SIGTERM. Prints the page's address (with its token) on

@@ -225,6 +225,13 @@ function copyText(text) {
 $('copy-cli').addEventListener('click', () => { if (view.state) copyText(view.state.frame.command); });
 $('copy-json').addEventListener('click', () => { if (view.state) copyText(view.state.frame.scene_camera); });
 
+$('save').addEventListener('click', async () => {
+  const res = await fetch(api('/api/save'), { method: 'POST' });
+  const answer = await res.json();
+  $('save-out').textContent = res.ok ? 'saved to ' + answer.path + (answer.final ? '' : ' (not finished)')
+    : answer.error;
+});
+
 // --- what the server sends --------------------------------------------------------------------
 function showMessage(text) {
   messageBox.hidden = !text;

@@ -100,6 +100,20 @@ def test_copied_command_reproduces_the_frame(view, workdir):
     print("  copied command:", command)
 
 
+def test_save_writes_the_frame_shown(view, workdir):
+    view.wait_frame()
+    status, _, body = view.request("POST", "/api/save")
+    assert status == 200, body
+    path = json.loads(body)["path"]
+    assert path == os.path.join(workdir, "saved.png")
+    with open(path, "rb") as f:
+        saved = f.read()
+    assert decode_png(saved) == decode_png(view.frame_png()[1])
+    # The file names the command that renders the frame whole.
+    assert b"obscura render cornell-box" in saved
+    assert "-o" not in command_arguments(view.state()["frame"]["command"])
+
+
 def test_click_to_focus(view):
     view.move({"position": [0.278, 0.273, -0.8], "target": [0.278, 0.273, 0.2], "up": [0, 1, 0],
                "f_number": None, "focus_distance_m": None, "focal_length_mm": None,
@@ -284,7 +298,7 @@ def main():
         print("skipped: this obscura has no view command")
         return 77
     workdir = tempfile.mkdtemp(prefix="obscura-view-test-")
-    view = ViewServer(CLI, base_args())
+    view = ViewServer(CLI, base_args("-o", os.path.join(workdir, "saved.png")))
     passed = failed = 0
     try:
         tests = [(name, fn) for name, fn in globals().items() if name.startswith("test_")]
