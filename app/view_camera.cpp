@@ -63,6 +63,10 @@ const std::set<std::string> kViewOnlyWithValue = {"--port", "--max-requests-per-
                                                   "--output"};
 const std::set<std::string> kViewOnlyFlags = {"--open", "--no-watch"};
 
+// The lenses the page offers: no file is named from the page.
+const std::set<std::string> kLenses = {"thin", "double-gauss-50mm", "telephoto-250mm",
+                                       "fisheye-10mm"};
+
 }  // namespace
 
 std::string exact_number(double value) {
@@ -110,6 +114,41 @@ ViewCamera parse_view_camera(const std::string& text, const ViewCamera& current)
       view.shutter_s = optional_in(value, "shutter_s", kMinShutterS, kMaxShutterS);
     } else if (key == "iso") {
       view.iso = optional_in(value, "iso", kMinIso, kMaxIso);
+    } else if (key == "lens") {
+      if (value.is_null()) {
+        view.lens.reset();
+      } else {
+        const std::string name = value.is_string() ? value.get<std::string>() : "";
+        if (!kLenses.count(name))
+          throw RequestError("camera.lens",
+                             "expected null, thin, double-gauss-50mm, "
+                             "telephoto-250mm or fisheye-10mm");
+        view.lens = name;
+      }
+    } else if (key == "sensor") {
+      if (value.is_null()) {
+        view.sensor.reset();
+      } else {
+        double w = 0, h = 0;
+        char x = 0, rest = 0;
+        const std::string text = value.is_string() ? value.get<std::string>() : "";
+        if (text.size() > 16 || std::sscanf(text.c_str(), "%lf%c%lf%c", &w, &x, &h, &rest) != 3 ||
+            x != 'x' || !(w >= 1 && w <= 100 && h >= 1 && h <= 100))
+          throw RequestError("camera.sensor", "expected \"WxH\" in mm, each 1 to 100");
+        view.sensor = exact_number(w) + "x" + exact_number(h);
+      }
+    } else if (key == "size") {
+      if (value.is_null()) {
+        view.size_px.reset();
+      } else {
+        if (!value.is_array() || value.size() != 2 || !value[0].is_number_integer() ||
+            !value[1].is_number_integer())
+          throw RequestError("camera.size", "expected [width, height] in pixels");
+        const int64_t w = value[0].get<int64_t>(), h = value[1].get<int64_t>();
+        if (w < 16 || h < 16 || w > 4096 || h > 4096)
+          throw RequestError("camera.size", "expected each side from 16 to 4096 pixels");
+        view.size_px = std::array<int, 2>{int(w), int(h)};
+      }
     } else if (key == "physical_exposure") {
       if (!value.is_null() && !value.is_boolean())
         throw RequestError("camera.physical_exposure", "expected true, false or null");
@@ -137,19 +176,26 @@ std::string view_camera_json(const ViewCamera& view, const Camera& resolved) {
   json["iso"] = optional(view.iso);
   json["physical_exposure"] =
       view.physical_exposure ? Json(*view.physical_exposure) : Json(nullptr);
+  json["lens"] = view.lens ? Json(*view.lens) : Json(nullptr);
+  json["sensor"] = view.sensor ? Json(*view.sensor) : Json(nullptr);
+  json["size"] =
+      view.size_px ? Json::array({(*view.size_px)[0], (*view.size_px)[1]}) : Json(nullptr);
   // What the resolved camera has, for the page's read-outs.
   const Vector2d fov = resolved.fov_degrees();
-  json["resolved"] = {{"focal_length_mm", resolved.focal_length_mm()},
-                      {"fov_degrees", Json::array({fov.x, fov.y})},
-                      {"f_number", resolved.f_number()},
-                      {"depth_of_field", resolved.lens.depth_of_field},
-                      {"focus_distance_m", resolved.lens.focus_distance_m},
-                      {"exposure_ev", resolved.exposure.compensation_ev},
-                      {"shutter_s", resolved.shutter.duration_s()},
-                      {"iso", resolved.exposure.iso},
-                      {"physical_exposure", resolved.exposure.mode == ExposureMode::physical},
-                      {"width", resolved.film.width_px},
-                      {"height", resolved.film.height_px}};
+  json["resolved"] = {
+      {"focal_length_mm", resolved.focal_length_mm()},
+      {"fov_degrees", Json::array({fov.x, fov.y})},
+      {"f_number", resolved.f_number()},
+      {"depth_of_field", resolved.lens.depth_of_field},
+      {"focus_distance_m", resolved.lens.focus_distance_m},
+      {"exposure_ev", resolved.exposure.compensation_ev},
+      {"shutter_s", resolved.shutter.duration_s()},
+      {"iso", resolved.exposure.iso},
+      {"physical_exposure", resolved.exposure.mode == ExposureMode::physical},
+      {"projection", std::string(projection_name(resolved.projection))},
+      {"sensor_mm", Json::array({resolved.film_size_mm().x, resolved.film_size_mm().y})},
+      {"width", resolved.film.width_px},
+      {"height", resolved.film.height_px}};
   return json.dump();
 }
 
@@ -169,7 +215,10 @@ ViewCamera initial_view_camera(const Camera& camera, double target_distance_m) {
           .exposure_ev = std::nullopt,
           .shutter_s = std::nullopt,
           .iso = std::nullopt,
-          .physical_exposure = std::nullopt};
+          .physical_exposure = std::nullopt,
+          .lens = std::nullopt,
+          .sensor = std::nullopt,
+          .size_px = std::nullopt};
 }
 
 std::vector<std::string> render_arguments(const std::vector<std::string>& arguments,
@@ -185,6 +234,9 @@ std::vector<std::string> render_arguments(const std::vector<std::string>& argume
   if (view.shutter_s) replaced.insert("--shutter");
   if (view.iso) replaced.insert("--iso");
   if (view.physical_exposure) replaced.insert("--exposure-mode");
+  if (view.lens) replaced.insert({"--lens", "--lens-file"});
+  if (view.sensor) replaced.insert("--sensor");
+  if (view.size_px) replaced.insert({"--width", "--height"});
   std::vector<std::string> out;
   for (size_t i = 0; i < arguments.size(); ++i) {
     const std::string& a = arguments[i];
@@ -214,6 +266,11 @@ std::vector<std::string> render_arguments(const std::vector<std::string>& argume
   if (view.iso) out.insert(out.end(), {"--iso", exact_number(*view.iso)});
   if (view.physical_exposure)
     out.insert(out.end(), {"--exposure-mode", *view.physical_exposure ? "physical" : "radiance"});
+  if (view.lens && *view.lens != "thin") out.insert(out.end(), {"--lens", *view.lens});
+  if (view.sensor) out.insert(out.end(), {"--sensor", *view.sensor});
+  if (view.size_px)
+    out.insert(out.end(), {"--width", std::to_string((*view.size_px)[0]), "--height",
+                           std::to_string((*view.size_px)[1])});
   return out;
 }
 

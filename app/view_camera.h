@@ -27,11 +27,16 @@ struct ViewCamera {
   std::optional<double> shutter_s = std::nullopt;  // open from 0 for this long
   std::optional<double> iso = std::nullopt;
   std::optional<bool> physical_exposure = std::nullopt;  // --exposure-mode physical / radiance
+  // "thin" (the thin lens, replacing a --lens given) or a built-in lens system's name.
+  std::optional<std::string> lens = std::nullopt;
+  std::optional<std::string> sensor = std::nullopt;          // "WxH" in mm
+  std::optional<std::array<int, 2>> size_px = std::nullopt;  // the film: the frame's aspect
 };
 
 // The page's JSON ({"position": [x, y, z], "target": …, "up": …, "focal_length_mm": 35,
 // "f_number": 2.8 or null, "focus_distance_m": …, "exposure_ev": …, "shutter_s": …, "iso": …,
-// "physical_exposure": true or false}; every key optional, absent
+// "physical_exposure": true or false, "lens": "thin" or a built-in lens system's name, "sensor":
+// "36x24", "size": [width, height]}; every key optional, absent
 // ones kept from `current`). Throws RequestError for malformed JSON, an unknown key, a value of the
 // wrong type, not finite or out of range.
 ViewCamera parse_view_camera(const std::string& text, const ViewCamera& current);

@@ -170,6 +170,7 @@ std::string ViewRenderer::set_camera(const std::string& json) {
   {
     std::lock_guard lock(mutex_);
     view_ = parse_view_camera(json, view_);
+    if (!message_sticky_) message_.clear();  // it was of the last camera
     ++generation_;
     cancel_ = true;  // the frame under way is of the old camera
     answer = nlohmann::json{{"generation", generation_}}.dump();
@@ -241,16 +242,17 @@ void ViewRenderer::publish(std::shared_ptr<ViewFrame> frame, bool even_if_stale)
     std::lock_guard lock(mutex_);
     if (frame->generation != generation_ && !even_if_stale) return;
     frame->event = ++event_;
-    message_.clear();
+    if (!message_sticky_) message_.clear();
     latest_ = std::move(frame);
   }
   events_.notify_all();
 }
 
-void ViewRenderer::set_message(const std::string& message) {
+void ViewRenderer::set_message(const std::string& message, bool sticky) {
   {
     std::lock_guard lock(mutex_);
     message_ = message;
+    message_sticky_ = sticky;
     ++event_;
   }
   events_.notify_all();
@@ -274,18 +276,20 @@ void ViewRenderer::loop() {
       try {
         load();
         std::lock_guard lock(mutex_);
+        message_.clear(), message_sticky_ = false;
         ++generation_;  // the same camera over the new scene
         continue;
       } catch (const std::exception& e) {
         // The last good scene stays; the page shows why the edit did not load.
-        set_message(std::string("the scene file did not load, so the last one stays: ") + e.what());
+        set_message(std::string("the scene file did not load, so the last one stays: ") + e.what(),
+                    true);
       }
     }
     if (generation == rendered) continue;
     try {
       render(generation, view);
     } catch (const std::exception& e) {
-      set_message(e.what());
+      set_message(e.what(), false);
     }
     rendered = generation;
   }

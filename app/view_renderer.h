@@ -95,7 +95,9 @@ class ViewRenderer {
   // (the rasterizer's preview), always: while the camera keeps moving, the last camera's image is
   // better than none.
   void publish(std::shared_ptr<ViewFrame> frame, bool even_if_stale = false);
-  void set_message(const std::string& message);
+  // `sticky`: a scene file that did not load, said until one loads; otherwise the message is of
+  // the camera asked for, and the next camera clears it.
+  void set_message(const std::string& message, bool sticky);
 
   std::vector<std::string> arguments_;
   bool watch_;
@@ -116,6 +118,7 @@ class ViewRenderer {
   uint64_t generation_ = 1, event_ = 0;
   std::shared_ptr<const ViewFrame> latest_;
   std::string message_;  // the last error (a camera the scene cannot take, a broken edit)
+  bool message_sticky_ = false;
   std::atomic<bool> cancel_{false}, stop_{false};
   std::thread thread_;
 };

@@ -213,6 +213,14 @@ $('iso').addEventListener('input', () => {
   sendCamera({ iso });
 });
 $('physical').addEventListener('change', () => sendCamera({ physical_exposure: $('physical').checked }));
+// A lens system has its own focal length: the slider's is given back to it.
+$('lens').addEventListener('change', () => sendCamera({ lens: $('lens').value || null,
+  focal_length_mm: null }));
+$('sensor').addEventListener('change', () => sendCamera({ sensor: $('sensor').value || null }));
+$('aspect').addEventListener('change', () => {
+  const aspect = +$('aspect').value, width = view.startSize[0];
+  sendCamera({ size: $('aspect').value ? [width, Math.max(16, Math.round(width / aspect))] : null });
+});
 for (const radio of document.querySelectorAll('input[name=view]'))
   radio.addEventListener('change', () => { view.mode = radio.value; fetchFrame(); });
 
@@ -333,6 +341,7 @@ function onState(state) {
   if (!view.camera) {  // the first frame: start from the server's camera
     const c = frame.camera;
     view.camera = { position: c.position, target: c.target, up: c.up };
+    view.startSize = [view.resolved.width, view.resolved.height];
     $('focal').value = sliderOfFocal(view.resolved.focal_length_mm);
     $('fstop').value = sliderOfFstop(view.resolved.f_number);
     $('dof').checked = view.resolved.depth_of_field;

@@ -70,9 +70,13 @@ class ViewServer:
 
     def wait_frame(self, final=True, generation=None, timeout=300):
         """The state once the latest frame is of the current camera (and final, if asked)."""
-        deadline = time.monotonic() + timeout
+        start = time.monotonic()
+        deadline = start + timeout
         while time.monotonic() < deadline:
             state = self.state()
+            # A camera the scene cannot take is reported, not rendered: no use waiting.
+            if state.get("message") and time.monotonic() > start + 5:
+                raise AssertionError("the server says: " + state["message"])
             frame = state.get("frame")
             if frame and frame["generation"] == state["current_generation"] and \
                     (generation is None or frame["generation"] >= generation) and \

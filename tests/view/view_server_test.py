@@ -28,6 +28,12 @@ WIDTH, HEIGHT = 160, 90
 BACK_WALL_DEPTH_M = 0.5592 + 0.8
 
 
+# Every setting of the page back to the scene's camera (position aside).
+RESET = {"f_number": None, "focus_distance_m": None, "focal_length_mm": None, "exposure_ev": None,
+         "shutter_s": None, "iso": None, "physical_exposure": None, "lens": None, "sensor": None,
+         "size": None}
+
+
 def base_args(*extra):
     return ["cornell-box", "--width", str(WIDTH), "--height", str(HEIGHT), "--spp", "4",
             "--threads", "2", *extra]
@@ -100,6 +106,34 @@ def test_copied_command_reproduces_the_frame(view, workdir):
     print("  copied command:", command)
 
 
+def render_copied_command(state, workdir, name):
+    output = os.path.join(workdir, name)
+    result = subprocess.run([CLI, "render", *command_arguments(state["frame"]["command"]), "-q",
+                             "-o", output], capture_output=True, text=True, timeout=600)
+    assert result.returncode == 0, (state["frame"]["command"], result.stderr)
+    with open(output, "rb") as f:
+        return decode_png(f.read())
+
+
+def test_lens_sensor_aspect_and_exposure(view, workdir):
+    # A lens system sets its own focal length: the one set before is given back to it.
+    view.move(dict(RESET, lens="double-gauss-50mm", sensor="36x24", size=[96, 64], iso=400,
+                   shutter_s=0.01, physical_exposure=True, f_number=4))
+    state = view.wait_frame()
+    frame = state["frame"]
+    assert (frame["width"], frame["height"]) == (96, 64)
+    for words in ["--lens double-gauss-50mm", "--sensor 36x24", "--width 96 --height 64",
+                  "--iso 400", "--shutter 0:0.01", "--exposure-mode physical"]:
+        assert words in frame["command"], (words, frame["command"])
+    assert frame["camera"]["resolved"]["projection"] == "lens-system"
+    assert render_copied_command(state, workdir, "lens.png") == decode_png(view.frame_png()[1])
+    # Back to the thin lens and the size the view started with.
+    view.move(dict(RESET, lens="thin"))
+    frame = view.wait_frame()["frame"]
+    assert (frame["width"], frame["height"]) == (WIDTH, HEIGHT)
+    assert "--lens" not in frame["command"]
+
+
 def test_save_writes_the_frame_shown(view, workdir):
     view.wait_frame()
     status, _, body = view.request("POST", "/api/save")
@@ -115,9 +149,7 @@ def test_save_writes_the_frame_shown(view, workdir):
 
 
 def test_click_to_focus(view):
-    view.move({"position": [0.278, 0.273, -0.8], "target": [0.278, 0.273, 0.2], "up": [0, 1, 0],
-               "f_number": None, "focus_distance_m": None, "focal_length_mm": None,
-               "exposure_ev": None})
+    view.move(dict(RESET, position=[0.278, 0.273, -0.8], target=[0.278, 0.273, 0.2], up=[0, 1, 0]))
     view.wait_frame(final=False)
     status, _, body = view.request("POST", "/api/focus",
                                    body=json.dumps({"x": WIDTH / 2, "y": HEIGHT * 0.3}))
@@ -135,7 +167,11 @@ def test_malformed_requests_are_refused(view):
     for body in ["", "nonsense", "[]", '{"position": [1, 2]}', '{"position": "1,2,3"}',
                  '{"focal_length_mm": -3}', '{"f_number": 1e400}', '{"exposure_ev": 1000}',
                  '{"position": [NaN, 0, 0]}', '{"scene": "/etc/passwd"}', '{"unknown": 1}',
-                 '{"focus_distance_m": "far"}', '{"position": [1e300, 0, 0]}']:
+                 '{"focus_distance_m": "far"}', '{"position": [1e300, 0, 0]}',
+                 '{"lens": "/etc/passwd"}', '{"lens": 3}', '{"sensor": "36x1000"}',
+                 '{"sensor": "36x24; rm -rf"}', '{"size": [10, 10]}', '{"size": [640.5, 360]}',
+                 '{"size": [100000, 100]}', '{"iso": 0}', '{"shutter_s": 1000}',
+                 '{"physical_exposure": "yes"}']:
         status, _, answer = view.request("POST", "/api/camera", body=body)
         assert status == 400, (body, status, answer)
         assert "error" in json.loads(answer)
