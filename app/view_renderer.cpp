@@ -91,6 +91,8 @@ std::string ViewFrame::png(const std::string& view) const {
     bytes = normal_png(*normal);
   else if (view == "id" && id)
     bytes = id_png(*id);
+  else if (view == "raster" && raster_image)
+    bytes = beauty_png(*raster_image, display);
   else
     return {};
   return encoded_[view] = std::move(bytes);
@@ -342,14 +344,16 @@ void ViewRenderer::render(uint64_t generation, const ViewCamera& view) {
   auto depth = std::make_shared<const Image>(raster_aovs.depth());
   auto normal = std::make_shared<const Image>(raster_aovs.normal());
   auto id = std::make_shared<const Image>(raster_aovs.id());
+  auto raster_image = std::make_shared<const Image>(raster_film.to_image());
   {
-    auto frame = frame_of("raster", raster_film.to_image());
+    auto frame = frame_of("raster", *raster_image);
     frame->pass = 1;
     frame->samples = frame->samples_target = raster_stats.done;
     frame->final = raster_only && !raster_stats.cancelled;
     frame->depth = depth;
     frame->normal = normal;
     frame->id = id;
+    frame->raster_image = raster_image;
     publish(std::move(frame), true);
   }
   if (raster_only || cancel_) return;
@@ -374,6 +378,7 @@ void ViewRenderer::render(uint64_t generation, const ViewCamera& view) {
     frame->depth = depth;
     frame->normal = normal;
     frame->id = id;
+    frame->raster_image = raster_image;
     publish(std::move(frame));
   };
   const FrameStats stats =
@@ -389,6 +394,7 @@ void ViewRenderer::render(uint64_t generation, const ViewCamera& view) {
   frame->depth = depth;
   frame->normal = normal;
   frame->id = id;
+  frame->raster_image = raster_image;
   publish(std::move(frame));
 }
 

@@ -45,10 +45,12 @@ struct ViewFrame {
   double seconds = 0;       // from the camera change to this image
   Image image;              // the finished frame, linear RGB
   std::shared_ptr<const Image> depth, normal, id;  // the rasterizer's AOVs of the same camera
+  std::shared_ptr<const Image> raster_image;       // and its image, for the wipe
   DisplaySettings display;
   std::string camera_json, command, scene_camera_json;
 
-  // The image as a PNG: "beauty", "depth", "normal" or "id"; empty for another name. Encoded on
+  // The image as a PNG: "beauty", "depth", "normal", "id" or "raster" (the rasterizer's image of
+  // the same camera); empty for another name. Encoded on
   // first request and kept (a frame is shared by every client that asks for it).
   std::string png(const std::string& view) const;
 

@@ -261,6 +261,25 @@ function showResolved(r) {
   $('iso-out').textContent = String(r.iso);
 }
 
+// The wipe: the rasterizer's image of the same camera over the left part of the frame.
+const wipeImage = document.getElementById('wipe-image');
+function placeWipe() {
+  wipeImage.style.clipPath = 'inset(0 ' + (100 - +$('wipe-pos').value) + '% 0 0)';
+}
+async function fetchWipe() {
+  wipeImage.hidden = !$('wipe').checked || view.mode !== 'beauty';
+  if (wipeImage.hidden) return;
+  const res = await fetch(api('/api/frame?view=raster'));
+  if (!res.ok) return;
+  const url = URL.createObjectURL(await res.blob());
+  await new Promise((resolve) => { wipeImage.onload = resolve; wipeImage.onerror = resolve; wipeImage.src = url; });
+  if (wipeImage.dataset.url) URL.revokeObjectURL(wipeImage.dataset.url);
+  wipeImage.dataset.url = url;
+  placeWipe();
+}
+$('wipe').addEventListener('change', fetchWipe);
+$('wipe-pos').addEventListener('input', placeWipe);
+
 // The histogram of the image shown (its display codes, per channel) and a meter: the mean
 // luma and the share of clipped pixels, to judge exposure by.
 const scratch = document.createElement('canvas');
@@ -313,6 +332,7 @@ async function fetchFrame() {
       view.shownEvent = shown;
       view.shownMode = mode;
       if (view.mode === 'beauty') drawHistogram();
+      fetchWipe();
       if (view.sentAt.has(frame.generation)) {
         view.timings.push({ generation: frame.generation, renderer: frame.renderer, pass: frame.pass,
           samples: frame.samples, ms: performance.now() - view.sentAt.get(frame.generation) });

@@ -206,6 +206,14 @@ await check('the depth view shows the depth AOV', async () => {
   await waitShown();
 });
 
+await check('the wipe shows the rasterizer beside the path tracer', async () => {
+  await page.click('#wipe');
+  await page.waitForFunction(() => { const w = document.getElementById('wipe-image');
+    return !w.hidden && w.naturalWidth > 0 && w.style.clipPath.startsWith('inset'); }, { timeout: 60000 });
+  await page.screenshot({ path: path.join(work, 'view_wipe.png') });
+  await page.click('#wipe');
+});
+
 await check('"copy camera" pasted into obscura render gives the viewed frame bit for bit', async () => {
   await waitShown();
   await page.click('#copy-cli');

@@ -84,7 +84,7 @@ def test_camera_move_renders_again(view):
     assert "--position" in state["frame"]["command"]
     _, after = view.frame_png()
     assert decode_png(after)[3] != pixels_before
-    for aov in ["depth", "normal"]:
+    for aov in ["depth", "normal", "id", "raster"]:
         assert decode_png(view.frame_png(aov)[1])[:2] == (WIDTH, HEIGHT)
     assert view.request("GET", "/api/frame?view=albedo")[0] == 404
 
