@@ -290,6 +290,47 @@ def test_request_rate_is_bounded():
         assert view.stop() == 0
 
 
+def edge_width(row, edge, low, high):
+    """The 10–90 % rise of an edge from `low` to `high` around pixel `edge`, in pixels."""
+    def crossing(level):
+        for x in range(edge - 25, edge + 25):
+            a, b = row[x], row[x + 1]
+            if (a - level) * (b - level) <= 0 and a != b:
+                return x + (level - a) / (b - a)
+        raise AssertionError("no crossing of %s near %d" % (level, edge))
+    return abs(crossing(low + 0.9 * (high - low)) - crossing(low + 0.1 * (high - low)))
+
+
+def test_the_f_number_sets_the_blur():
+    # The rasterizer (depth of field from 32 accumulated lens positions, no noise), focused on the
+    # back wall: an edge nearer the camera is blurred by a circle of confusion whose diameter is
+    # the aperture's, f / N (thin lens): halving N doubles its width.
+    view = ViewServer(CLI, ["cornell-box", "--width", "640", "--height", "360", "--renderer",
+                            "raster"])
+    try:
+        def middle_row(camera):
+            view.wait_frame(generation=view.move(camera))
+            w, h, c, pixels = decode_png(view.frame_png()[1])
+            y = int(h * 0.45)
+            return [sum(pixels[(y * w + x) * c + k] for k in range(3)) / 3 for x in range(w)]
+
+        sharp = middle_row({"f_number": None, "focus_distance_m": None})
+        # The strongest edge between two lit surfaces (not the box's rim against the dark).
+        edge = max((x for x in range(40, len(sharp) - 40) if min(sharp[x], sharp[x + 1]) > 20),
+                   key=lambda x: abs(sharp[x + 1] - sharp[x]))
+        low, high = sorted([sum(sharp[edge - 20:edge - 10]) / 10, sum(sharp[edge + 11:edge + 21]) / 10])
+        widths = {}
+        for n in [1.4, 0.7]:
+            widths[n] = edge_width(middle_row({"f_number": n, "focus_distance_m": BACK_WALL_DEPTH_M}),
+                                   edge, low, high)
+        ratio = widths[0.7] / widths[1.4]
+        print("  edge at x=%d: 10-90%% width %.2f px at f/1.4, %.2f px at f/0.7 (ratio %.2f)"
+              % (edge, widths[1.4], widths[0.7], ratio))
+        assert widths[1.4] > 1.5 and 1.5 < ratio < 2.5, widths
+    finally:
+        assert view.stop() == 0
+
+
 def test_scene_file_edits(workdir):
     scene = os.path.join(workdir, "box.json")
     with open(os.path.join(SOURCE, "scenes", "cornell-box.json")) as f:
