@@ -309,8 +309,10 @@ void ViewRenderer::render(uint64_t generation, const ViewCamera& view) {
   const std::string command = shell_command(arguments);
   const std::string camera_json = view_camera_json(view, camera);
   const std::string scene_json = scene_camera_json(camera, view);
+  const auto shared_camera = std::make_shared<const Camera>(camera);
   auto frame_of = [&](const char* renderer, Image image) {
     auto frame = std::make_shared<ViewFrame>();
+    frame->camera = shared_camera;
     frame->generation = generation;
     frame->renderer = renderer;
     frame->image = std::move(image);

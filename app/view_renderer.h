@@ -22,6 +22,7 @@
 
 #include <tbb/global_control.h>
 
+#include "obscura/camera/camera.h"
 #include "obscura/color/develop.h"
 #include "obscura/film/image.h"
 #include "view_camera.h"
@@ -46,6 +47,7 @@ struct ViewFrame {
   Image image;              // the finished frame, linear RGB
   std::shared_ptr<const Image> depth, normal, id;  // the rasterizer's AOVs of the same camera
   std::shared_ptr<const Image> raster_image;       // and its image, for the wipe
+  std::shared_ptr<const Camera> camera;            // the camera resolved, for the exports
   DisplaySettings display;
   std::string camera_json, command, scene_camera_json;
 

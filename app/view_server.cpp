@@ -33,6 +33,9 @@ void run_view_server(const ViewServerOptions&) {
 #include <httplib.h>
 #include <nlohmann/json.hpp>
 
+#include "obscura/io/calibration_file.h"
+#include "obscura/io/camera_calibration.h"
+#include "obscura/io/colmap_model.h"
 #include "obscura/io/image_io.h"
 #include "obscura/math/error.h"
 #include "obscura/math/request_error.h"
@@ -181,6 +184,29 @@ class Routes {
         send_json(res, renderer_.set_camera(req.body));
       } catch (const Error& e) {
         send_error(res, 400, e.what());
+      }
+    });
+    // The camera shown as a calibration file (what `obscura camera --export` writes): OpenCV's
+    // YAML or JSON, NeRF's transforms.json, COLMAP's cameras.txt and images.txt.
+    server.Get("/api/export", [this](const httplib::Request& req, httplib::Response& res) {
+      const std::shared_ptr<const ViewFrame> frame = renderer_.latest();
+      if (!frame || !frame->camera) return send_error(res, 503, "no frame yet");
+      const std::string name = req.get_param_value("format");
+      const std::optional<CalibrationFormat> format = calibration_format_from_name(name);
+      if (!format) return send_error(res, 400, "format: opencv-yaml, opencv-json, nerf or colmap");
+      try {
+        const CameraCalibration calibration = calibration_of(*frame->camera);
+        Json answer = {{"format", name},
+                       {"omissions", calibration_omissions(*format, calibration)}};
+        if (*format == CalibrationFormat::colmap) {
+          const ColmapModelText model = colmap_model_text(calibration);
+          answer["text"] = "# cameras.txt\n" + model.cameras + "# images.txt\n" + model.images;
+        } else {
+          answer["text"] = calibration_text(*format, calibration);
+        }
+        send_json(res, answer.dump());
+      } catch (const Error& e) {
+        send_error(res, 422, e.what());  // a camera the format cannot express
       }
     });
     server.Post("/api/save", [this](const httplib::Request&, httplib::Response& res) {

@@ -233,6 +233,15 @@ function copyText(text) {
 $('copy-cli').addEventListener('click', () => { if (view.state) copyText(view.state.frame.command); });
 $('copy-json').addEventListener('click', () => { if (view.state) copyText(view.state.frame.scene_camera); });
 
+$('export').addEventListener('change', async () => {
+  const format = $('export').value;
+  $('export').value = '';
+  if (!format) return;
+  const res = await fetch(api('/api/export?format=' + format));
+  const answer = await res.json();
+  if (!res.ok) return showMessage(answer.error);
+  copyText(answer.text + (answer.omissions.length ? '\n# left out: ' + answer.omissions.join('; ') : ''));
+});
 $('save').addEventListener('click', async () => {
   const res = await fetch(api('/api/save'), { method: 'POST' });
   const answer = await res.json();

@@ -134,6 +134,16 @@ def test_lens_sensor_aspect_and_exposure(view, workdir):
     assert "--lens" not in frame["command"]
 
 
+def test_camera_exports(view):
+    view.wait_frame()
+    for name, expected in [("opencv-yaml", "camera_matrix"), ("opencv-json", "camera_matrix"),
+                           ("nerf", "transform_matrix"), ("colmap", "PINHOLE")]:
+        status, _, body = view.request("GET", "/api/export?format=" + name)
+        assert status == 200, (name, body)
+        assert expected in json.loads(body)["text"], (name, body[:300])
+    assert view.request("GET", "/api/export?format=../../etc/passwd")[0] == 400
+
+
 def test_save_writes_the_frame_shown(view, workdir):
     view.wait_frame()
     status, _, body = view.request("POST", "/api/save")
