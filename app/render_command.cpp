@@ -8,6 +8,7 @@
 
 #include "camera_options.h"
 #include "display_options.h"
+#include "display_server.h"
 #include "frame_render.h"
 #include "glare_options.h"
 #include "image_limit_option.h"
@@ -100,6 +101,12 @@ void run_render(RenderOptions options, const std::string& job) {
     throw UsageError(
         "--ground-truth writes one frame's file; it does not take --frames (render each "
         "frame with its own --ground-truth file)");
+  if (!options.display_server.empty()) {
+    if (!options.frames.empty() || !options.shard.empty())
+      throw UsageError(
+          "--display-server shows one whole frame: it does not take --frames or --shard");
+    check_display_server_address(options.display_server);
+  }
   if (!options.frames.empty()) return run_sequence(options, team);
   validate(options.tracer);  // the renderer, parsed before the checks below use it
   std::optional<ShardSpec> shard;
@@ -188,6 +195,17 @@ void run_render(RenderOptions options, const std::string& job) {
     write_frame(options, options.output, frame);
     outputs.commit();
     if (ground_truth) std::printf("%s\n", ground_truth->c_str());
+    // The image is written whatever tev says: a display that cannot be reached is a warning.
+    if (!options.display_server.empty()) {
+      try {
+        const std::vector<AovImage> aovs =
+            frame.aovs ? frame.aovs->images() : std::vector<AovImage>{};
+        push_to_display_server(options.display_server,
+                               display_image(options.output, frame.finished(), aovs));
+      } catch (const Error& e) {
+        std::fprintf(stderr, "warning: %s\n", e.what());
+      }
+    }
   } else {
     set_exit_status(exit_status_for(frame.progress.end));
   }
@@ -259,6 +277,9 @@ void add_render_command(CLI::App& app) {
                      "Render part I of N of the frame (I counted from 0) to a partial film, an "
                      ".exr file; `obscura merge` assembles the N parts into the image one "
                      "process would have made (for farm managers; see docs/distributed.md)");
+  render->add_option("--display-server", options->display_server,
+                     "Also send the finished frame and its AOVs to a running tev (HOST:PORT, tev's "
+                     "default 127.0.0.1:14158), as pbrt-v4 and Mitsuba do");
   render->add_option("--frames", options->frames,
                      "Render a sequence: frames FIRST:LAST[:STEP] (inclusive), frame n exposed "
                      "around n/fps seconds, to a numbered output (out_%04d.exr; finished frames "

@@ -39,6 +39,7 @@ struct RenderOptions {
   GlareOptions glare;               // --glare, --glare-strength, --glare-radius
   bool flare = false;               // --flare: ghost flares of a lens-system camera
   GroundTruthOptions ground_truth;  // --ground-truth, --flow-times
+  std::string display_server;       // --display-server HOST:PORT: push the frame to tev
   // Which options were given on the command line: those override the scene file's settings.
   bool width_given = false, height_given = false, spp_given = false, seed_given = false;
 };

@@ -31,6 +31,7 @@ from ._obscura import (  # noqa: F401
     wavelength_xyz,
     write_image,
 )
+from ._view import View, view  # noqa: F401
 
 
 
@@ -71,6 +72,7 @@ __all__ = [
     "RenderResult",
     "RenderSession",
     "Scene",
+    "View",
     "blackbody_xyz",
     "builtin_scenes",
     "chromaticity",
@@ -86,6 +88,7 @@ __all__ = [
     "render_dataset",
     "render_frames",
     "resolve_camera",
+    "view",
     "wavelength_lms",
     "wavelength_xyz",
     "write_image",
