@@ -1,5 +1,6 @@
 #include "sensor_frame.h"
 
+#include <algorithm>
 #include <cstdio>
 
 #include "display_options.h"

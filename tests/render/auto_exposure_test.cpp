@@ -18,16 +18,16 @@ namespace {
 // A 18 % grey Lambertian card filling the view of a camera looking straight down at it, lit by a
 // sun of `lux` straight from above (the scene's irradiance unit is the lux in physical use).
 Scene grey_card(double lux) {
-  Scene scene = load_json_scene_text(
-      R"({"materials": {"card": {"type": "diffuse", "reflectance": 0.18}},
+  std::string text = R"({"materials": {"card": {"type": "diffuse", "reflectance": 0.18}},
           "objects": [{"name": "card", "shape": "rectangle", "size": [100, 100],
                        "material": "card"}],
           "lights": [{"name": "sun", "type": "directional", "direction": [0, -1, 0],
-                      "irradiance": )" +
-          std::to_string(lux) + R"(}],
+                      "irradiance": )";
+  text += std::to_string(lux);
+  text += R"(}],
           "cameras": [{"name": "c", "type": "perspective", "position": [0, 1, 0],
-                       "target": [0, 0, 0], "up": [0, 0, -1], "focal_length_mm": 50}]})",
-      "card.json");
+                       "target": [0, 0, 0], "up": [0, 0, -1], "focal_length_mm": 50}]})";
+  Scene scene = load_json_scene_text(text, "card.json");
   scene.camera.film.width_px = 48;
   scene.camera.film.height_px = 32;
   return scene;

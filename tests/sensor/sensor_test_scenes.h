@@ -13,11 +13,11 @@ namespace obscura::test {
 // The film of a pinhole camera looking into a uniform environment of radiance `radiance`: a
 // flat field, as EMVA 1288 lights a sensor with a homogeneous source.
 inline Image rendered_flat_field(int width, int height, double radiance) {
-  Scene scene = load_json_scene_text(
-      R"({"environment": {"color": )" + std::to_string(radiance) +
-          R"(}, "cameras": [{"name": "c", "type": "perspective", "position": [0, 0, 0],
-              "target": [0, 0, -1], "focal_length_mm": 50}]})",
-      "flat.json");
+  std::string text = R"({"environment": {"color": )";
+  text += std::to_string(radiance);
+  text += R"(}, "cameras": [{"name": "c", "type": "perspective", "position": [0, 0, 0],
+              "target": [0, 0, -1], "focal_length_mm": 50}]})";
+  Scene scene = load_json_scene_text(text, "flat.json");
   scene.camera.film.width_px = width;
   scene.camera.film.height_px = height;
   FrameSettings settings;

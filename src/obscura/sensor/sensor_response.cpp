@@ -127,7 +127,8 @@ SensorResponse sensor_response(const SensorSpec& spec) {
       }
     }
   }
-  for (double& v : a_white) v /= a_white[1] == 0 ? 1 : a_white[1];
+  const double a_luminance = a_white[1];
+  for (double& v : a_white) v /= a_luminance;
   if (spec.cfa == CfaPattern::kMonochrome) {
     r.color_matrix_a = r.color_matrix_d65;  // one channel: no colour to fit
   } else {

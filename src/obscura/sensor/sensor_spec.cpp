@@ -5,6 +5,7 @@
 #include <cmath>
 #include <functional>
 #include <utility>
+#include <vector>
 
 #include "obscura/math/number_list.h"
 #include "obscura/math/number_text.h"
