@@ -82,7 +82,8 @@ void meter_finished(SensorOptions& s, const Image& finished, double exposure_sca
 }
 
 std::vector<std::string> write_sensor_frame(const RenderOptions& options, const std::string& output,
-                                            const Image& finished, ImageWriteOptions write_options) {
+                                            const Image& finished,
+                                            ImageWriteOptions write_options) {
   const SensorOptions& s = options.sensor;
   const RawCapture capture = capture_raw(finished, *s.spec, s.exposure, options.seed);
   const DemosaicMethod method = parse_demosaic_method(s.demosaic);

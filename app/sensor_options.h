@@ -14,9 +14,9 @@
 namespace obscura::app {
 
 struct SensorOptions {
-  std::optional<std::string> sensor;  // --sensor: "on" or KEY=VALUE,…
-  std::string demosaic = "malvar";    // --demosaic
-  bool linear_dng = false;            // --linear-dng
+  std::optional<std::string> sensor;    // --sensor: "on" or KEY=VALUE,…
+  std::string demosaic = "malvar";      // --demosaic
+  bool linear_dng = false;              // --linear-dng
   std::optional<std::string> metering;  // --metering MODE
   // Resolved before rendering (resolve_sensor): the sensor over the scene camera's block, the
   // camera's exposure as plain numbers, what the meter read.

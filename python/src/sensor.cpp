@@ -71,8 +71,8 @@ void bind_sensor(py::module_& m) {
         out["gain_dn_per_e"] = c.gain_dn_per_e;
         out["color_matrix_d65"] = matrix_list(c.response.color_matrix_d65);
         out["color_matrix_a"] = matrix_list(c.response.color_matrix_a);
-        out["as_shot_neutral"] = std::vector<double>(c.response.neutral_d65.begin(),
-                                                     c.response.neutral_d65.end());
+        out["as_shot_neutral"] =
+            std::vector<double>(c.response.neutral_d65.begin(), c.response.neutral_d65.end());
         return out;
       },
       py::arg("film"), py::arg("camera"), py::arg("sensor") = py::none(), py::arg("seed") = 0,

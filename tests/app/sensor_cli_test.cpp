@@ -29,7 +29,9 @@ class SensorCli : public test::TempDirTest {
   }
 };
 
-bool has_libraw() { return test::run_shell("command -v raw-identify dcraw_emu").exit_code == 0; }
+bool has_libraw() {
+  return test::run_shell("command -v raw-identify dcraw_emu").exit_code == 0;
+}
 
 TEST_F(SensorCli, LibRawReadsWhatWasWritten) {
   if (!has_libraw()) GTEST_SKIP() << "LibRaw's tools are not installed (scripts/setup: libraw-bin)";
@@ -40,8 +42,7 @@ TEST_F(SensorCli, LibRawReadsWhatWasWritten) {
   for (const auto& c : cases) {
     const std::string dng = path(std::string(c.cfa) + ".dng");
     render("--sensor cfa=" + std::string(c.cfa) + ",black_level_dn=" + std::to_string(c.black) +
-           ",adc_bits=" + std::to_string(c.bits) + ",full_well_e=8000,gain_dn_per_e=0.5 -o " +
-           dng);
+           ",adc_bits=" + std::to_string(c.bits) + ",full_well_e=8000,gain_dn_per_e=0.5 -o " + dng);
     const int white = std::min((1 << c.bits) - 1, c.black + 4000);
     auto id = test::run_shell("raw-identify -v " + test::quoted(dng));
     ASSERT_EQ(id.exit_code, 0) << id.output;
@@ -86,9 +87,11 @@ TEST_F(SensorCli, SameCaptureForAnyThreadCount) {
   render("--threads 1 --sensor on -o " + path("one.dng"));
   render("--sensor on -o " + path("many.dng"));
   ImageMetadata m;
-  EXPECT_EQ(read_exr_data(path("one.raw.exr"), m).data, read_exr_data(path("many.raw.exr"), m).data);
+  EXPECT_EQ(read_exr_data(path("one.raw.exr"), m).data,
+            read_exr_data(path("many.raw.exr"), m).data);
   render("--sensor on --seed 5 -o " + path("other.dng"));
-  EXPECT_NE(read_exr_data(path("one.raw.exr"), m).data, read_exr_data(path("other.raw.exr"), m).data);
+  EXPECT_NE(read_exr_data(path("one.raw.exr"), m).data,
+            read_exr_data(path("other.raw.exr"), m).data);
 }
 
 TEST_F(SensorCli, DevelopedOutputsAndMetering) {
@@ -107,8 +110,10 @@ TEST_F(SensorCli, DevelopedOutputsAndMetering) {
 }
 
 TEST_F(SensorCli, AutoExposurePrintsItsChoice) {
-  auto r = test::run_cli("render cornell-box --width 32 --height 24 --spp 2 --exposure-mode auto "
-                         "-o " + path("auto.png"));
+  auto r = test::run_cli(
+      "render cornell-box --width 32 --height 24 --spp 2 --exposure-mode auto "
+      "-o " +
+      path("auto.png"));
   ASSERT_EQ(r.exit_code, 0) << r.output;
   EXPECT_NE(r.output.find("auto exposure: metered EV100 "), std::string::npos) << r.output;
   EXPECT_NE(r.output.find(" (average): f/"), std::string::npos) << r.output;
@@ -119,8 +124,9 @@ TEST_F(SensorCli, FullDiskKeepsTheOldFiles) {
   render("--sensor on -o " + dng);
   const std::string good = "the user's good file";
   std::ofstream(dng, std::ios::binary | std::ios::trunc) << good;
-  auto r = test::run_shell("ulimit -f 1; " + test::cli_command_line(std::string("render ") +
-                                                                      kScene + "--sensor on -o " + dng));
+  auto r =
+      test::run_shell("ulimit -f 1; " + test::cli_command_line(std::string("render ") + kScene +
+                                                               "--sensor on -o " + dng));
   EXPECT_EQ(r.exit_code, 1) << r.output;
   EXPECT_NE(r.output.find("File too large"), std::string::npos) << r.output;
   std::ifstream in(dng, std::ios::binary);
@@ -176,8 +182,8 @@ class SensorMpi : public test::MpiCliTest {};
 TEST_F(SensorMpi, RanksCaptureTheSameBytes) {
   auto one = test::run_cli(std::string("render ") + kScene + "--sensor on -o " + path("one.dng"));
   ASSERT_EQ(one.exit_code, 0) << one.output;
-  auto two = test::run_shell(mpirun_obscura(2, std::string("render ") + kScene +
-                                                   "--sensor on -o " + path("two.dng")));
+  auto two = test::run_shell(
+      mpirun_obscura(2, std::string("render ") + kScene + "--sensor on -o " + path("two.dng")));
   ASSERT_EQ(two.exit_code, 0) << two.output;
   ImageMetadata m;
   EXPECT_EQ(read_exr_data(path("one.raw.exr"), m).data, read_exr_data(path("two.raw.exr"), m).data);

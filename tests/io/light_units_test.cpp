@@ -56,9 +56,10 @@ TEST(LightUnits, PointLightInCandelaLumensAndWatts) {
                   hand,
               1, 1e-5);
   // White light of another spectrum: its own efficacy (e.g. 250 lm/W).
-  EXPECT_NEAR(card_luminance(std::string(kPoint) + R"("intensity_w_sr": 0.4, "efficacy_lm_w": 250})") /
-                  hand,
-              1, 1e-5);
+  EXPECT_NEAR(
+      card_luminance(std::string(kPoint) + R"("intensity_w_sr": 0.4, "efficacy_lm_w": 250})") /
+          hand,
+      1, 1e-5);
 }
 
 TEST(LightUnits, SunInLuxAndWattsPerSquareMetre) {

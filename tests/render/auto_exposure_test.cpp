@@ -68,8 +68,9 @@ TEST(AutoExposure, ExposesTheCardAtTheMeteredLevel) {
     EXPECT_NEAR(exposed.at(24, 16, 1), 12.5 / 120, 1e-5) << lux;
     // One stop of compensation doubles it.
     Scene brighter = grey_card(lux);
-    const MeteredExposure plus = meter_for(
-        brighter.camera, render(brighter, metering_camera(brighter.camera)), MeteringMode::kAverage, 1);
+    const MeteredExposure plus =
+        meter_for(brighter.camera, render(brighter, metering_camera(brighter.camera)),
+                  MeteringMode::kAverage, 1);
     apply_exposure(brighter.camera, plus.settings);
     EXPECT_NEAR(render(brighter, brighter.camera).at(24, 16, 1), 2 * 12.5 / 120, 2e-5) << lux;
   }

@@ -10,12 +10,14 @@
 namespace obscura {
 namespace {
 
-double plane(int c, int x, int y) { return 10 + 3 * c + (0.5 + c) * x - (0.25 * c - 0.7) * y; }
+double plane(int c, int x, int y) {
+  return 10 + 3 * c + (0.5 + c) * x - (0.25 * c - 0.7) * y;
+}
 
 TEST(Demosaic, LinearColourPlanesAreExactAwayFromTheEdges) {
   const int w = 24, h = 18;
-  for (CfaPattern cfa : {CfaPattern::kRggb, CfaPattern::kBggr, CfaPattern::kGrbg,
-                         CfaPattern::kGbrg}) {
+  for (CfaPattern cfa :
+       {CfaPattern::kRggb, CfaPattern::kBggr, CfaPattern::kGrbg, CfaPattern::kGbrg}) {
     Image mosaic(w, h, 1);
     for (int y = 0; y < h; ++y)
       for (int x = 0; x < w; ++x) mosaic.at(x, y, 0) = float(plane(cfa_color(cfa, x, y), x, y));
@@ -42,7 +44,8 @@ TEST(Demosaic, MalvarKeepsAnEdgeSharperThanBilinear) {
     double sum = 0;
     for (int y = 2; y < h - 2; ++y)
       for (int x = 6; x < 10; ++x)
-        sum += std::abs(rgb.at(x, y, 0) - rgb.at(x, y, 1)) + std::abs(rgb.at(x, y, 2) - rgb.at(x, y, 1));
+        sum += std::abs(rgb.at(x, y, 0) - rgb.at(x, y, 1)) +
+               std::abs(rgb.at(x, y, 2) - rgb.at(x, y, 1));
     return sum;
   };
   EXPECT_LT(fringe(DemosaicMethod::kMalvar), fringe(DemosaicMethod::kBilinear));

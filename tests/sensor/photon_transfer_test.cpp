@@ -58,7 +58,8 @@ double slope(const std::vector<double>& x, const std::vector<double>& y) {
   for (size_t i = 0; i < x.size(); ++i) mx += x[i], my += y[i];
   mx /= double(x.size()), my /= double(y.size());
   double sxy = 0, sxx = 0;
-  for (size_t i = 0; i < x.size(); ++i) sxy += (x[i] - mx) * (y[i] - my), sxx += (x[i] - mx) * (x[i] - mx);
+  for (size_t i = 0; i < x.size(); ++i)
+    sxy += (x[i] - mx) * (y[i] - my), sxx += (x[i] - mx) * (x[i] - mx);
   return sxy / sxx;
 }
 
@@ -91,10 +92,10 @@ TEST(PhotonTransfer, RecoversGainReadNoiseAndFullWell) {
   // EMVA 1288: σ_d² = K²σ_read² + σ_q², the quantisation noise σ_q² = 1/12 DN².
   const double read_noise = std::sqrt(dark_stats.variance - 1.0 / 12) / gain;
   const double full_well = mean_at_peak / gain;
-  std::printf("photon transfer: K %.4f DN/e- (given %.4f), read noise %.3f e- (given %.3f), "
-              "saturation %.0f e- (given %.0f)\n",
-              gain, spec.gain_dn_per_e, read_noise, spec.read_noise_e, full_well,
-              spec.full_well_e);
+  std::printf(
+      "photon transfer: K %.4f DN/e- (given %.4f), read noise %.3f e- (given %.3f), "
+      "saturation %.0f e- (given %.0f)\n",
+      gain, spec.gain_dn_per_e, read_noise, spec.read_noise_e, full_well, spec.full_well_e);
   EXPECT_NEAR(gain / spec.gain_dn_per_e, 1, 0.02);
   EXPECT_NEAR(read_noise / spec.read_noise_e, 1, 0.02);
   EXPECT_NEAR(full_well / spec.full_well_e, 1, 0.02);

@@ -39,18 +39,30 @@ TEST(SensorSpec, BayerTilesReadInReadingOrder) {
             std::string::npos);
 }
 
-TEST(SensorSpec, DefaultsAreValid) { EXPECT_NO_THROW(SensorSpec{}.validate()); }
+TEST(SensorSpec, DefaultsAreValid) {
+  EXPECT_NO_THROW(SensorSpec{}.validate());
+}
 
 TEST(SensorSpec, BadValuesNameTheirField) {
   const double nan = std::numeric_limits<double>::quiet_NaN();
   const struct {
     const char* field;
     double value;
-  } cases[] = {{"read_noise_e", -1},   {"full_well_e", 0},      {"qe_red", 1.2},
-               {"qe_mono", 0},         {"adc_bits", 0},         {"adc_bits", 64},
-               {"prnu", nan},          {"dark_current_e_s", -2}, {"gain_dn_per_e", 0},
-               {"pixel_pitch_um", nan}, {"fill_factor", 1.5},   {"dsnu_e_s", -0.1},
-               {"black_level_dn", 20000}, {"qe_green_width_nm", 0}, {"adc_bits", 12.5}};
+  } cases[] = {{"read_noise_e", -1},
+               {"full_well_e", 0},
+               {"qe_red", 1.2},
+               {"qe_mono", 0},
+               {"adc_bits", 0},
+               {"adc_bits", 64},
+               {"prnu", nan},
+               {"dark_current_e_s", -2},
+               {"gain_dn_per_e", 0},
+               {"pixel_pitch_um", nan},
+               {"fill_factor", 1.5},
+               {"dsnu_e_s", -0.1},
+               {"black_level_dn", 20000},
+               {"qe_green_width_nm", 0},
+               {"adc_bits", 12.5}};
   for (const auto& c : cases) {
     SensorSpec spec;
     const std::string message = test::error_of([&] {
@@ -72,11 +84,13 @@ TEST(SensorSpec, FieldsParseFromText) {
   EXPECT_EQ(spec.seed, 7u);
   // An unknown name lists the known ones; a non-number names its field; a bad value is an
   // error of the request (exit status 2, Python's ValueError).
-  EXPECT_NE(test::error_of([&] { apply_sensor_fields(spec, "full_wel=3"); })
-                .find("unknown sensor field; expected one of cfa, pixel_pitch_um"),
+  EXPECT_NE(test::error_of([&] {
+              apply_sensor_fields(spec, "full_wel=3");
+            }).find("unknown sensor field; expected one of cfa, pixel_pitch_um"),
             std::string::npos);
-  EXPECT_NE(test::error_of([&] { apply_sensor_fields(spec, "read_noise_e=nan"); })
-                .find("sensor.read_noise_e"),
+  EXPECT_NE(test::error_of([&] {
+              apply_sensor_fields(spec, "read_noise_e=nan");
+            }).find("sensor.read_noise_e"),
             std::string::npos);
   EXPECT_THROW(apply_sensor_fields(spec, "adc_bits=0"), RequestError);
   EXPECT_THROW(apply_sensor_fields(spec, "full_well_e"), RequestError);

@@ -27,8 +27,8 @@ MeteringMode parse_metering_mode(std::string_view text) {
   if (text == "average") return MeteringMode::kAverage;
   if (text == "center-weighted" || text == "centre-weighted") return MeteringMode::kCenterWeighted;
   if (text == "spot") return MeteringMode::kSpot;
-  throw RequestError("metering", "expected average, center-weighted or spot; got '" +
-                                     std::string(text) + "'");
+  throw RequestError("metering",
+                     "expected average, center-weighted or spot; got '" + std::string(text) + "'");
 }
 
 std::string_view metering_mode_name(MeteringMode mode) {

@@ -95,7 +95,8 @@ std::vector<std::string> write_dng(const std::string& path, const RawCapture& ca
   write_file_atomically(path, bytes);
   if (options.ground_truth) {
     ImageMetadata metadata = options.metadata;
-    metadata.attributes.emplace_back("obscura:sensor_black_level", number_text(capture.black_level));
+    metadata.attributes.emplace_back("obscura:sensor_black_level",
+                                     number_text(capture.black_level));
     metadata.attributes.emplace_back("obscura:sensor_gain_dn_per_e",
                                      number_text(capture.gain_dn_per_e));
     write_exr_data(paths[1], raw_image(capture), metadata);

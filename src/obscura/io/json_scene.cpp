@@ -439,8 +439,8 @@ class JsonSceneReader {
   }
 
   static double punctual_intensity_cd(JsonReader& json) {
-    const double v = one_of(json, {"intensity", "intensity_cd", "power_lm", "intensity_w_sr",
-                                   "power_w"});
+    const double v =
+        one_of(json, {"intensity", "intensity_cd", "power_lm", "intensity_w_sr", "power_w"});
     constexpr double kFourPi = 4 * std::numbers::pi;
     if (json.has("power_lm")) return v / kFourPi;
     if (json.has("intensity_w_sr")) return v * efficacy(json);
@@ -460,8 +460,8 @@ class JsonSceneReader {
     std::string type = json.string("type");
     Rgb color = json.rgb("color", Rgb(1.f));
     if (type == "point") {
-      light.model = PointLight{point(json.vector3("position")),
-                               color * float(punctual_intensity_cd(json))};
+      light.model =
+          PointLight{point(json.vector3("position")), color * float(punctual_intensity_cd(json))};
     } else if (type == "spot") {
       Vector3d position = json.vector3("position");
       Vector3d target = json.vector3("target");
@@ -475,8 +475,8 @@ class JsonSceneReader {
     } else if (type == "directional") {
       Vector3d direction = json.vector3("direction");
       if (length(direction) == 0) json.fail("direction", "the direction must not be zero");
-      light.model = DirectionalLight{Vector3f(normalize(direction)),
-                                     color * float(illuminance_lux(json))};
+      light.model =
+          DirectionalLight{Vector3f(normalize(direction)), color * float(illuminance_lux(json))};
     } else {
       json.fail("type", "unknown light type '" + type + "'; expected point, spot or directional");
     }

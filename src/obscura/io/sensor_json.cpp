@@ -48,7 +48,7 @@ std::optional<SensorSpec> scene_camera_sensor(const std::string& scene_path,
     if (!camera.is_object() || !camera.contains("sensor")) continue;
     const auto name = camera.find("name");  // camera_from_json's default name is "camera"
     const std::string named = name != camera.end() && name->is_string() ? name->get<std::string>()
-                                                                         : std::string("camera");
+                                                                        : std::string("camera");
     if (named != camera_name) continue;
     JsonReader reader(camera, scene_path, "$.cameras[" + std::to_string(i) + "]");
     return sensor_from_json(reader.object("sensor"));

@@ -14,8 +14,8 @@ constexpr double kLensFactor = 0.65;  // ISO 12232's q (camera/exposure.cpp's ca
 SensorExposure sensor_exposure(const Camera& camera) {
   const double t = camera.shutter.duration_s();
   if (!(t > 0) || !std::isfinite(t))
-    throw Error("camera.shutter", "a raw sensor integrates while the shutter is open; got " +
-                                      number_text(t) + " s");
+    throw Error("camera.shutter",
+                "a raw sensor integrates while the shutter is open; got " + number_text(t) + " s");
   const double n = stop_f_number(camera.f_number());
   if (!(n > 0) || !std::isfinite(n))
     throw Error("camera.f_number", "a raw sensor needs a positive f-number; got " + number_text(n));

@@ -96,8 +96,8 @@ Image demosaic(const Image& mosaic, CfaPattern cfa, DemosaicMethod method) {
           if (j == 1)
             out = apply(kernels.green_at_rb, x, y);
           else if (k == 1)
-            out = apply(cfa_color(cfa, x + 1, y) == j ? kernels.along_row : kernels.along_column,
-                        x, y);
+            out = apply(cfa_color(cfa, x + 1, y) == j ? kernels.along_row : kernels.along_column, x,
+                        y);
           else
             out = apply(kernels.diagonal, x, y);
         }

@@ -76,7 +76,8 @@ RawCapture capture_raw(const Image& film, const SensorSpec& spec, const SensorEx
         for (int ch = 0; ch < 3; ++ch)
           c.irradiance_lux.at(x, y, ch) = float(std::max(0.0, v[size_t(ch)]) * h / t);
         double mean = 0;
-        for (int ch = 0; ch < 3; ++ch) mean += m.m[size_t(k)][size_t(ch)] * std::max(0.0, v[size_t(ch)]);
+        for (int ch = 0; ch < 3; ++ch)
+          mean += m.m[size_t(k)][size_t(ch)] * std::max(0.0, v[size_t(ch)]);
         mean *= area_m2 * h;
         if (!std::isfinite(mean)) mean = 0;  // a NaN film pixel collects nothing
         c.electrons.data[index] = float(mean);

@@ -37,10 +37,10 @@ struct SensorExposure {
 struct RawCapture {
   int width = 0, height = 0;
   CfaPattern cfa = CfaPattern::kRggb;
-  std::vector<uint16_t> raw;    // DN, row-major, one per pixel
-  double black_level = 0;       // DN
-  double white_level = 0;       // DN a saturated photosite reads (≤ 2^bits − 1)
-  double gain_dn_per_e = 1;     // K at the capture's ISO
+  std::vector<uint16_t> raw;      // DN, row-major, one per pixel
+  double black_level = 0;         // DN
+  double white_level = 0;         // DN a saturated photosite reads (≤ 2^bits − 1)
+  double gain_dn_per_e = 1;       // K at the capture's ISO
   double electrons_per_film = 0;  // mean electrons in the green channel per film unit of white
   SensorResponse response;
   // Ground truth: focal-plane irradiance (lux, RGB as the film's channels: the film times

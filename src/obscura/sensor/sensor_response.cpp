@@ -17,7 +17,9 @@ constexpr double kLuminousEfficacy = 683;                            // lm/W at 
 
 using Spectrum = std::array<double, kSamples>;
 
-double nm_at(int i) { return kFirstNm + i; }
+double nm_at(int i) {
+  return kFirstNm + i;
+}
 
 double qe_at(const QeBand& band, double nm) {
   const double d = (nm - band.center_nm) / band.width_nm;
@@ -102,7 +104,8 @@ SensorResponse sensor_response(const SensorSpec& spec) {
     double luminance = 0;
     for (int i = 0; i < kSamples; ++i) luminance += primary[size_t(i)] * cmf_at(i)[1];
     const Vec3d e = electrons_per_lux_s(spec, primary);
-    for (int k = 0; k < 3; ++k) r.electrons_per_lux_s_m2.m[size_t(k)][size_t(c)] = e[size_t(k)] * luminance;
+    for (int k = 0; k < 3; ++k)
+      r.electrons_per_lux_s_m2.m[size_t(k)][size_t(c)] = e[size_t(k)] * luminance;
   }
   // XYZ of film RGB is the working space's; the camera from XYZ inverts it.
   const Matrix3d xyz_from_film = working_rgb_from_xyz().inverse();

@@ -39,8 +39,8 @@ void check_band(const std::string& name, const QeBand& band) {
     fail(name, "a quantum efficiency is a probability in (0, 1]; got " + number_text(band.peak));
   check_finite(name + "_nm", band.center_nm);
   if (band.center_nm < 300 || band.center_nm > 1100)
-    fail(name + "_nm", "expected a wavelength in [300, 1100] nm; got " +
-                           number_text(band.center_nm));
+    fail(name + "_nm",
+         "expected a wavelength in [300, 1100] nm; got " + number_text(band.center_nm));
   check_positive(name + "_width_nm", band.width_nm);
 }
 

@@ -42,19 +42,19 @@ struct SensorSpec {
   // peaks and widths of a typical CMOS colour sensor (ISETCam's default sensor is of this shape).
   std::array<QeBand, 3> qe = {QeBand{0.45, 600, 32}, QeBand{0.55, 535, 38}, QeBand{0.45, 460, 30}};
   QeBand mono_qe{0.65, 550, 100};
-  double full_well_e = 20000;       // electrons a photosite holds before it saturates
-  double read_noise_e = 2.5;        // σ of the read-out noise, electrons
-  double dark_current_e_s = 1.0;    // electrons per second per pixel at the reference temperature
-  double temperature_c = 25;        // the sensor's temperature
-  double dark_reference_c = 25;     // where dark_current_e_s holds
-  double dark_doubling_c = 6.3;     // dark current doubles every this many °C (silicon: 6–7 °C)
-  double prnu = 0.01;               // photo-response non-uniformity: σ of the per-pixel gain
-  double dsnu_e_s = 0.2;            // dark-signal non-uniformity: σ of the per-pixel dark current
-  double gain_dn_per_e = 0.25;      // conversion gain at the base ISO (EMVA 1288's K), DN per e⁻
-  double base_iso = 100;            // the ISO at which gain_dn_per_e holds (ISO multiplies it)
-  double black_level_dn = 256;      // offset added before the ADC
-  int adc_bits = 14;                // 1..16 (the raw mosaic is stored in 16 bits)
-  uint64_t seed = 1;                // the fixed-pattern noise (PRNU, DSNU) of this sensor
+  double full_well_e = 20000;     // electrons a photosite holds before it saturates
+  double read_noise_e = 2.5;      // σ of the read-out noise, electrons
+  double dark_current_e_s = 1.0;  // electrons per second per pixel at the reference temperature
+  double temperature_c = 25;      // the sensor's temperature
+  double dark_reference_c = 25;   // where dark_current_e_s holds
+  double dark_doubling_c = 6.3;   // dark current doubles every this many °C (silicon: 6–7 °C)
+  double prnu = 0.01;             // photo-response non-uniformity: σ of the per-pixel gain
+  double dsnu_e_s = 0.2;          // dark-signal non-uniformity: σ of the per-pixel dark current
+  double gain_dn_per_e = 0.25;    // conversion gain at the base ISO (EMVA 1288's K), DN per e⁻
+  double base_iso = 100;          // the ISO at which gain_dn_per_e holds (ISO multiplies it)
+  double black_level_dn = 256;    // offset added before the ADC
+  int adc_bits = 14;              // 1..16 (the raw mosaic is stored in 16 bits)
+  uint64_t seed = 1;              // the fixed-pattern noise (PRNU, DSNU) of this sensor
 
   // Throws obscura::Error naming the first invalid field ("sensor.read_noise_e: …"): negative
   // noise, zero full well, QE outside (0, 1], ADC bits outside 1..16, a black level at or above
