@@ -66,9 +66,11 @@ std::string now_as_tiff_date() {
 
 std::vector<unsigned char> encode_dng(const EncodeRequest& request) {
   check_request(request, 3);
-  const bool cfa = request.channels == 1;
+  // One channel with a CFAPattern is a mosaic; without one, a monochrome LinearRaw image.
+  const bool cfa = request.channels == 1 && text_attribute(request, "CFAPattern");
   if (request.channels != 1 && request.channels != 3)
-    throw Error(request.path, "a DNG holds a one-channel CFA mosaic or three-channel linear raw");
+    throw Error(request.path, "a DNG holds a one-channel mosaic or monochrome image, or three "
+                              "channels of linear raw");
   std::vector<unsigned char> pixels = request_pixels(request, SampleType::kUint16);
   std::vector<unsigned char> encoded;
   TiffMemoryStream stream;

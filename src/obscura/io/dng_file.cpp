@@ -41,8 +41,6 @@ std::vector<std::string> write_dng(const std::string& path, const RawCapture& ca
                                    const DngWriteOptions& options) {
   if (image_format_for_path(path) != ImageFormat::kDng)
     throw Error(path, "a DNG's name must end in .dng");
-  if (options.linear == false && capture.cfa == CfaPattern::kMonochrome)
-    throw Error(path, "a monochrome sensor has no CFA: write it as a linear DNG");
   check_output_path(path);
   std::vector<std::string> paths = {path};
   if (options.ground_truth)
@@ -58,7 +56,12 @@ std::vector<std::string> write_dng(const std::string& path, const RawCapture& ca
   request.stored = SampleType::kUint16;
   request.data_type = SampleType::kUint16;
   std::vector<uint16_t> linear;
-  if (options.linear) {
+  const bool mono = capture.cfa == CfaPattern::kMonochrome;
+  if (mono) {
+    // One colour plane (LinearRaw, one sample): already "demosaiced".
+    request.channels = 1;
+    request.data = capture.raw.data();
+  } else if (options.linear) {
     // Demosaiced in DN (black level kept, so the tags stay true), clamped to the ADC's range.
     Image mosaic = raw_image(capture);
     Image rgb = demosaic(mosaic, capture.cfa, options.demosaic);
@@ -80,13 +83,21 @@ std::vector<std::string> write_dng(const std::string& path, const RawCapture& ca
     request.attributes.push_back({"ImageDescription", options.metadata.description});
   request.attributes.push_back({"BlackLevel", std::vector<float>{float(capture.black_level)}});
   request.attributes.push_back({"WhiteLevel", int(capture.white_level)});
-  request.attributes.push_back({"ColorMatrix1", matrix_values(capture.response.color_matrix_d65)});
+  // A monochrome sensor has one colour plane: a 1 × 3 matrix (its rows are equal) and one
+  // neutral value.
+  const size_t planes = mono ? 1 : 3;
+  std::vector<float> matrix1 = matrix_values(capture.response.color_matrix_d65);
+  std::vector<float> matrix2 = matrix_values(capture.response.color_matrix_a);
+  matrix1.resize(3 * planes);
+  matrix2.resize(3 * planes);
+  request.attributes.push_back({"ColorMatrix1", matrix1});
   request.attributes.push_back({"CalibrationIlluminant1", kD65});
-  request.attributes.push_back({"ColorMatrix2", matrix_values(capture.response.color_matrix_a)});
+  request.attributes.push_back({"ColorMatrix2", matrix2});
   request.attributes.push_back({"CalibrationIlluminant2", kStandardA});
   const Vec3d& n = capture.response.neutral_d65;
-  request.attributes.push_back(
-      {"AsShotNeutral", std::vector<float>{float(n[0]), float(n[1]), float(n[2])}});
+  std::vector<float> neutral = {float(n[0]), float(n[1]), float(n[2])};
+  neutral.resize(planes);
+  request.attributes.push_back({"AsShotNeutral", neutral});
   request.attributes.push_back(
       {"BaselineExposure", std::vector<float>{float(dng_baseline_exposure(capture))}});
   const std::vector<unsigned char> bytes = image_codecs().encode(request);

@@ -113,6 +113,11 @@ Image develop_raw(const RawCapture& capture, DemosaicMethod method) {
   for (size_t i = 0; i < capture.raw.size(); ++i)
     mosaic.data[i] = float((capture.raw[i] - capture.black_level) / capture.gain_dn_per_e);
   Image camera = demosaic(mosaic, capture.cfa, method);
+  if (capture.cfa == CfaPattern::kMonochrome) {
+    // One channel: its electrons per film unit of white are the only calibration.
+    for (float& v : camera.data) v = float(v / capture.electrons_per_film);
+    return camera;
+  }
   // White balance then the colour-correction matrix; together they are the inverse of the
   // sensor's projection (film → electrons per lux·s·m²), scaled to film units.
   const Vec3d neutral = capture.response.neutral_d65;
@@ -120,11 +125,6 @@ Image develop_raw(const RawCapture& capture, DemosaicMethod method) {
   const Matrix3d& m = capture.response.electrons_per_lux_s_m2;
   const double per_film_green = m.m[1][0] + m.m[1][1] + m.m[1][2];
   const double scale = per_film_green / capture.electrons_per_film;
-  if (capture.cfa == CfaPattern::kMonochrome) {
-    // One channel: its electrons per film unit of white are the only calibration.
-    for (float& v : camera.data) v = float(v / capture.electrons_per_film);
-    return camera;
-  }
   Image out(capture.width, capture.height, 3);
   out.channel_names = {"R", "G", "B"};
   for (size_t p = 0; p < size_t(capture.width) * capture.height; ++p) {
