@@ -106,7 +106,7 @@ void run_render(RenderOptions options, const std::string& job) {
        (options.camera.exposure_mode && *options.camera.exposure_mode == "auto")) &&
       (!options.frames.empty() || !options.shard.empty()))
     throw UsageError(
-        "--sensor, --metering and --exposure-mode auto capture one whole frame: they do not "
+        "--raw-sensor, --metering and --exposure-mode auto capture one whole frame: they do not "
         "take --frames or --shard yet (render under mpirun to share the frame)");
   if (!options.frames.empty()) return run_sequence(options, team);
   take_sensor_requests(options);
@@ -268,7 +268,7 @@ void add_render_command(CLI::App& app) {
   render
       ->add_option("-o,--output", options->output,
                    "Output image; the format follows the extension: .png, .exr, .pfm, .dng (a "
-                   "raw sensor's DNG: see --sensor)")
+                   "raw sensor's DNG: see --raw-sensor)")
       ->capture_default_str();
   render->add_flag("--scene-list", options->list_scenes, "List the built-in scenes and exit");
   add_frame_options(*render, *options);

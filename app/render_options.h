@@ -40,7 +40,7 @@ struct RenderOptions {
   GlareOptions glare;               // --glare, --glare-strength, --glare-radius
   bool flare = false;               // --flare: ghost flares of a lens-system camera
   GroundTruthOptions ground_truth;  // --ground-truth, --flow-times
-  SensorOptions sensor;             // --sensor, --metering, --exposure-mode auto (docs/sensor.md)
+  SensorOptions sensor;  // --raw-sensor, --metering, --exposure-mode auto (docs/sensor.md)
   // Which options were given on the command line: those override the scene file's settings.
   bool width_given = false, height_given = false, spp_given = false, seed_given = false;
 };

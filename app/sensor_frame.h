@@ -19,7 +19,7 @@ void take_sensor_requests(RenderOptions& options);
 
 // After the scene and its camera are resolved: with automatic exposure, renders the metering
 // pass (a few samples), meters it and sets the scene camera's exposure; then resolves the sensor
-// (the scene camera's "sensor" block, then --sensor's fields) and its exposure from the camera.
+// (the scene camera's "sensor" block, then --raw-sensor's fields) and its exposure from the camera.
 // Throws RequestError / obscura::Error for bad values.
 void resolve_sensor(RenderOptions& options, Scene& scene);
 

@@ -5,7 +5,7 @@ namespace obscura::app {
 void add_sensor_options(CLI::App& render, SensorOptions& o) {
   const std::string group = "Raw sensor and metering";
   render
-      .add_option("--sensor", o.sensor,
+      .add_option("--raw-sensor", o.sensor,
                   "Capture the frame with a raw sensor: 'on' (the scene camera's \"sensor\" "
                   "block, else the defaults) or KEY=VALUE,… over it (cfa=RGGB|BGGR|GRBG|GBRG|mono, "
                   "pixel_pitch_um, fill_factor, full_well_e, read_noise_e, dark_current_e_s, "

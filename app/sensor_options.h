@@ -1,4 +1,4 @@
-// `obscura render --sensor`: the raw sensor behind the film (docs/sensor.md), DNG output, and
+// `obscura render --raw-sensor`: the raw sensor behind the film (docs/sensor.md), DNG output, and
 // metering and automatic exposure (`--metering`, `--exposure-mode auto`).
 #pragma once
 
@@ -14,7 +14,7 @@
 namespace obscura::app {
 
 struct SensorOptions {
-  std::optional<std::string> sensor;    // --sensor: "on" or KEY=VALUE,…
+  std::optional<std::string> sensor;    // --raw-sensor: "on" or KEY=VALUE,…
   std::string demosaic = "malvar";      // --demosaic
   bool linear_dng = false;              // --linear-dng
   std::optional<std::string> metering;  // --metering MODE

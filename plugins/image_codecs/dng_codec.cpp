@@ -14,6 +14,10 @@ namespace obscura::codecs {
 
 namespace {
 
+// DNG's PhotometricInterpretation for demosaiced (or monochrome) raw data; libtiff 4.5's tiff.h
+// names CFA (32803) but not this one.
+constexpr uint16_t kPhotometricLinearRaw = 34892;
+
 struct TiffCloser {
   void operator()(TIFF* tif) const { TIFFClose(tif); }
 };
@@ -88,7 +92,7 @@ std::vector<unsigned char> encode_dng(const EncodeRequest& request) {
   TIFFSetField(t, TIFFTAG_SAMPLESPERPIXEL, uint16_t(request.channels));
   TIFFSetField(t, TIFFTAG_BITSPERSAMPLE, uint16_t(16));
   TIFFSetField(t, TIFFTAG_SAMPLEFORMAT, SAMPLEFORMAT_UINT);
-  TIFFSetField(t, TIFFTAG_PHOTOMETRIC, cfa ? PHOTOMETRIC_CFA : PHOTOMETRIC_LINEARRAW);
+  TIFFSetField(t, TIFFTAG_PHOTOMETRIC, cfa ? PHOTOMETRIC_CFA : kPhotometricLinearRaw);
   TIFFSetField(t, TIFFTAG_PLANARCONFIG, PLANARCONFIG_CONTIG);
   TIFFSetField(t, TIFFTAG_ORIENTATION, ORIENTATION_TOPLEFT);
   TIFFSetField(t, TIFFTAG_COMPRESSION, COMPRESSION_NONE);

@@ -17,7 +17,7 @@ def small_scene_camera():
 def test_capture_matches_the_cli(cli, tmp_path):
     dng = tmp_path / "cli.dng"
     cli("render", "cornell-box", "--width", 48, "--height", 36, "--spp", 3, "--seed", 7, "-q",
-        "--sensor", "cfa=GRBG,read_noise_e=4", "-o", dng)
+        "--raw-sensor", "cfa=GRBG,read_noise_e=4", "-o", dng)
     from_cli, channels, _ = obscura.read_exr(str(tmp_path / "cli.raw.exr"))
     assert channels == ["raw"]
 

@@ -1,10 +1,11 @@
-// `obscura render --sensor` and `-o x.dng`: LibRaw (Debian's libraw-bin, an independent DNG
+// `obscura render --raw-sensor` and `-o x.dng`: LibRaw (Debian's libraw-bin, an independent DNG
 // reader) reads the file Obscura writes — the CFA pattern, size, black and white levels — and
 // develops it; the ground truth is written beside it; a full disk keeps the old files; the
 // capture is the same bytes for any thread count and under MPI; bad values name their field.
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <cmath>
 #include <filesystem>
 #include <fstream>
 #include <regex>
@@ -38,35 +39,55 @@ TEST_F(SensorCli, LibRawReadsWhatWasWritten) {
   const struct {
     const char* cfa;
     int black, bits;
-  } cases[] = {{"RGGB", 256, 14}, {"BGGR", 512, 12}, {"GRBG", 64, 16}, {"GBRG", 1000, 14}};
+    double gain;
+  } cases[] = {{"RGGB", 256, 14, 0.5},
+               {"BGGR", 512, 12, 0.25},
+               {"GRBG", 64, 16, 1},
+               {"GBRG", 1000, 14, 0.5}};
   for (const auto& c : cases) {
     const std::string dng = path(std::string(c.cfa) + ".dng");
-    render("--sensor cfa=" + std::string(c.cfa) + ",black_level_dn=" + std::to_string(c.black) +
-           ",adc_bits=" + std::to_string(c.bits) + ",full_well_e=8000,gain_dn_per_e=0.5 -o " + dng);
-    const int white = std::min((1 << c.bits) - 1, c.black + 4000);
+    render("--exposure 6 --raw-sensor cfa=" + std::string(c.cfa) +
+           ",black_level_dn=" + std::to_string(c.black) + ",adc_bits=" + std::to_string(c.bits) +
+           ",full_well_e=8000,gain_dn_per_e=" + std::to_string(c.gain) + " -o " + dng);
+    const int white = std::min((1 << c.bits) - 1, int(std::lround(c.black + c.gain * 8000)));
     auto id = test::run_shell("raw-identify -v " + test::quoted(dng));
     ASSERT_EQ(id.exit_code, 0) << id.output;
-    EXPECT_NE(id.output.find("Obscura"), std::string::npos) << id.output;
-    EXPECT_NE(id.output.find("64x48"), std::string::npos) << id.output;
-    EXPECT_NE(id.output.find(std::string("Filter pattern: ") + c.cfa), std::string::npos)
+    EXPECT_NE(id.output.find("Camera: Obscura Raw sensor"), std::string::npos) << id.output;
+    EXPECT_NE(id.output.find("DNG Version: 1.4.0.0"), std::string::npos) << id.output;
+    EXPECT_TRUE(std::regex_search(id.output, std::regex("Full size: +64 x 48"))) << id.output;
+    EXPECT_NE(id.output.find(std::string("Filter pattern: ") + c.cfa + c.cfa), std::string::npos)
         << id.output;
-    EXPECT_NE(id.output.find("black=" + std::to_string(c.black)), std::string::npos) << id.output;
-    EXPECT_NE(id.output.find("white=" + std::to_string(white)), std::string::npos) << id.output;
-    // dcraw_emu develops it (to a PPM beside it) at the file's size.
-    auto dev = test::run_shell("dcraw_emu " + test::quoted(dng));
+    EXPECT_NE(id.output.find("black: " + std::to_string(c.black) + "\n"), std::string::npos)
+        << id.output;
+    EXPECT_NE(id.output.find("DNG Illuminant 1: D65"), std::string::npos) << id.output;
+    EXPECT_NE(id.output.find("DNG Illuminant 2: Illuminant A"), std::string::npos) << id.output;
+    // raw-identify does not print the white level: dcraw_emu shows it. Developed linearly in the
+    // camera's own colours with unit white balance (-4 -o 0 -r 1 1 1 1), a green photosite
+    // reads (raw − black) / (white − black) of 65535 where LibRaw took the levels the file says.
+    auto dev = test::run_shell("dcraw_emu -4 -o 0 -r 1 1 1 1 " + test::quoted(dng));
     ASSERT_EQ(dev.exit_code, 0) << dev.output;
     ASSERT_TRUE(fs::exists(dng + ".ppm")) << dev.output;
     const Image developed = read_image(dng + ".ppm");
-    EXPECT_EQ(developed.width, 64);
-    EXPECT_EQ(developed.height, 48);
-    // The ground truth beside it.
-    for (const char* name : {"raw", "irradiance", "electrons"}) {
-      const std::string truth = path(std::string(c.cfa) + "." + name + ".exr");
-      ASSERT_TRUE(fs::exists(truth)) << truth;
-    }
+    ASSERT_EQ(developed.width, 64);
+    ASSERT_EQ(developed.height, 48);
     ImageMetadata metadata;
     const Image raw = read_exr_data(path(std::string(c.cfa) + ".raw.exr"), metadata);
     ASSERT_EQ(raw.channels, 1);
+    int greens = 0, lit = 0;
+    for (int y = 0; y < 48; ++y)
+      for (int x = 0; x < 64; ++x) {
+        if (c.cfa[(y % 2) * 2 + x % 2] != 'G') continue;
+        const double expected =
+            std::clamp((raw.at(x, y, 0) - c.black) / double(white - c.black), 0.0, 1.0);
+        EXPECT_NEAR(developed.at(x, y, 1), expected, 2.0 / 65535) << c.cfa << " " << x << "," << y;
+        ++greens;
+        lit += expected > 0.05;
+      }
+    EXPECT_EQ(greens, 64 * 48 / 2);
+    EXPECT_GT(lit, greens / 4) << "the frame is lit enough to test the levels";
+    // The ground truth beside it.
+    for (const char* name : {"raw", "irradiance", "electrons"})
+      EXPECT_TRUE(fs::exists(path(std::string(c.cfa) + "." + name + ".exr"))) << name;
     for (float v : raw.data) ASSERT_TRUE(v >= 0 && v <= float(white));
   }
 }
@@ -74,22 +95,35 @@ TEST_F(SensorCli, LibRawReadsWhatWasWritten) {
 TEST_F(SensorCli, LinearDngIsDevelopedToo) {
   if (!has_libraw()) GTEST_SKIP() << "LibRaw's tools are not installed (scripts/setup: libraw-bin)";
   const std::string dng = path("linear.dng");
-  render("--sensor on --linear-dng -o " + dng);
+  render("--raw-sensor on --linear-dng -o " + dng);
   auto id = test::run_shell("raw-identify -v " + test::quoted(dng));
   ASSERT_EQ(id.exit_code, 0) << id.output;
-  EXPECT_NE(id.output.find("64x48"), std::string::npos) << id.output;
+  EXPECT_TRUE(std::regex_search(id.output, std::regex("Full size: +64 x 48"))) << id.output;
+  EXPECT_EQ(id.output.find("Filter pattern"), std::string::npos) << id.output;  // no CFA
   auto dev = test::run_shell("dcraw_emu " + test::quoted(dng));
   ASSERT_EQ(dev.exit_code, 0) << dev.output;
   EXPECT_TRUE(fs::exists(dng + ".ppm"));
 }
 
+TEST_F(SensorCli, MonochromeDngIsOnePlane) {
+  if (!has_libraw()) GTEST_SKIP() << "LibRaw's tools are not installed (scripts/setup: libraw-bin)";
+  const std::string dng = path("mono.dng");
+  render("--raw-sensor cfa=mono -o " + dng);
+  auto id = test::run_shell("raw-identify -v " + test::quoted(dng));
+  ASSERT_EQ(id.exit_code, 0) << id.output;
+  EXPECT_NE(id.output.find("Raw colors: 1\n"), std::string::npos) << id.output;
+  auto dev = test::run_shell("dcraw_emu " + test::quoted(dng));
+  ASSERT_EQ(dev.exit_code, 0) << dev.output;
+  EXPECT_TRUE(fs::exists(dng + ".pgm"));  // a grey image
+}
+
 TEST_F(SensorCli, SameCaptureForAnyThreadCount) {
-  render("--threads 1 --sensor on -o " + path("one.dng"));
-  render("--sensor on -o " + path("many.dng"));
+  render("--threads 1 --raw-sensor on -o " + path("one.dng"));
+  render("--raw-sensor on -o " + path("many.dng"));
   ImageMetadata m;
   EXPECT_EQ(read_exr_data(path("one.raw.exr"), m).data,
             read_exr_data(path("many.raw.exr"), m).data);
-  render("--sensor on --seed 5 -o " + path("other.dng"));
+  render("--raw-sensor on --seed 5 -o " + path("other.dng"));
   EXPECT_NE(read_exr_data(path("one.raw.exr"), m).data,
             read_exr_data(path("other.raw.exr"), m).data);
 }
@@ -97,8 +131,9 @@ TEST_F(SensorCli, SameCaptureForAnyThreadCount) {
 TEST_F(SensorCli, DevelopedOutputsAndMetering) {
   // Any other format is the capture developed by the reference pipeline; --metering reports the
   // EV100 on stderr and in the file.
-  auto r = test::run_cli(std::string("render ") + kScene +
-                         "--sensor on --demosaic bilinear --metering spot -o " + path("dev.exr"));
+  auto r =
+      test::run_cli(std::string("render ") + kScene +
+                    "--raw-sensor on --demosaic bilinear --metering spot -o " + path("dev.exr"));
   ASSERT_EQ(r.exit_code, 0) << r.output;
   EXPECT_EQ(r.output.find("metered EV100"), std::string::npos) << r.output;  // -q: quiet
   ImageMetadata metadata;
@@ -121,12 +156,12 @@ TEST_F(SensorCli, AutoExposurePrintsItsChoice) {
 
 TEST_F(SensorCli, FullDiskKeepsTheOldFiles) {
   const std::string dng = path("keep.dng");
-  render("--sensor on -o " + dng);
+  render("--raw-sensor on -o " + dng);
   const std::string good = "the user's good file";
   std::ofstream(dng, std::ios::binary | std::ios::trunc) << good;
   auto r =
       test::run_shell("ulimit -f 1; " + test::cli_command_line(std::string("render ") + kScene +
-                                                               "--sensor on -o " + dng));
+                                                               "--raw-sensor on -o " + dng));
   EXPECT_EQ(r.exit_code, 1) << r.output;
   EXPECT_NE(r.output.find("File too large"), std::string::npos) << r.output;
   std::ifstream in(dng, std::ios::binary);
@@ -143,17 +178,17 @@ TEST_F(SensorCli, FullDiskKeepsTheOldFiles) {
 
 TEST_F(SensorCli, BadValuesNameTheirField) {
   test::expect_refusals(std::string("render ") + kScene + "-o " + path("bad.dng") + " ",
-                        {{"--sensor read_noise_e=-1", "sensor.read_noise_e"},
-                         {"--sensor full_well_e=0", "sensor.full_well_e"},
-                         {"--sensor qe_red=1.5", "sensor.qe_red"},
-                         {"--sensor adc_bits=0", "sensor.adc_bits"},
-                         {"--sensor adc_bits=64", "sensor.adc_bits"},
-                         {"--sensor prnu=nan", "sensor.prnu"},
-                         {"--sensor cfa=XYZW", "sensor.cfa"},
-                         {"--sensor full_wel=3", "unknown sensor field"},
+                        {{"--raw-sensor read_noise_e=-1", "sensor.read_noise_e"},
+                         {"--raw-sensor full_well_e=0", "sensor.full_well_e"},
+                         {"--raw-sensor qe_red=1.5", "sensor.qe_red"},
+                         {"--raw-sensor adc_bits=0", "sensor.adc_bits"},
+                         {"--raw-sensor adc_bits=64", "sensor.adc_bits"},
+                         {"--raw-sensor prnu=nan", "sensor.prnu"},
+                         {"--raw-sensor cfa=XYZW", "sensor.cfa"},
+                         {"--raw-sensor full_wel=3", "unknown sensor field"},
                          {"--demosaic nearest", "expected bilinear or malvar"},
                          {"--metering matrix", "expected average, center-weighted or spot"},
-                         {"--sensor on --frames 0:1", "do not take --frames"}});
+                         {"--raw-sensor on --frames 0:1", "do not take --frames"}});
 }
 
 TEST_F(SensorCli, JsonSensorBlock) {
@@ -174,16 +209,17 @@ TEST_F(SensorCli, JsonSensorBlock) {
   if (!has_libraw()) GTEST_SKIP() << "LibRaw's tools are not installed (scripts/setup: libraw-bin)";
   auto id = test::run_shell("raw-identify -v " + test::quoted(path("j.dng")));
   EXPECT_NE(id.output.find("Filter pattern: GBRG"), std::string::npos) << id.output;
-  EXPECT_NE(id.output.find("black=300"), std::string::npos) << id.output;
+  EXPECT_NE(id.output.find("black: 300\n"), std::string::npos) << id.output;
 }
 
 class SensorMpi : public test::MpiCliTest {};
 
 TEST_F(SensorMpi, RanksCaptureTheSameBytes) {
-  auto one = test::run_cli(std::string("render ") + kScene + "--sensor on -o " + path("one.dng"));
+  auto one =
+      test::run_cli(std::string("render ") + kScene + "--raw-sensor on -o " + path("one.dng"));
   ASSERT_EQ(one.exit_code, 0) << one.output;
   auto two = test::run_shell(
-      mpirun_obscura(2, std::string("render ") + kScene + "--sensor on -o " + path("two.dng")));
+      mpirun_obscura(2, std::string("render ") + kScene + "--raw-sensor on -o " + path("two.dng")));
   ASSERT_EQ(two.exit_code, 0) << two.output;
   ImageMetadata m;
   EXPECT_EQ(read_exr_data(path("one.raw.exr"), m).data, read_exr_data(path("two.raw.exr"), m).data);

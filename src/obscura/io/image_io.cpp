@@ -270,7 +270,7 @@ WriteReport write_image(const std::string& path, const Image& image,
   if (format == ImageFormat::kDng)
     throw Error(path,
                 "a DNG holds a raw sensor's data, not a rendered image: render with a sensor "
-                "(--sensor, a camera's \"sensor\" block) to write one");
+                "(--raw-sensor, a camera's \"sensor\" block) to write one");
   if (!is_display_format(format)) return write_linear(path, format, image, options);
   ImageWriteOptions o = options;
   if (format == ImageFormat::kJpeg || format == ImageFormat::kY4m)

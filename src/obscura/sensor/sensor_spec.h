@@ -3,7 +3,7 @@
 // the photons that arrive and the digital numbers (DN) the ADC reports. Plain data; the
 // simulation is sensor_capture.h, the equations docs/sensor.md.
 //
-// The JSON camera's "sensor" block, the command line's `--sensor KEY=VALUE,…` and the Python
+// The JSON camera's "sensor" block, the command line's `--raw-sensor KEY=VALUE,…` and the Python
 // `sensor={…}` dictionary all name the fields as set_sensor_field does, with the same units.
 #pragma once
 
@@ -62,7 +62,7 @@ struct SensorSpec {
   void validate() const;
 };
 
-// Sets one field by its name from text, as the JSON block, `--sensor` and Python name them:
+// Sets one field by its name from text, as the JSON block, `--raw-sensor` and Python name them:
 // pixel_pitch_um, fill_factor, cfa, qe_red / qe_green / qe_blue / qe_mono (peak), qe_*_nm
 // (centre), qe_*_width_nm, full_well_e, read_noise_e, dark_current_e_s, temperature_c,
 // dark_reference_c, dark_doubling_c, prnu, dsnu_e_s, gain_dn_per_e, base_iso, black_level_dn,
