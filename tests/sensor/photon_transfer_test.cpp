@@ -80,25 +80,34 @@ TEST(PhotonTransfer, RecoversGainReadNoiseAndFullWell) {
   e.lux_seconds_per_film = 1;
   const double electrons_per_lux_s = capture_raw(flat, spec, e, 0).electrons.data[0];
   std::vector<double> means, variances;
-  double peak_variance = 0, mean_at_peak = 0;
-  for (double share = 0.02; share < 1.15; share += share < 0.9 ? 0.04 : 0.004) {
+  double peak_variance = 0, mean_at_peak = 0, plateau = 0;
+  for (double share = 0.02; share < 1.3; share += share < 0.9 ? 0.04 : 0.004) {
     e.lux_seconds_per_film = share * spec.full_well_e / electrons_per_lux_s;
     const PairStats s = pair_stats(flat, spec, e);
     const double signal = s.mean - dark_stats.mean, noise = s.variance - dark_stats.variance;
     if (share <= 0.7) means.push_back(signal), variances.push_back(noise);
     if (s.variance > peak_variance) peak_variance = s.variance, mean_at_peak = signal;
+    plateau = signal;  // the last, every photosite full
   }
   const double gain = slope(means, variances);
   // EMVA 1288: σ_d² = K²σ_read² + σ_q², the quantisation noise σ_q² = 1/12 DN².
   const double read_noise = std::sqrt(dark_stats.variance - 1.0 / 12) / gain;
-  const double full_well = mean_at_peak / gain;
+  // The full well: where the photon-transfer curve's mean stops rising (the plateau of a frame
+  // overexposed so that every photosite is full), in electrons through the recovered gain.
+  const double full_well = plateau / gain;
+  // EMVA 1288's saturation capacity, the mean at the variance's peak, lies a few shot-noise σ
+  // (σ = √12000 ≈ 110 e⁻) below the full well by its definition: reported, bounded loosely.
+  const double saturation_capacity = mean_at_peak / gain;
   std::printf(
       "photon transfer: K %.4f DN/e- (given %.4f), read noise %.3f e- (given %.3f), "
-      "saturation %.0f e- (given %.0f)\n",
-      gain, spec.gain_dn_per_e, read_noise, spec.read_noise_e, full_well, spec.full_well_e);
+      "full well %.0f e- (given %.0f), EMVA saturation capacity %.0f e-\n",
+      gain, spec.gain_dn_per_e, read_noise, spec.read_noise_e, full_well, spec.full_well_e,
+      saturation_capacity);
   EXPECT_NEAR(gain / spec.gain_dn_per_e, 1, 0.02);
   EXPECT_NEAR(read_noise / spec.read_noise_e, 1, 0.02);
   EXPECT_NEAR(full_well / spec.full_well_e, 1, 0.02);
+  EXPECT_LT(saturation_capacity, spec.full_well_e);
+  EXPECT_GT(saturation_capacity, spec.full_well_e - 6 * std::sqrt(spec.full_well_e));
   // The mean dark level is the black level the DNG records.
   EXPECT_NEAR(dark_stats.mean, spec.black_level_dn, 0.05);
 }

@@ -9,6 +9,7 @@
 #include <cmath>
 
 #include "obscura/color/cie_tables.h"
+#include "obscura/math/error.h"
 #include "obscura/sensor/isp.h"
 #include "obscura/sensor/sensor_noise.h"
 #include "sensor_test_scenes.h"
@@ -86,7 +87,9 @@ TEST(SensorCapture, MeanSignalFollowsTheExposure) {
     mean /= double(c.raw.size());
     const double expected = c.electrons.data[0];
     EXPECT_NEAR(mean, expected, 4 * std::sqrt(expected / double(c.raw.size())));
-    if (stop > 0) EXPECT_NEAR(expected / previous, 2, 1e-9);
+    if (stop > 0) {
+      EXPECT_NEAR(expected / previous, 2, 1e-9);
+    }
     previous = expected;
     e.lux_seconds_per_film *= 2;
   }

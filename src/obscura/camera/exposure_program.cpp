@@ -6,8 +6,9 @@
 namespace obscura {
 
 namespace {
-// Program limits in APEX units: Av = 2·log₂ N, Tv = −log₂ t.
-const double kAvMin = 2 * std::log2(1.4), kAvMax = 2 * std::log2(16);
+// Program limits in APEX units: Av = 2·log₂ N, Tv = −log₂ t. f/1.4 and f/16 as the series
+// values the exposure counts with (stop_f_number: f/1.4 is √2), so the settings' EV is exact.
+constexpr double kAvMin = 1, kAvMax = 8;
 const double kTvHandheld = std::log2(30.0), kTvFastest = std::log2(8000.0);
 constexpr double kMaxIsoStops = 6;  // ISO 100 → 6400
 }  // namespace

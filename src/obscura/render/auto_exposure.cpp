@@ -14,7 +14,7 @@ namespace {
 std::optional<double> fixed_f_number(const Camera& camera) {
   if (std::holds_alternative<LensSystemProjection>(camera.projection) ||
       camera.lens.aperture_diameter_mm)
-    return camera.f_number();
+    return stop_f_number(camera.f_number());  // what the exposure counts with
   return std::nullopt;
 }
 
