@@ -46,7 +46,8 @@ TEST_F(SensorCli, LibRawReadsWhatWasWritten) {
                {"GBRG", 1000, 14, 0.5}};
   for (const auto& c : cases) {
     const std::string dng = path(std::string(c.cfa) + ".dng");
-    render("--exposure 6 --raw-sensor cfa=" + std::string(c.cfa) +
+    // The Cornell box's light is dim (about 1 cd/m²): a 5-minute exposure fills the wells.
+    render("--shutter 0:300 --raw-sensor cfa=" + std::string(c.cfa) +
            ",black_level_dn=" + std::to_string(c.black) + ",adc_bits=" + std::to_string(c.bits) +
            ",full_well_e=8000,gain_dn_per_e=" + std::to_string(c.gain) + " -o " + dng);
     const int white = std::min((1 << c.bits) - 1, int(std::lround(c.black + c.gain * 8000)));
@@ -197,14 +198,14 @@ TEST_F(SensorCli, JsonSensorBlock) {
     "cameras": [{"name": "cam", "type": "perspective", "position": [0, 0, 0],
                  "target": [0, 0, -1], "sensor": {"cfa": "GBRG", "black_level_dn": 300,
                  "full_well_e": 0}}]})";
-  auto r = test::run_cli("render -q " + scene + " --width 16 --height 16 -o " + path("j.dng"));
+  auto r = test::run_cli("render -q " + scene + " --width 48 --height 32 -o " + path("j.dng"));
   EXPECT_NE(r.exit_code, 0);
   EXPECT_NE(r.output.find("$.cameras[0].sensor.full_well_e: must be positive"), std::string::npos)
       << r.output;
   std::ofstream(scene, std::ios::trunc) << R"({"environment": {"color": 0.5},
     "cameras": [{"name": "cam", "type": "perspective", "position": [0, 0, 0],
                  "target": [0, 0, -1], "sensor": {"cfa": "GBRG", "black_level_dn": 300}}]})";
-  r = test::run_cli("render -q " + scene + " --width 16 --height 16 -o " + path("j.dng"));
+  r = test::run_cli("render -q " + scene + " --width 48 --height 32 -o " + path("j.dng"));
   ASSERT_EQ(r.exit_code, 0) << r.output;
   if (!has_libraw()) GTEST_SKIP() << "LibRaw's tools are not installed (scripts/setup: libraw-bin)";
   auto id = test::run_shell("raw-identify -v " + test::quoted(path("j.dng")));

@@ -47,7 +47,7 @@ RawCapture capture_raw(const Image& film, const SensorSpec& spec, const SensorEx
   c.black_level = spec.black_level_dn;
   c.gain_dn_per_e = spec.gain_dn_per_e * exposure.iso / spec.base_iso;
   const double adc_max = std::exp2(spec.adc_bits) - 1;
-  // A saturated photosite reads its full well (no read noise survives the clip in the mean).
+  // A saturated photosite reads its full well: black + K·FW, or the ADC's largest value.
   c.white_level = std::min(adc_max, std::round(c.black_level + c.gain_dn_per_e * spec.full_well_e));
   const double area_m2 = spec.pixel_pitch_um * spec.pixel_pitch_um * 1e-12 * spec.fill_factor;
   const double h = exposure.lux_seconds_per_film;
@@ -89,7 +89,9 @@ RawCapture capture_raw(const Image& film, const SensorSpec& spec, const SensorEx
         electrons = std::min(electrons, spec.full_well_e);
         const double read = spec.read_noise_e * temporal.normal();
         const double dn = std::round(c.black_level + c.gain_dn_per_e * (electrons + read));
-        c.raw[index] = uint16_t(std::clamp(dn, 0.0, adc_max));
+        // The read-out clips at the white level too: a full photosite reads exactly white (plus
+        // read noise it would stray above it, and developers take white as the clip).
+        c.raw[index] = uint16_t(std::clamp(dn, 0.0, c.white_level));
       }
   });
   return c;

@@ -8,7 +8,8 @@
 //   e_dark   ~ Poisson(t · max(0, D(T) + DSNU · g₂(x, y)))          dark current, DSNU
 //              D(T) = D_ref · 2^((T − T_ref) / T_double)
 //   e        = min(e_photo + e_dark, full well)                    saturation
-//   DN       = clamp(round(black + K_ISO · (e + σ_read · g₃)), 0, 2^bits − 1)
+//   DN       = clamp(round(black + K_ISO · (e + σ_read · g₃)), 0, white)
+//   white    = min(2^bits − 1, round(black + K_ISO · full well))
 //              K_ISO = gain_dn_per_e · ISO / base_ISO
 // with g₁, g₂ standard normal per pixel from the sensor's seed (fixed pattern: the same every
 // frame) and the Poisson draws and g₃ from the frame's seed. Every random number is a pure
