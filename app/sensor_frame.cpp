@@ -1,7 +1,9 @@
 #include "sensor_frame.h"
 
 #include <algorithm>
+#include <cctype>
 #include <cstdio>
+#include <filesystem>
 
 #include "display_options.h"
 #include "frame_render.h"
@@ -19,6 +21,15 @@ namespace {
 // Samples per pixel of the metering pass: enough for a mean over the frame.
 constexpr int kMeteringSpp = 4;
 
+// Whether the output is a DNG, without judging other names (check_output_path does, later, with
+// the messages every output gets).
+bool dng_output(const std::string& path) {
+  std::string ext = std::filesystem::path(path).extension().string();
+  std::transform(ext.begin(), ext.end(), ext.begin(),
+                 [](unsigned char c) { return char(std::tolower(c)); });
+  return ext == ".dng";
+}
+
 }  // namespace
 
 void take_sensor_requests(RenderOptions& options) {
@@ -30,8 +41,8 @@ void take_sensor_requests(RenderOptions& options) {
   if (s.metering) s.metering_mode = parse_metering_mode(*s.metering);
   if (s.auto_exposure && !s.metering_mode) s.metering_mode = MeteringMode::kAverage;
   parse_demosaic_method(s.demosaic);  // a bad name fails before rendering
-  if (!s.sensor && image_format_for_path(options.output) == ImageFormat::kDng) s.sensor = "on";
-  if (s.linear_dng && image_format_for_path(options.output) != ImageFormat::kDng)
+  if (!s.sensor && dng_output(options.output)) s.sensor = "on";
+  if (s.linear_dng && !dng_output(options.output))
     throw UsageError("--linear-dng shapes a DNG output: give -o NAME.dng");
 }
 
