@@ -61,9 +61,15 @@ void resolve_sensor(RenderOptions& options, Scene& scene) {
     const MeteredExposure m = meter_for(camera, frame.finished(), *s.metering_mode, compensation);
     apply_exposure(scene.camera, m.settings);
     s.metered_ev100 = m.ev100;
-    char note[160];
-    std::snprintf(note, sizeof note, "f/%.3g, %s s, ISO %.0f", m.settings.f_number,
-                  number_text(m.settings.exposure_time_s).c_str(), m.settings.iso);
+    // As a camera shows it: f/2.8, 1/125 s (or 2.5 s), ISO 400.
+    const double t = m.settings.exposure_time_s;
+    char time[32], note[160];
+    if (t < 1)
+      std::snprintf(time, sizeof time, "1/%.3g s", 1 / t);
+    else
+      std::snprintf(time, sizeof time, "%.3g s", t);
+    std::snprintf(note, sizeof note, "f/%.3g, %s, ISO %.0f", m.settings.f_number, time,
+                  m.settings.iso);
     s.exposure_note = note;
   }
   s.exposure_scale = scene.camera.exposure_scale();
