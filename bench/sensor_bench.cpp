@@ -11,6 +11,7 @@
 #include <string>
 #include <thread>
 
+#include "obscura/io/atomic_file.h"
 #include "obscura/io/dng_file.h"
 #include "obscura/math/rng.h"
 #include "obscura/sensor/isp.h"
@@ -67,6 +68,16 @@ void BM_DngWrite4k(benchmark::State& state) {
   std::filesystem::remove(path);
 }
 
+// The same bytes through the atomic writer alone (a temporary file, every write checked, fsync,
+// rename): what the DNG write adds to the encoding.
+void BM_AtomicWrite4k(benchmark::State& state) {
+  const std::vector<uint8_t> bytes(size_t(kWidth) * kHeight * 2, 7);
+  const std::string path = scratch("obscura-bench.bin");
+  for (auto _ : state) write_file_atomically(path, bytes);
+  state.SetBytesProcessed(int64_t(state.iterations()) * kWidth * kHeight * 2);
+  std::filesystem::remove(path);
+}
+
 // libtiff's own: TIFFOpen on the file, the same rows, no compression, one strip per 32 rows.
 void BM_LibtiffRawWrite4k(benchmark::State& state) {
   const RawCapture capture = capture_raw(film_4k(), SensorSpec{}, exposure(), 0);
@@ -92,6 +103,7 @@ void BM_LibtiffRawWrite4k(benchmark::State& state) {
 BENCHMARK(BM_SensorCapture4k)->Arg(1)->Arg(0)->Unit(benchmark::kMillisecond)->UseRealTime();
 BENCHMARK(BM_SensorDevelop4k)->Arg(1)->Arg(0)->Unit(benchmark::kMillisecond)->UseRealTime();
 BENCHMARK(BM_DngWrite4k)->Unit(benchmark::kMillisecond)->UseRealTime();
+BENCHMARK(BM_AtomicWrite4k)->Unit(benchmark::kMillisecond)->UseRealTime();
 BENCHMARK(BM_LibtiffRawWrite4k)->Unit(benchmark::kMillisecond)->UseRealTime();
 
 }  // namespace

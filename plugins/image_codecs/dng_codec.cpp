@@ -77,6 +77,9 @@ std::vector<unsigned char> encode_dng(const EncodeRequest& request) {
                               "channels of linear raw");
   std::vector<unsigned char> pixels = request_pixels(request, SampleType::kUint16);
   std::vector<unsigned char> encoded;
+  // The pixels uncompressed plus room for the tags: one allocation, no regrowth while libtiff
+  // writes strip by strip.
+  encoded.reserve(pixels.size() + 65536);
   TiffMemoryStream stream;
   stream.output = &encoded;
   std::unique_ptr<TIFF, TiffCloser> tif(open_tiff_stream(stream, "w", request.path));
