@@ -93,6 +93,42 @@ TEST_F(SensorCli, LibRawReadsWhatWasWritten) {
   }
 }
 
+TEST_F(SensorCli, LibRawDevelopsTheColoursRendered) {
+  // The DNG's colour tags (ColorMatrix1 for D65, AsShotNeutral) as LibRaw uses them: uniform
+  // fields of known linear Rec.709 colour, captured bright (shot noise ~1 %), developed by
+  // dcraw_emu to linear sRGB (-4 -o 1) with the as-shot white balance (-w), give back the
+  // colour's channel ratios — a grey within 1.5 %, saturated colours within 5 %.
+  if (!has_libraw()) GTEST_SKIP() << "LibRaw's tools are not installed (scripts/setup: libraw-bin)";
+  const struct {
+    double r, g, b, tolerance;
+  } colours[] = {{0.5, 0.5, 0.5, 0.015}, {0.6, 0.3, 0.15, 0.05}, {0.2, 0.5, 0.7, 0.05}};
+  for (const auto& c : colours) {
+    const std::string scene = path("colour.json"), dng = path("colour.dng");
+    std::ofstream(scene, std::ios::trunc)
+        << R"({"environment": {"color": [)" << c.r << ", " << c.g << ", " << c.b
+        << R"(]}, "cameras": [{"name": "cam", "type": "perspective", "position": [0, 0, 0],
+              "target": [0, 0, -1]}]})";
+    auto r = test::run_cli("render -q " + scene +
+                           " --width 64 --height 48 --spp 1 --shutter 0:200 --raw-sensor "
+                           "full_well_e=60000,adc_bits=16 -o " +
+                           dng);
+    ASSERT_EQ(r.exit_code, 0) << r.output;
+    auto dev = test::run_shell("dcraw_emu -4 -o 1 -w " + test::quoted(dng));
+    ASSERT_EQ(dev.exit_code, 0) << dev.output;
+    const Image developed = read_image(dng + ".ppm");
+    double mean[3] = {0, 0, 0};
+    int n = 0;
+    for (int y = 8; y < 40; ++y)
+      for (int x = 8; x < 56; ++x, ++n)
+        for (int ch = 0; ch < 3; ++ch) mean[ch] += developed.at(x, y, ch);
+    ASSERT_GT(mean[1] / n, 0.1) << "exposed well above black";
+    EXPECT_NEAR((mean[0] / mean[1]) / (c.r / c.g), 1, c.tolerance)
+        << c.r << "," << c.g << "," << c.b;
+    EXPECT_NEAR((mean[2] / mean[1]) / (c.b / c.g), 1, c.tolerance)
+        << c.r << "," << c.g << "," << c.b;
+  }
+}
+
 TEST_F(SensorCli, LinearDngIsDevelopedToo) {
   if (!has_libraw()) GTEST_SKIP() << "LibRaw's tools are not installed (scripts/setup: libraw-bin)";
   const std::string dng = path("linear.dng");
