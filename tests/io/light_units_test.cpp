@@ -8,6 +8,7 @@
 #include <numbers>
 #include <string>
 
+#include "gltf_hostile.h"
 #include "obscura/io/json_scene.h"
 #include "obscura/render/render_frame.h"
 #include "test_files.h"
@@ -71,6 +72,38 @@ TEST(LightUnits, SunInLuxAndWattsPerSquareMetre) {
                              std::to_string(1e5 / 683) + "}") /
                   hand,
               1, 1e-5);
+}
+
+TEST(LightUnits, GltfPunctualLightsInCandelaAndLux) {
+  // KHR_lights_punctual: a point light of 100 cd 2 m above the origin and a 100 000 lux sun
+  // shining down. Units are the scene's own, so the origin's illuminance is I/d² = 25 lux from the
+  // bulb and 100 000 lux from the sun, by hand from the file's numbers.
+  const test::json doc = test::json::parse(R"({
+    "asset": {"version": "2.0"}, "extensionsUsed": ["KHR_lights_punctual"],
+    "extensions": {"KHR_lights_punctual": {"lights": [
+      {"type": "point", "intensity": 100}, {"type": "directional", "intensity": 100000}]}},
+    "nodes": [{"translation": [0, 2, 0], "extensions": {"KHR_lights_punctual": {"light": 0}}},
+              {"rotation": [-0.70710678, 0, 0, 0.70710678],
+               "extensions": {"KHR_lights_punctual": {"light": 1}}}],
+    "scenes": [{"nodes": [0, 1]}], "scene": 0})");
+  const Scene scene = test::load_gltf_json(doc);
+  ASSERT_EQ(scene.lights.size(), 2u);
+  const auto& bulb = std::get<PointLight>(scene.lights[0].model);
+  const double d2 = double(bulb.position.x) * bulb.position.x +
+                    double(bulb.position.y) * bulb.position.y +
+                    double(bulb.position.z) * bulb.position.z;
+  EXPECT_NEAR(bulb.intensity.g / d2, 25, 1e-5);
+  const auto& sun = std::get<DirectionalLight>(scene.lights[1].model);
+  EXPECT_NEAR(sun.direction.y, -1, 1e-6);
+  EXPECT_NEAR(sun.irradiance.g * -sun.direction.y, 100000, 1);
+  // The JSON scene's same lights, in lumens and W/m², carry the same numbers.
+  Scene json = load_json_scene_text(
+      R"({"lights": [{"type": "point", "position": [0, 2, 0], "power_lm": 1256.6370614359172},
+                     {"type": "directional", "direction": [0, -1, 0],
+                      "irradiance_w_m2": 146.41288433382138}]})",
+      "lights.json");
+  EXPECT_NEAR(std::get<PointLight>(json.lights[0].model).intensity.g, bulb.intensity.g, 1e-3);
+  EXPECT_NEAR(std::get<DirectionalLight>(json.lights[1].model).irradiance.g, sun.irradiance.g, 1);
 }
 
 TEST(LightUnits, OneStrengthPerLight) {
