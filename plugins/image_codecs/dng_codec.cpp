@@ -73,13 +73,22 @@ std::vector<unsigned char> encode_dng(const EncodeRequest& request) {
   // One channel with a CFAPattern is a mosaic; without one, a monochrome LinearRaw image.
   const bool cfa = request.channels == 1 && text_attribute(request, "CFAPattern");
   if (request.channels != 1 && request.channels != 3)
-    throw Error(request.path, "a DNG holds a one-channel mosaic or monochrome image, or three "
-                              "channels of linear raw");
-  std::vector<unsigned char> pixels = request_pixels(request, SampleType::kUint16);
+    throw Error(request.path,
+                "a DNG holds a one-channel mosaic or monochrome image, or three "
+                "channels of linear raw");
+  // 16-bit samples are written from the caller's buffer as they are (uncompressed, native byte
+  // order: libtiff copies them without changing them); other types are converted first.
+  std::vector<unsigned char> converted;
+  const unsigned char* pixels = static_cast<const unsigned char*>(request.data);
+  if (request.data_type != SampleType::kUint16) {
+    converted = request_pixels(request, SampleType::kUint16);
+    pixels = converted.data();
+  }
+  const size_t pixel_bytes = size_t(request.width) * size_t(request.height) * request.channels * 2;
   std::vector<unsigned char> encoded;
   // The pixels uncompressed plus room for the tags: one allocation, no regrowth while libtiff
   // writes strip by strip.
-  encoded.reserve(pixels.size() + 65536);
+  encoded.reserve(pixel_bytes + 65536);
   TiffMemoryStream stream;
   stream.output = &encoded;
   std::unique_ptr<TIFF, TiffCloser> tif(open_tiff_stream(stream, "w", request.path));
@@ -146,7 +155,8 @@ std::vector<unsigned char> encode_dng(const EncodeRequest& request) {
     if (!ev->empty()) TIFFSetField(t, TIFFTAG_BASELINEEXPOSURE, double((*ev)[0]));
   const size_t row_bytes = size_t(request.width) * size_t(request.channels) * 2;
   for (uint32_t y = 0; y < uint32_t(request.height); ++y)
-    if (TIFFWriteScanline(t, pixels.data() + y * row_bytes, y, 0) < 0) fail("a row");
+    if (TIFFWriteScanline(t, const_cast<unsigned char*>(pixels) + y * row_bytes, y, 0) < 0)
+      fail("a row");
   if (!TIFFWriteDirectory(t)) fail("the directory");
   tif.reset();
   return encoded;
