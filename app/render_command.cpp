@@ -27,6 +27,8 @@
 #include "raster_options.h"
 #include "render_options.h"
 #include "scene_choice_options.h"
+#include "sensor_frame.h"
+#include "sensor_options.h"
 #include "sequence.h"
 #include "shard_file.h"
 #include "team.h"
@@ -107,7 +109,14 @@ void run_render(RenderOptions options, const std::string& job) {
           "--display-server shows one whole frame: it does not take --frames or --shard");
     check_display_server_address(options.display_server);
   }
+  if ((options.sensor.sensor || options.sensor.metering ||
+       (options.camera.exposure_mode && *options.camera.exposure_mode == "auto")) &&
+      (!options.frames.empty() || !options.shard.empty()))
+    throw UsageError(
+        "--raw-sensor, --metering and --exposure-mode auto capture one whole frame: they do not "
+        "take --frames or --shard yet (render under mpirun to share the frame)");
   if (!options.frames.empty()) return run_sequence(options, team);
+  take_sensor_requests(options);
   validate(options.tracer);  // the renderer, parsed before the checks below use it
   std::optional<ShardSpec> shard;
   if (!options.shard.empty()) {
@@ -132,7 +141,10 @@ void run_render(RenderOptions options, const std::string& job) {
 
   // Every rank loads the scene; only rank 0 (or a lone process) writes.
   Scene scene;
-  team.run_phase([&] { scene = prepare_scene(options, team.leads()); });
+  team.run_phase([&] {
+    scene = prepare_scene(options, team.leads());
+    resolve_sensor(options, scene);
+  });
   const bool speaks = team.leads() && !options.quiet;
   if (speaks)
     for (const std::string& w : scene.warnings) std::fprintf(stderr, "warning: %s\n", w.c_str());
@@ -180,6 +192,11 @@ void run_render(RenderOptions options, const std::string& job) {
     if (speaks) {
       for (const std::string& w : frame.warnings) std::fprintf(stderr, "warning: %s\n", w.c_str());
       print_summary(options, scene, frame, ranks, rays, seconds);
+      if (!options.sensor.exposure_note.empty())
+        std::fprintf(stderr, "auto exposure: metered EV100 %.2f (%s): %s\n",
+                     *options.sensor.metered_ev100,
+                     std::string(metering_mode_name(*options.sensor.metering_mode)).c_str(),
+                     options.sensor.exposure_note.c_str());
     }
     // The frame and its ground truth are a pair: both replaced, or (a full disk) neither. The
     // ground truth comes first: a cancel before it is done leaves it out, and the frame written
@@ -268,11 +285,13 @@ void add_render_command(CLI::App& app) {
                      "(see --scene-list); default: the Cornell box");
   render
       ->add_option("-o,--output", options->output,
-                   "Output image; the format follows the extension: .png, .exr, .pfm")
+                   "Output image; the format follows the extension: .png, .exr, .pfm, .dng (a "
+                   "raw sensor's DNG: see --raw-sensor)")
       ->capture_default_str();
   render->add_flag("--scene-list", options->list_scenes, "List the built-in scenes and exit");
   add_frame_options(*render, *options);
   add_ground_truth_options(*render, options->ground_truth);
+  add_sensor_options(*render, options->sensor);
   render->add_option("--shard", options->shard,
                      "Render part I of N of the frame (I counted from 0) to a partial film, an "
                      ".exr file; `obscura merge` assembles the N parts into the image one "
