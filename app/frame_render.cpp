@@ -19,6 +19,7 @@
 #include "obscura/render/renderer_backend.h"
 #include "obscura/scene/material_variants.h"
 #include "option_ranges.h"
+#include "sensor_frame.h"
 #include "usage_error.h"
 
 namespace obscura::app {
@@ -246,9 +247,22 @@ RenderEnd write_frame(const RenderOptions& options, const std::string& output,
   if (unfinished) interrupt_leaving_out(progress, "glare");
   ImageWriteOptions write_options = image_write_options(options.display);
   write_options.metadata = partial_metadata(progress);
-  report_write(output, write_image(output, finished, write_options), options.quiet);
-  warn_if_unmarked(output, progress, options.quiet);
-  std::printf("%s\n", output.c_str());
+  SensorOptions sensor = options.sensor;
+  if (sensor.metering_mode) {
+    meter_finished(sensor, finished, options.sensor.exposure_scale);
+    if (!options.quiet && sensor.exposure_note.empty())
+      std::fprintf(stderr, "metered EV100 %.2f (%s)\n", *sensor.metered_ev100,
+                   std::string(metering_mode_name(*sensor.metering_mode)).c_str());
+  }
+  add_metering_metadata(sensor, write_options.metadata);
+  if (sensor.spec) {
+    for (const std::string& path : write_sensor_frame(options, output, finished, write_options))
+      std::printf("%s\n", path.c_str());
+  } else {
+    report_write(output, write_image(output, finished, write_options), options.quiet);
+    warn_if_unmarked(output, progress, options.quiet);
+    std::printf("%s\n", output.c_str());
+  }
   if (frame.aovs)
     for (const std::string& path : write_aovs(output, *frame.aovs, partial_metadata(progress)))
       std::printf("%s\n", path.c_str());

@@ -21,6 +21,7 @@
 #include "render_command.h"
 #include "team.h"
 #include "usage_error.h"
+#include "view_command.h"
 
 namespace {
 
@@ -76,6 +77,7 @@ int run(int argc, char** argv) {
   obscura::app::add_info_command(app);
   obscura::app::add_merge_command(app);
   obscura::app::add_raster_clip_command(app);
+  obscura::app::add_view_command(app, argc, argv);
 
   // A first word that is neither an option nor a command is named as such (CLI11 would only
   // say that a command is required).

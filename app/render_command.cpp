@@ -8,6 +8,7 @@
 
 #include "camera_options.h"
 #include "display_options.h"
+#include "display_server.h"
 #include "frame_render.h"
 #include "glare_options.h"
 #include "image_limit_option.h"
@@ -26,6 +27,8 @@
 #include "raster_options.h"
 #include "render_options.h"
 #include "scene_choice_options.h"
+#include "sensor_frame.h"
+#include "sensor_options.h"
 #include "sequence.h"
 #include "shard_file.h"
 #include "team.h"
@@ -100,7 +103,20 @@ void run_render(RenderOptions options, const std::string& job) {
     throw UsageError(
         "--ground-truth writes one frame's file; it does not take --frames (render each "
         "frame with its own --ground-truth file)");
+  if (!options.display_server.empty()) {
+    if (!options.frames.empty() || !options.shard.empty())
+      throw UsageError(
+          "--display-server shows one whole frame: it does not take --frames or --shard");
+    check_display_server_address(options.display_server);
+  }
+  if ((options.sensor.sensor || options.sensor.metering ||
+       (options.camera.exposure_mode && *options.camera.exposure_mode == "auto")) &&
+      (!options.frames.empty() || !options.shard.empty()))
+    throw UsageError(
+        "--raw-sensor, --metering and --exposure-mode auto capture one whole frame: they do not "
+        "take --frames or --shard yet (render under mpirun to share the frame)");
   if (!options.frames.empty()) return run_sequence(options, team);
+  take_sensor_requests(options);
   validate(options.tracer);  // the renderer, parsed before the checks below use it
   std::optional<ShardSpec> shard;
   if (!options.shard.empty()) {
@@ -125,7 +141,10 @@ void run_render(RenderOptions options, const std::string& job) {
 
   // Every rank loads the scene; only rank 0 (or a lone process) writes.
   Scene scene;
-  team.run_phase([&] { scene = prepare_scene(options, team.leads()); });
+  team.run_phase([&] {
+    scene = prepare_scene(options, team.leads());
+    resolve_sensor(options, scene);
+  });
   const bool speaks = team.leads() && !options.quiet;
   if (speaks)
     for (const std::string& w : scene.warnings) std::fprintf(stderr, "warning: %s\n", w.c_str());
@@ -173,6 +192,11 @@ void run_render(RenderOptions options, const std::string& job) {
     if (speaks) {
       for (const std::string& w : frame.warnings) std::fprintf(stderr, "warning: %s\n", w.c_str());
       print_summary(options, scene, frame, ranks, rays, seconds);
+      if (!options.sensor.exposure_note.empty())
+        std::fprintf(stderr, "auto exposure: metered EV100 %.2f (%s): %s\n",
+                     *options.sensor.metered_ev100,
+                     std::string(metering_mode_name(*options.sensor.metering_mode)).c_str(),
+                     options.sensor.exposure_note.c_str());
     }
     // The frame and its ground truth are a pair: both replaced, or (a full disk) neither. The
     // ground truth comes first: a cancel before it is done leaves it out, and the frame written
@@ -188,6 +212,17 @@ void run_render(RenderOptions options, const std::string& job) {
     write_frame(options, options.output, frame);
     outputs.commit();
     if (ground_truth) std::printf("%s\n", ground_truth->c_str());
+    // The image is written whatever tev says: a display that cannot be reached is a warning.
+    if (!options.display_server.empty()) {
+      try {
+        const std::vector<AovImage> aovs =
+            frame.aovs ? frame.aovs->images() : std::vector<AovImage>{};
+        push_to_display_server(options.display_server,
+                               display_image(options.output, frame.finished(), aovs));
+      } catch (const Error& e) {
+        std::fprintf(stderr, "warning: %s\n", e.what());
+      }
+    }
   } else {
     set_exit_status(exit_status_for(frame.progress.end));
   }
@@ -250,15 +285,20 @@ void add_render_command(CLI::App& app) {
                      "(see --scene-list); default: the Cornell box");
   render
       ->add_option("-o,--output", options->output,
-                   "Output image; the format follows the extension: .png, .exr, .pfm")
+                   "Output image; the format follows the extension: .png, .exr, .pfm, .dng (a "
+                   "raw sensor's DNG: see --raw-sensor)")
       ->capture_default_str();
   render->add_flag("--scene-list", options->list_scenes, "List the built-in scenes and exit");
   add_frame_options(*render, *options);
   add_ground_truth_options(*render, options->ground_truth);
+  add_sensor_options(*render, options->sensor);
   render->add_option("--shard", options->shard,
                      "Render part I of N of the frame (I counted from 0) to a partial film, an "
                      ".exr file; `obscura merge` assembles the N parts into the image one "
                      "process would have made (for farm managers; see docs/distributed.md)");
+  render->add_option("--display-server", options->display_server,
+                     "Also send the finished frame and its AOVs to a running tev (HOST:PORT, tev's "
+                     "default 127.0.0.1:14158), as pbrt-v4 and Mitsuba do");
   render->add_option("--frames", options->frames,
                      "Render a sequence: frames FIRST:LAST[:STEP] (inclusive), frame n exposed "
                      "around n/fps seconds, to a numbered output (out_%04d.exr; finished frames "

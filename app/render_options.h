@@ -11,6 +11,7 @@
 #include "raster_effects_options.h"
 #include "raster_options.h"
 #include "scene_choice_options.h"
+#include "sensor_options.h"
 #include "tracer_options.h"
 
 namespace obscura::app {
@@ -39,6 +40,8 @@ struct RenderOptions {
   GlareOptions glare;               // --glare, --glare-strength, --glare-radius
   bool flare = false;               // --flare: ghost flares of a lens-system camera
   GroundTruthOptions ground_truth;  // --ground-truth, --flow-times
+  std::string display_server;       // --display-server HOST:PORT: push the frame to tev
+  SensorOptions sensor;  // --raw-sensor, --metering, --exposure-mode auto (docs/sensor.md)
   // Which options were given on the command line: those override the scene file's settings.
   bool width_given = false, height_given = false, spp_given = false, seed_given = false;
 };

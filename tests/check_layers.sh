@@ -12,10 +12,11 @@ declare -A allowed=(
   [scene]="scene math color camera"
   [shading]="shading math color scene"
   [film]="film math color"
-  [io]="io scene film color math camera"
+  [sensor]="sensor math color film"
+  [io]="io scene film color math camera sensor"
   [trace]="trace math color camera scene film shading"
   [raster]="raster math color camera scene film shading"
-  [render]="render math color camera scene shading film io trace raster"
+  [render]="render math color camera scene shading film sensor io trace raster"
 )
 
 status=0

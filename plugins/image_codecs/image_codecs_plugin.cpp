@@ -6,6 +6,7 @@
 #include <cctype>
 #include <filesystem>
 
+#include "dng_codec.h"
 #include "exr_codec.h"
 #include "jpeg_codec.h"
 #include "obscura/io/image_codecs.h"
@@ -51,8 +52,9 @@ class NativeImageCodecs final : public ImageCodecs {
     if (ext == ".tif" || ext == ".tiff") return encode_tiff(request);
     if (ext == ".exr") return encode_exr(request);
     if (ext == ".hdr") return encode_rgbe(request);
+    if (ext == ".dng") return encode_dng(request);
     throw Error(request.path,
-                "no image writer for '" + ext + "'; expected .png, .jpg, .tif, .exr or .hdr");
+                "no image writer for '" + ext + "'; expected .png, .jpg, .tif, .exr, .hdr or .dng");
   }
 };
 

@@ -2,6 +2,7 @@
 
 #include <png.h>
 
+#include <algorithm>
 #include <cstdio>
 #include <cstring>
 #include <string>
@@ -173,7 +174,31 @@ bool write_png(PngWriter& w, const EncodeRequest& request, int bit_depth,
   const std::string* space = text_attribute(request, "oiio:ColorSpace");
   if (space && *space == "sRGB")  // sRGB, with gAMA and cHRM for readers that know only those
     png_set_sRGB_gAMA_and_cHRM(w.png, w.info, PNG_sRGB_INTENT_PERCEPTUAL);
+  // Wide-gamut and HDR encodings declare themselves in a cICP chunk (PNG third edition; ITU-T
+  // H.273 code points: primaries, transfer, matrix 0 for RGB, full range), which libpng 1.6.39
+  // writes as a chunk it does not interpret, before the image data where it must stand.
+  png_byte cicp[4] = {0, 0, 0, 1};
+  if (space && *space == "Display P3") cicp[0] = 12, cicp[1] = 13;  // P3-D65, sRGB's curve
+  if (space && *space == "Rec2100-PQ") cicp[0] = 9, cicp[1] = 16;   // BT.2020, SMPTE ST 2084
+  png_unknown_chunk chunk{};
+  if (cicp[0] != 0) {
+    std::memcpy(chunk.name, "cICP", 5);
+    chunk.data = cicp;
+    chunk.size = sizeof cicp;
+    chunk.location = PNG_HAVE_IHDR;
+    static const png_byte kName[] = "cICP";
+    png_set_keep_unknown_chunks(w.png, PNG_HANDLE_CHUNK_ALWAYS, kName, 1);
+    png_set_unknown_chunks(w.png, w.info, &chunk, 1);
+  }
   if (!text.empty()) png_set_text(w.png, w.info, text.data(), int(text.size()));
+  // "png:compression" (an int, 0-9): zlib's level, for a caller that wants speed over size (the
+  // live view's frames); 1 and below also take the one cheap row filter instead of trying all.
+  for (const HeaderAttribute& attribute : request.attributes)
+    if (const int* level = std::get_if<int>(&attribute.value);
+        level && attribute.name == "png:compression") {
+      png_set_compression_level(w.png, std::clamp(*level, 0, 9));
+      if (*level <= 1) png_set_filter(w.png, PNG_FILTER_TYPE_BASE, PNG_FILTER_SUB);
+    }
   png_write_info(w.png, w.info);
   if (bit_depth == 16) png_set_swap(w.png);
   png_write_image(w.png, rows.data());

@@ -26,8 +26,14 @@ tmsize_t write_proc(thandle_t handle, void* buffer, tmsize_t size) {
   TiffMemoryStream& s = stream_of(handle);
   if (!s.output || size < 0) return -1;
   const size_t end = size_t(s.position) + size_t(size);
-  if (end > s.output->size()) s.output->resize(end);
-  std::memcpy(s.output->data() + s.position, buffer, size_t(size));
+  const auto* bytes = static_cast<const unsigned char*>(buffer);
+  if (s.position == s.output->size()) {
+    // Appending, libtiff's usual write: no zero-filling of bytes about to be overwritten.
+    s.output->insert(s.output->end(), bytes, bytes + size);
+  } else {
+    if (end > s.output->size()) s.output->resize(end);
+    std::memcpy(s.output->data() + s.position, buffer, size_t(size));
+  }
   s.position = end;
   return size;
 }

@@ -20,5 +20,6 @@ void bind_ground_truth(py::module_& m);    // ground_truth(): the --ground-truth
 void bind_session(py::module_& m);         // RenderSession: a scene compiled once for many frames
 void bind_dataset(py::module_& m);         // render_dataset(): views, images, calibrations
 void bind_motion(py::module_& m);          // motion keys of cameras and instances
+void bind_sensor(py::module_& m);  // capture_raw, develop_raw, write_dng, meter: the raw sensor
 
 }  // namespace obscura::python

@@ -21,4 +21,5 @@ PYBIND11_MODULE(_obscura, m) {
   bind_camera_request(m);
   bind_ground_truth(m);
   bind_dataset(m);
+  bind_sensor(m);
 }

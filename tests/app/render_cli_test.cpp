@@ -102,7 +102,7 @@ INSTANTIATE_TEST_SUITE_P(
                       BadCall{"render -o DIR/x.bmp", 1, "unsupported image extension '.bmp'"},
                       BadCall{"render no-such-scene -o DIR/x.png", 1, "no-such-scene"},
                       BadCall{"", 2, "subcommand"},
-                      BadCall{"view", 2, "unknown command 'view'; the commands are render"}),
+                      BadCall{"preview", 2, "unknown command 'preview'; the commands are render"}),
     [](const ::testing::TestParamInfo<BadCall>& info) {
       return "case" + std::to_string(info.index);
     });

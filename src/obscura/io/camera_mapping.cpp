@@ -11,6 +11,7 @@
 #include "obscura/camera/lens_coating.h"
 #include "obscura/io/calibrated_camera_json.h"
 #include "obscura/io/lens_file.h"
+#include "obscura/io/sensor_json.h"
 #include "obscura/math/error.h"
 
 namespace obscura {
@@ -196,6 +197,9 @@ Camera camera_from_json(JsonReader& json) {
   c.exposure.compensation_ev = json.number("exposure_compensation_ev", 0);
   c.exposure.iso = json.number_in("iso", 100, 1e-3, 1e7);
   c.film.pixel_aspect = json.number_in("pixel_aspect", 1, 1e-3, 1e3);
+  // The raw sensor is checked here, where its JSON path is known, and read back by the camera's
+  // name when a frame is captured (io/sensor_json.h).
+  if (json.has("sensor")) sensor_from_json(json.object("sensor"));
   // A moving camera: keyframes of position (and target) over time.
   std::vector<AnimatedTransform::Key> keys;
   for (JsonReader& key : json.objects("motion")) {

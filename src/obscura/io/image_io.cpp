@@ -157,8 +157,9 @@ ImageFormat image_format_for_path(const std::string& path) {
   if (ext == ".hdr") return ImageFormat::kHdr;
   if (ext == ".pfm") return ImageFormat::kPfm;
   if (ext == ".y4m") return ImageFormat::kY4m;
+  if (ext == ".dng") return ImageFormat::kDng;
   throw Error(path, "unsupported image extension '" + ext +
-                        "'; expected .png, .jpg, .tif, .exr, .hdr, .pfm or .y4m");
+                        "'; expected .png, .jpg, .tif, .exr, .hdr, .pfm, .y4m or .dng");
 }
 
 bool format_keeps_metadata(ImageFormat f) {
@@ -266,6 +267,10 @@ WriteReport write_image(const std::string& path, const Image& image,
                           "; expected a non-empty grey, RGB or RGBA image");
   check_output_path(path);
   ImageFormat format = image_format_for_path(path);
+  if (format == ImageFormat::kDng)
+    throw Error(path,
+                "a DNG holds a raw sensor's data, not a rendered image: render with a sensor "
+                "(--raw-sensor, a camera's \"sensor\" block) to write one");
   if (!is_display_format(format)) return write_linear(path, format, image, options);
   ImageWriteOptions o = options;
   if (format == ImageFormat::kJpeg || format == ImageFormat::kY4m)

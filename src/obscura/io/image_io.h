@@ -8,7 +8,8 @@
 //   scene-referred (linear Rec.709 values as they are):
 //     .exr (32-bit float or half, with the Rec.709/D65 chromaticities), .hdr (Radiance RGBE),
 //     .pfm (32-bit float);
-//   video: .y4m (one frame; see y4m_writer.h for sequences).
+//   video: .y4m (one frame; see y4m_writer.h for sequences);
+//   raw: .dng, a sensor's raw data only (io/dng_file.h): write_image refuses it.
 // Files are written to a temporary name beside the target and renamed when complete, so a failed
 // or interrupted write never leaves a partial file behind. NaN and ±Inf never reach a file as
 // garbage: they are counted (WriteReport) and written as 0 (black); finite values beyond what a
@@ -24,7 +25,7 @@
 
 namespace obscura {
 
-enum class ImageFormat { kPng, kJpeg, kTiff, kExr, kHdr, kPfm, kY4m };
+enum class ImageFormat { kPng, kJpeg, kTiff, kExr, kHdr, kPfm, kY4m, kDng };
 
 // The format for a path's extension (case-insensitive); throws obscura::Error naming the
 // extension and the supported ones otherwise.

@@ -4,6 +4,7 @@
 #include <cmath>
 #include <filesystem>
 #include <functional>
+#include <initializer_list>
 #include <map>
 #include <numbers>
 
@@ -415,14 +416,52 @@ class JsonSceneReader {
     return light;
   }
 
+  // Light in the scene's one convention (docs/scene-format.md, "Light units"): photometric,
+  // as glTF's KHR_lights_punctual — point and spot intensity in candela, directional light in
+  // lux — so that the film holds luminance in cd/m² and the physical exposure's calibration
+  // applies. Each quantity may instead be given in another unit, converted here: a point or spot
+  // light's luminous power in lumens (I = Φ / 4π, as KHR_lights_punctual converts, a spot too),
+  // or radiometric watts through the luminous efficacy `efficacy_lm_w` (683 lm/W, light at
+  // 555 nm, unless the light's spectrum says otherwise). One key per quantity.
+  static double efficacy(JsonReader& json) {
+    return json.number_in("efficacy_lm_w", 683, 1e-6, 683);
+  }
+
+  static double one_of(JsonReader& json, std::initializer_list<const char*> keys) {
+    const char* given = nullptr;
+    for (const char* key : keys)
+      if (json.has(key)) {
+        if (given)
+          json.fail(key, std::string("give the light's strength once: '") + given + "' is given");
+        given = key;
+      }
+    return given ? json.number_in(given, 1, 0, 1e12) : 1;
+  }
+
+  static double punctual_intensity_cd(JsonReader& json) {
+    const double v =
+        one_of(json, {"intensity", "intensity_cd", "power_lm", "intensity_w_sr", "power_w"});
+    constexpr double kFourPi = 4 * std::numbers::pi;
+    if (json.has("power_lm")) return v / kFourPi;
+    if (json.has("intensity_w_sr")) return v * efficacy(json);
+    if (json.has("power_w")) return v * efficacy(json) / kFourPi;
+    return v;
+  }
+
+  static double illuminance_lux(JsonReader& json) {
+    const double v = one_of(json, {"irradiance", "illuminance_lux", "irradiance_w_m2"});
+    if (json.has("irradiance_w_m2")) return v * efficacy(json);
+    return v;
+  }
+
   void read_light(JsonReader& json) {
     Light light;
     light.name = json.string("name", "light " + std::to_string(scene_.lights.size()));
     std::string type = json.string("type");
     Rgb color = json.rgb("color", Rgb(1.f));
     if (type == "point") {
-      light.model = PointLight{point(json.vector3("position")),
-                               color * float(json.number_in("intensity", 1, 0, 1e12))};
+      light.model =
+          PointLight{point(json.vector3("position")), color * float(punctual_intensity_cd(json))};
     } else if (type == "spot") {
       Vector3d position = json.vector3("position");
       Vector3d target = json.vector3("target");
@@ -431,13 +470,13 @@ class JsonSceneReader {
       double inner = json.number_in("inner_cone_degrees", 0, 0, 90);
       double outer = json.number_in("outer_cone_degrees", 45, inner, 90);
       light.model = SpotLight{point(position), Vector3f(normalize(target - position)),
-                              color * float(json.number_in("intensity", 1, 0, 1e12)),
+                              color * float(punctual_intensity_cd(json)),
                               float(inner * kRadiansPerDegree), float(outer * kRadiansPerDegree)};
     } else if (type == "directional") {
       Vector3d direction = json.vector3("direction");
       if (length(direction) == 0) json.fail("direction", "the direction must not be zero");
-      light.model = DirectionalLight{Vector3f(normalize(direction)),
-                                     color * float(json.number_in("irradiance", 1, 0, 1e12))};
+      light.model =
+          DirectionalLight{Vector3f(normalize(direction)), color * float(illuminance_lux(json))};
     } else {
       json.fail("type", "unknown light type '" + type + "'; expected point, spot or directional");
     }
