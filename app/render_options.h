@@ -10,6 +10,7 @@
 #include "ground_truth_output.h"
 #include "raster_effects_options.h"
 #include "raster_options.h"
+#include "reyes_options.h"
 #include "scene_choice_options.h"
 #include "tracer_options.h"
 
@@ -36,8 +37,10 @@ struct RenderOptions {
   TracerOptions tracer;
   RasterOptions raster;
   RasterEffectsOptions raster_effects;
+  ReyesOptions reyes;  // --reyes-*
   GlareOptions glare;               // --glare, --glare-strength, --glare-radius
   bool flare = false;               // --flare: ghost flares of a lens-system camera
+  bool stats = false;               // --stats: the renderer's own counters after the summary
   GroundTruthOptions ground_truth;  // --ground-truth, --flow-times
   // Which options were given on the command line: those override the scene file's settings.
   bool width_given = false, height_given = false, spp_given = false, seed_given = false;

@@ -15,7 +15,8 @@ declare -A allowed=(
   [io]="io scene film color math camera"
   [trace]="trace math color camera scene film shading"
   [raster]="raster math color camera scene film shading"
-  [render]="render math color camera scene shading film io trace raster"
+  [reyes]="reyes math color camera scene film shading"
+  [render]="render math color camera scene shading film io trace raster reyes"
 )
 
 status=0

@@ -1,0 +1,254 @@
+#include "obscura/reyes/hider.h"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
+#include "obscura/camera/pixel_filter.h"
+#include "obscura/film/aov_buffers.h"
+#include "obscura/film/film.h"
+#include "obscura/math/sampler.h"
+#include "obscura/reyes/reyes_scene.h"
+
+namespace obscura::reyes {
+
+namespace {
+
+// The edge function of u → v at p (twice the signed area of u, v, p), evaluated from the
+// endpoints in canonical order so that v → u gives exactly its negation.
+double edge(Point2d u, Point2d v, double px, double py) {
+  const bool swap = v.x < u.x || (v.x == u.x && v.y < u.y);
+  const Point2d& a = swap ? v : u;
+  const Point2d& b = swap ? u : v;
+  const double e = (b.x - a.x) * (py - a.y) - (b.y - a.y) * (px - a.x);
+  return swap ? -e : e;
+}
+
+// Whether a sample exactly on edge u → v (of a triangle turned positively) belongs to it: the
+// neighbour across the edge runs it v → u, so exactly one of the two owns it.
+bool owns(Point2d u, Point2d v, bool reversed) {
+  double dx = v.x - u.x, dy = v.y - u.y;
+  if (reversed) dx = -dx, dy = -dy;
+  return dy > 0 || (dy == 0 && dx < 0);
+}
+
+bool inside(Point2d a, Point2d b, Point2d c, double px, double py, double w[3]) {
+  double area = edge(a, b, c.x, c.y);
+  if (area == 0 || !std::isfinite(area)) return false;
+  double e0 = edge(b, c, px, py), e1 = edge(c, a, px, py), e2 = edge(a, b, px, py);
+  const bool reversed = area < 0;
+  if (reversed) area = -area, e0 = -e0, e1 = -e1, e2 = -e2;
+  if (e0 < 0 || e1 < 0 || e2 < 0) return false;
+  if ((e0 == 0 && !owns(b, c, reversed)) || (e1 == 0 && !owns(c, a, reversed)) ||
+      (e2 == 0 && !owns(a, b, reversed)))
+    return false;
+  w[0] = e0 / area, w[1] = e1 / area, w[2] = e2 / area;
+  return true;
+}
+
+constexpr float kInfinity = std::numeric_limits<float>::infinity();
+
+}  // namespace
+
+BucketHider::BucketHider(const FrameView& view, const CameraSampleOrder& order,
+                         const ReyesSettings& settings, Bounds2i pixels, Point2i crop_min)
+    : view_(view), pixels_(pixels), crop_min_(crop_min), per_pixel_(settings.pixel_samples) {
+  const size_t count = size_t(pixels.area()) * size_t(per_pixel_);
+  samples_.reserve(count);
+  for (int y = pixels.min.y; y < pixels.max.y; ++y)
+    for (int x = pixels.min.x; x < pixels.max.x; ++x) {
+      // Random numbers are keyed on the full image's pixel, as in the tracer.
+      const Point2i pixel{x + crop_min.x, y + crop_min.y};
+      const double delay = order.pixel_delay_s(pixel);
+      SobolPixelKeys keys(settings.seed, pixel);  // the same numbers, hashed once per pixel
+      for (int s = 0; s < per_pixel_; ++s) {
+        Sampler sampler = settings.sampler == SamplerType::kSobol
+                              ? Sampler(settings.sampler, settings.seed, pixel, uint32_t(s), keys)
+                              : Sampler(settings.sampler, settings.seed, pixel, uint32_t(s));
+        const CameraSample cs = order.draw(sampler, pixel, delay);
+        SamplePoint p;
+        p.x = cs.film_point.x, p.y = cs.film_point.y;
+        p.time_s = cs.time_s;
+        p.tau = view.motion_fraction(cs.time_s);
+        p.lens_u = cs.lens;
+        p.lens_m = view.lens_offset(cs.lens);
+        p.weight = float(cs.filter_weight);
+        bounds_.add(p.x, p.y);
+        margin_px_ = std::max(
+            {margin_px_, pixel.x - p.x, p.x - (pixel.x + 1), pixel.y - p.y, p.y - (pixel.y + 1)});
+        samples_.push_back(p);
+      }
+    }
+  nearest_.assign(count, Visible{.depth = kInfinity});
+  opaque_hit_.assign(count, 0);
+}
+
+bool BucketHider::hides(double depth) {
+  if (opaque_count_ < samples_.size()) return false;
+  if (!farthest_known_) {
+    farthest_ = 0;
+    for (const Visible& v : nearest_) farthest_ = std::max(farthest_, v.depth);
+    farthest_known_ = true;
+  }
+  return farthest_ < depth;
+}
+
+void BucketHider::sample(const Grid& g, HiderCounts& counts) {
+  const int row = g.row();
+  const bool still = !g.raster.empty();
+  const bool moves = !g.close.empty();
+  const int x_min = pixels_.min.x + crop_min_.x, y_min = pixels_.min.y + crop_min_.y;
+  const int x_max = pixels_.max.x + crop_min_.x, y_max = pixels_.max.y + crop_min_.y;
+  const int width = pixels_.width();
+  Corner corners[4];
+  for (int j = 0; j < g.nv; ++j)
+    for (int i = 0; i < g.nu; ++i) {
+      const int index[4] = {j * row + i, j * row + i + 1, (j + 1) * row + i + 1, (j + 1) * row + i};
+      RasterBounds b;
+      if (still) {
+        for (int k = 0; k < 4; ++k) {
+          corners[k] = {g.raster[size_t(index[k])], FrameView::depth(g.open[size_t(index[k])])};
+          b.add(corners[k].r.x, corners[k].r.y);
+        }
+      } else {
+        double d0 = 1e300, d1 = -1e300;
+        for (int k = 0; k < 4; ++k)
+          for (int end = 0; end < (moves ? 2 : 1); ++end) {
+            const Point3d p = end ? g.close[size_t(index[k])] : g.open[size_t(index[k])];
+            const Point2d r = view_.project(p);
+            b.add(r.x, r.y);
+            d0 = std::min(d0, FrameView::depth(p)), d1 = std::max(d1, FrameView::depth(p));
+          }
+        if (view_.defocused()) b.grow(view_.max_lens_shift_px(d0, d1));
+      }
+      if (b.empty() || !b.overlaps(bounds_)) continue;
+      const int px0 = std::max(x_min, int(std::floor(b.x0 - margin_px_)));
+      const int px1 = std::min(x_max - 1, int(std::floor(b.x1 + margin_px_)));
+      const int py0 = std::max(y_min, int(std::floor(b.y0 - margin_px_)));
+      const int py1 = std::min(y_max - 1, int(std::floor(b.y1 + margin_px_)));
+      const uint32_t micropolygon = uint32_t(j * g.nu + i);
+      for (int py = py0; py <= py1; ++py)
+        for (int px = px0; px <= px1; ++px) {
+          const size_t first = (size_t(py - y_min) * width + size_t(px - x_min)) * per_pixel_;
+          for (size_t s = first; s < first + size_t(per_pixel_); ++s) {
+            const SamplePoint& sp = samples_[s];
+            if (sp.x < b.x0 || sp.x > b.x1 || sp.y < b.y0 || sp.y > b.y1) continue;
+            if (!still)
+              for (int k = 0; k < 4; ++k) {
+                Point3d p = g.open[size_t(index[k])];
+                if (moves) p = p + (g.close[size_t(index[k])] - p) * sp.tau;
+                const double d = FrameView::depth(p);
+                Point2d r = view_.project(p);
+                if (view_.defocused()) {
+                  const Point2d shift = view_.lens_shift(sp.lens_m, d);
+                  r = {r.x + shift.x, r.y + shift.y};
+                }
+                corners[k] = {r, d};
+              }
+            test(g, micropolygon, corners, index, uint32_t(s), sp, counts);
+          }
+        }
+    }
+}
+
+void BucketHider::test(const Grid& g, uint32_t micropolygon, const Corner corners[4],
+                       const int index[4], uint32_t sample, const SamplePoint& s,
+                       HiderCounts& counts) {
+  ++counts.tested;
+  static constexpr int kTriangles[2][3] = {{0, 1, 2}, {0, 2, 3}};
+  for (const auto& t : kTriangles) {
+    double w[3];
+    if (!inside(corners[t[0]].r, corners[t[1]].r, corners[t[2]].r, s.x, s.y, w)) continue;
+    const double depth =
+        w[0] * corners[t[0]].depth + w[1] * corners[t[1]].depth + w[2] * corners[t[2]].depth;
+    if (!(depth >= view_.near_m() && depth <= view_.far_m())) return;
+    const size_t v[3] = {size_t(index[t[0]]), size_t(index[t[1]]), size_t(index[t[2]])};
+    float alpha = 1;
+    if (g.coverage != Coverage::kOpaque) {
+      alpha = float(w[0] * g.alpha[v[0]] + w[1] * g.alpha[v[1]] + w[2] * g.alpha[v[2]]);
+      if (g.coverage == Coverage::kMask && !(alpha >= g.alpha_cutoff)) return;
+      if (g.coverage == Coverage::kBlend && !(alpha > 0)) return;
+    }
+    if (g.coverage != Coverage::kBlend && !(depth < nearest_[sample].depth)) return;
+    ++counts.hit;
+    Visible point;
+    point.depth = float(depth);
+    point.color =
+        g.color[v[0]] * float(w[0]) + g.color[v[1]] * float(w[1]) + g.color[v[2]] * float(w[2]);
+    point.normal =
+        g.normal[v[0]] * float(w[0]) + g.normal[v[1]] * float(w[1]) + g.normal[v[2]] * float(w[2]);
+    point.mesh = g.mesh;
+    point.surface = {int32_t(g.instance), g.triangle};
+    // The distance along the sample's ray, from its lens point.
+    Point3d p(0, 0, 0);
+    for (int k = 0; k < 3; ++k) {
+      Point3d c = g.open[v[k]];
+      if (!g.close.empty()) c = c + (g.close[v[k]] - c) * s.tau;
+      p = p + (c - Point3d(0, 0, 0)) * w[k];
+    }
+    const Vector3d from_lens =
+        view_.perspective() ? p - Point3d(s.lens_m.x, s.lens_m.y, 0) : Vector3d(0, 0, p.z);
+    point.range = float(length(from_lens));
+    if (g.coverage == Coverage::kBlend) {
+      fragments_.push_back({sample, std::min(alpha, 1.f), g.key, micropolygon, point});
+    } else {
+      nearest_[sample] = point;
+      opaque_count_ += opaque_hit_[sample] == 0;
+      opaque_hit_[sample] = 1;
+      farthest_known_ = false;
+    }
+    return;
+  }
+}
+
+void BucketHider::resolve(const ReyesScene& scene, const PreparedCamera& camera, bool needs_rays,
+                          float exposure, Film& film, AovBuffers* aovs,
+                          std::vector<SeenTriangle>* seen) {
+  std::sort(fragments_.begin(), fragments_.end(), [](const Fragment& a, const Fragment& b) {
+    if (a.sample != b.sample) return a.sample < b.sample;
+    if (a.point.depth != b.point.depth) return a.point.depth < b.point.depth;
+    if (a.key != b.key) return a.key < b.key;
+    return a.micropolygon < b.micropolygon;
+  });
+  size_t f = 0;
+  size_t s = 0;
+  for (int y = pixels_.min.y; y < pixels_.max.y; ++y)
+    for (int x = pixels_.min.x; x < pixels_.max.x; ++x)
+      for (int k = 0; k < per_pixel_; ++k, ++s) {
+        const SamplePoint& sp = samples_[s];
+        const bool opaque = opaque_hit_[s] != 0;
+        const float behind = opaque ? nearest_[s].depth : kInfinity;
+        Rgb c;
+        float transmitted = 1;
+        const Visible* first = nullptr;
+        for (; f < fragments_.size() && fragments_[f].sample == s; ++f) {
+          const Fragment& fr = fragments_[f];
+          if (!(fr.point.depth < behind) || transmitted <= 0) continue;
+          c += fr.point.color * (transmitted * fr.alpha);
+          transmitted *= 1 - fr.alpha;
+          if (!first) first = &fr.point;
+        }
+        if (opaque) {
+          c += nearest_[s].color * transmitted;
+          if (!first) first = &nearest_[s];
+        }
+        float ray_weight = 1;
+        if (needs_rays) {
+          const auto ray = camera.generate_ray({sp.x, sp.y}, {sp.lens_u.x, sp.lens_u.y}, sp.time_s);
+          ray_weight = ray ? float(ray->weight) : 0.f;
+          if (ray && !opaque && transmitted > 0)
+            c += scene.background(ray->direction) * transmitted;
+        }
+        film.add_sample({x, y}, c * (exposure * ray_weight), sp.weight);
+        if (seen && k == 0 && first)
+          (*seen)[size_t(y) * size_t(film.width()) + size_t(x)] = first->surface;
+        if (aovs) {
+          const Vector3f n = first ? first->normal : Vector3f();
+          aovs->add_sample({x, y}, first != nullptr, Rgb(), Normal3f(n.x, n.y, n.z),
+                           first ? first->depth : 0.f, first ? first->range : 0.f,
+                           first ? first->mesh : 0);
+        }
+      }
+}
+
+}  // namespace obscura::reyes
