@@ -89,7 +89,9 @@ DicePlan plan_dicing(const FrameView& view, const Piece& piece, const DiceLimits
   int base = 0;
   for (int e = 0; e < 3; ++e) {
     m[e] = measure(view, c[kEdges[e][0]], c[kEdges[e][1]]);
-    if (m[e].length_px > m[base].length_px) base = e;
+    // The shortest edge as the base: the lattice is about base × longest side micropolygons,
+    // so a sliver (a fan's wedge) dices into one thin row rather than a square of them.
+    if (m[e].length_px < m[base].length_px) base = e;
   }
   DicePlan plan;
   plan.piece = piece;

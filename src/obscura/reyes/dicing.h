@@ -1,8 +1,8 @@
 // Split and dice: how REYES turns a triangle into grids of micropolygons.
 //
-// A triangle is diced as a degenerate quad (its longest projected edge as the base, the opposite
-// vertex as both top corners) on a lattice of nu × nv micropolygons, nu and nv chosen from the
-// projected edge lengths so that no micropolygon is wider than √(shading rate) pixels anywhere
+// A triangle is diced as a degenerate quad (its shortest projected edge as the base, the
+// opposite vertex as both top corners) on a lattice of nu × nv micropolygons, nu and nv chosen from
+// the projected edge lengths so that no micropolygon is wider than √(shading rate) pixels anywhere
 // (perspective makes the step along an edge vary by the ratio of its end depths, which the rates
 // include).
 //

@@ -19,7 +19,9 @@ FrameView::FrameView(const Camera& camera, bool scene_moves) : camera_(&camera) 
     throw Error("reyes", "draws perspective and orthographic cameras only (the camera '" +
                              camera.name + "' has another projection): use the tracer");
   const Shutter exposed = camera.exposure_interval();
-  moves_ = scene_moves || camera.world_from_camera.is_animated();
+  // Motion blurs only over an exposure of some length (a zero-length shutter is a still).
+  moves_ =
+      (scene_moves || camera.world_from_camera.is_animated()) && exposed.close_s > exposed.open_s;
   // Shading happens once, at the moment a still frame would show (camera_sample.h's still time).
   shade_s_ = camera.shutter.time_at(0.5);
   t0_ = moves_ ? exposed.open_s : shade_s_;

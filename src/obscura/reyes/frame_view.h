@@ -34,6 +34,7 @@ class FrameView {
   bool perspective() const { return perspective_; }
   bool moves() const { return moves_; }  // anything (camera included) moves
   bool defocused() const { return lens_radius_m_ > 0; }
+  double lens_radius_m() const { return lens_radius_m_; }
   double open_s() const { return t0_; }  // the exposure interval (rolling shutter in)
   double close_s() const { return t1_; }
   double shading_time_s() const { return shade_s_; }
@@ -63,6 +64,11 @@ class FrameView {
     const double k = inv_focus_ - 1 / depth_m;
     return {ax_ * lens_m.x * k, ay_ * lens_m.y * k};
   }
+  // The thin lens's factor 1/S_f − 1/S at depth S (increasing with S), and the raster scales
+  // that turn a lens point times it into a shift: shift = (ax · l.x · k, ay · l.y · k).
+  double lens_factor(double depth_m) const { return inv_focus_ - 1 / depth_m; }
+  double raster_scale_x() const { return ax_; }
+  double raster_scale_y() const { return ay_; }
   // The lens point (metres, camera-space x and y) of a lens sample u ∈ [0,1)², as the camera
   // draws its rays.
   Point2d lens_offset(Point2f u) const;

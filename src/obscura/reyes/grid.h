@@ -32,7 +32,7 @@ struct Grid {
   std::vector<Vector3f> normal;      // world shading normal facing the viewer (the AOV)
   Coverage coverage = Coverage::kOpaque;
   float alpha_cutoff = 0.5f;
-  uint32_t mesh = 0;                    // the id AOV: the mesh index
+  uint32_t mesh = 0;  // the id AOV: the instance index, as the other renderers write it
   uint32_t instance = 0, triangle = 0;  // the scene triangle it was diced from
 
   int row() const { return nu + 1; }

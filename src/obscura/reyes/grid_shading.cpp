@@ -115,7 +115,7 @@ Grid dice_and_shade(const ReyesScene& scene, const FrameView& view, const DicePl
   g.key = key;
   g.nu = block.i1 - block.i0;
   g.nv = block.j1 - block.j0;
-  g.mesh = inst.mesh;
+  g.mesh = instance;  // what the tracer's and the rasterizer's id AOVs hold
   g.instance = instance;
   g.triangle = triangle;
   if (m.alpha_mode == AlphaMode::kMask) g.coverage = Coverage::kMask;

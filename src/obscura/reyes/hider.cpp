@@ -101,6 +101,9 @@ void BucketHider::sample(const Grid& g, HiderCounts& counts) {
   const int x_max = pixels_.max.x + crop_min_.x, y_max = pixels_.max.y + crop_min_.y;
   const int width = pixels_.width();
   Corner corners[4];
+  RasterBounds b_open, b_close;
+  double slack = 0, k0 = 0, k1 = 0;  // the thin lens's factor at the nearest and farthest depth
+  const double sx = view_.raster_scale_x(), sy = view_.raster_scale_y();
   for (int j = 0; j < g.nv; ++j)
     for (int i = 0; i < g.nu; ++i) {
       const int index[4] = {j * row + i, j * row + i + 1, (j + 1) * row + i + 1, (j + 1) * row + i};
@@ -111,14 +114,26 @@ void BucketHider::sample(const Grid& g, HiderCounts& counts) {
           b.add(corners[k].r.x, corners[k].r.y);
         }
       } else {
+        // Its bounds at the exposure's two ends; at a time between, the image of each corner
+        // strays from the straight line between its ends by at most ¼ × its travel × its
+        // relative change of depth (a projection is a ratio of linear functions of time).
+        b_open = {}, b_close = {};
+        slack = 1e-6;  // rounding
         double d0 = 1e300, d1 = -1e300;
-        for (int k = 0; k < 4; ++k)
-          for (int end = 0; end < (moves ? 2 : 1); ++end) {
-            const Point3d p = end ? g.close[size_t(index[k])] : g.open[size_t(index[k])];
-            const Point2d r = view_.project(p);
-            b.add(r.x, r.y);
-            d0 = std::min(d0, FrameView::depth(p)), d1 = std::max(d1, FrameView::depth(p));
-          }
+        for (int k = 0; k < 4; ++k) {
+          const Point3d po = g.open[size_t(index[k])];
+          const Point3d pc = moves ? g.close[size_t(index[k])] : po;
+          const Point2d ro = view_.project(po), rc = moves ? view_.project(pc) : ro;
+          b_open.add(ro.x, ro.y), b_close.add(rc.x, rc.y);
+          const double dop = FrameView::depth(po), dcl = FrameView::depth(pc);
+          d0 = std::min({d0, dop, dcl}), d1 = std::max({d1, dop, dcl});
+          if (moves && view_.perspective())
+            slack = std::max(slack, 0.25 * std::max(std::abs(rc.x - ro.x), std::abs(rc.y - ro.y)) *
+                                        std::abs(dcl - dop) / std::min(dop, dcl));
+        }
+        b = b_open;
+        b.add(b_close.x0, b_close.y0), b.add(b_close.x1, b_close.y1);
+        k0 = view_.lens_factor(d0), k1 = view_.lens_factor(d1);
         if (view_.defocused()) b.grow(view_.max_lens_shift_px(d0, d1));
       }
       if (b.empty() || !b.overlaps(bounds_)) continue;
@@ -133,6 +148,23 @@ void BucketHider::sample(const Grid& g, HiderCounts& counts) {
           for (size_t s = first; s < first + size_t(per_pixel_); ++s) {
             const SamplePoint& sp = samples_[s];
             if (sp.x < b.x0 || sp.x > b.x1 || sp.y < b.y0 || sp.y > b.y1) continue;
+            if (!still) {
+              // Where the micropolygon can be at this sample's time, shifted by this sample's
+              // lens point at the micropolygon's depths (the shift is monotonic in depth).
+              const double t = sp.tau;
+              double x_lo = 0, x_hi = 0, y_lo = 0, y_hi = 0;
+              if (view_.defocused()) {
+                const double xa = sx * sp.lens_m.x * k0, xb = sx * sp.lens_m.x * k1;
+                const double ya = sy * sp.lens_m.y * k0, yb = sy * sp.lens_m.y * k1;
+                x_lo = std::min(xa, xb), x_hi = std::max(xa, xb);
+                y_lo = std::min(ya, yb), y_hi = std::max(ya, yb);
+              }
+              if (sp.x < b_open.x0 + (b_close.x0 - b_open.x0) * t - slack + x_lo ||
+                  sp.x > b_open.x1 + (b_close.x1 - b_open.x1) * t + slack + x_hi ||
+                  sp.y < b_open.y0 + (b_close.y0 - b_open.y0) * t - slack + y_lo ||
+                  sp.y > b_open.y1 + (b_close.y1 - b_open.y1) * t + slack + y_hi)
+                continue;
+            }
             if (!still)
               for (int k = 0; k < 4; ++k) {
                 Point3d p = g.open[size_t(index[k])];

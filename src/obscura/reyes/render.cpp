@@ -162,6 +162,8 @@ ReyesStats render(const ReyesScene& scene, const Camera& camera, const ReyesSett
   // How far a sample strays outside its pixel (the filter's radius beyond half a pixel).
   const double margin_px = std::max(0.0, filter_radius_px(camera.film.filter) - 0.5) + 1e-6;
 
+  // REYES tells no albedo: its AOVs are the rasterizer's (normal, depth, range, id).
+  if (aovs && aovs->has_albedo()) *aovs = AovBuffers(film.width(), film.height(), false);
   if (seen) seen->assign(size_t(film.width()) * size_t(film.height()), SeenTriangle{});
   ReyesStats stats;
   PassSchedule passes(
