@@ -204,7 +204,7 @@ bool same_bits(const Image& a, const Image& b) {
 }
 
 // A lit, depth-of-field, motion-blurred frame: the same bits for 1 or 2 threads, buckets of 8, 16
-// or 32 pixels, and a frame rendered in 3 parts.
+// or 32 pixels, a frame rendered in 3 parts, and a crop window's region.
 TEST(ReyesVisibility, IsBitIdenticalAcrossThreadsBucketsAndParts) {
   Scene scene = sphere_scene();
   scene.instances[0].motion = {{0, Transform()}, {1.0 / 60, Transform::translate({0.2, 0, 0})}};
@@ -232,6 +232,19 @@ TEST(ReyesVisibility, IsBitIdenticalAcrossThreadsBucketsAndParts) {
     unpack_owned_pixels(deal, part, pack_owned_pixels(deal, part, frame.film_sums), sums);
   }
   EXPECT_TRUE(same_bits(sums, *reference));
+  // A crop window renders exactly its region of the whole frame.
+  settings.share = {};
+  Camera cropped = scene.camera;
+  cropped.film.crop = {.x_min = 0.25, .y_min = 0.5, .x_max = 0.75, .y_max = 1};
+  const RenderedFrame crop = render_frame(scene, cropped, settings, false);
+  const Bounds2i region = cropped.film.crop_pixels();
+  bool same = crop.film_sums.width == region.width() && crop.film_sums.height == region.height();
+  for (int y = 0; same && y < region.height(); ++y)
+    for (int x = 0; x < region.width(); ++x)
+      for (int c = 0; c < reference->channels; ++c)
+        same = same &&
+               crop.film_sums.at(x, y, c) == reference->at(x + region.min.x, y + region.min.y, c);
+  EXPECT_TRUE(same);
 }
 
 }  // namespace
