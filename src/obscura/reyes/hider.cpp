@@ -79,6 +79,17 @@ BucketHider::BucketHider(const FrameView& view, const CameraSampleOrder& order,
         samples_.push_back(p);
       }
     }
+  if (view.moves()) {
+    // Each pixel's samples in order of time (ties by index), for the moving micropolygons.
+    by_time_.resize(count);
+    for (size_t i = 0; i < count; ++i) by_time_[i] = uint32_t(i);
+    for (size_t first = 0; first < count; first += size_t(per_pixel_))
+      std::sort(by_time_.begin() + long(first), by_time_.begin() + long(first) + per_pixel_,
+                [&](uint32_t a, uint32_t b) {
+                  return samples_[a].tau != samples_[b].tau ? samples_[a].tau < samples_[b].tau
+                                                            : a < b;
+                });
+  }
   nearest_.assign(count, Visible{.depth = kInfinity});
   opaque_hit_.assign(count, 0);
 }
@@ -102,7 +113,8 @@ void BucketHider::sample(const Grid& g, HiderCounts& counts) {
   const int width = pixels_.width();
   Corner corners[4];
   RasterBounds b_open, b_close;
-  double slack = 0, k0 = 0, k1 = 0;  // the thin lens's factor at the nearest and farthest depth
+  double slack = 0, k0 = 0, k1 = 0,
+         lens_grow = 0;  // the thin lens's factor at the nearest and farthest depth
   const double sx = view_.raster_scale_x(), sy = view_.raster_scale_y();
   for (int j = 0; j < g.nv; ++j)
     for (int i = 0; i < g.nu; ++i) {
@@ -134,7 +146,8 @@ void BucketHider::sample(const Grid& g, HiderCounts& counts) {
         b = b_open;
         b.add(b_close.x0, b_close.y0), b.add(b_close.x1, b_close.y1);
         k0 = view_.lens_factor(d0), k1 = view_.lens_factor(d1);
-        if (view_.defocused()) b.grow(view_.max_lens_shift_px(d0, d1));
+        lens_grow = view_.max_lens_shift_px(d0, d1);
+        if (view_.defocused()) b.grow(lens_grow);
       }
       if (b.empty() || !b.overlaps(bounds_)) continue;
       const int px0 = std::max(x_min, int(std::floor(b.x0 - margin_px_)));
@@ -145,7 +158,34 @@ void BucketHider::sample(const Grid& g, HiderCounts& counts) {
       for (int py = py0; py <= py1; ++py)
         for (int px = px0; px <= px1; ++px) {
           const size_t first = (size_t(py - y_min) * width + size_t(px - x_min)) * per_pixel_;
-          for (size_t s = first; s < first + size_t(per_pixel_); ++s) {
+          // Moving: only the samples whose time finds the micropolygon over this pixel (its
+          // pixel's samples are kept sorted by time), else every sample of the pixel.
+          size_t k = first, k_end = first + size_t(per_pixel_);
+          if (!by_time_.empty() && moves) {
+            const double grow = slack + lens_grow;
+            double t0 = 0, t1 = 1;
+            auto below = [&](double a, double b, double c) {  // keep t with a + b·t ≤ c
+              if (b > 0)
+                t1 = std::min(t1, (c - a) / b);
+              else if (b < 0)
+                t0 = std::max(t0, (c - a) / b);
+              else if (a > c)
+                t1 = -1;
+            };
+            below(b_open.x0 - grow, b_close.x0 - b_open.x0, px + 1 + margin_px_);
+            below(-(b_open.x1 + grow), -(b_close.x1 - b_open.x1), -(px - margin_px_));
+            below(b_open.y0 - grow, b_close.y0 - b_open.y0, py + 1 + margin_px_);
+            below(-(b_open.y1 + grow), -(b_close.y1 - b_open.y1), -(py - margin_px_));
+            constexpr double kEps = 1e-9;  // rounding: never drop a sample at the interval's end
+            const auto begin = by_time_.begin() + long(first), end = begin + per_pixel_;
+            const auto lo = std::lower_bound(
+                begin, end, t0 - kEps, [&](uint32_t i, double t) { return samples_[i].tau < t; });
+            const auto hi = std::upper_bound(
+                lo, end, t1 + kEps, [&](double t, uint32_t i) { return t < samples_[i].tau; });
+            k = size_t(lo - by_time_.begin()), k_end = size_t(hi - by_time_.begin());
+          }
+          for (; k < k_end; ++k) {
+            const size_t s = by_time_.empty() || !moves ? k : by_time_[k];
             const SamplePoint& sp = samples_[s];
             if (sp.x < b.x0 || sp.x > b.x1 || sp.y < b.y0 || sp.y > b.y1) continue;
             if (!still) {

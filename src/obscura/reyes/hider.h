@@ -108,6 +108,7 @@ class BucketHider {
   double margin_px_ = 0;  // how far samples stray outside their pixel
   RasterBounds bounds_;
   std::vector<SamplePoint> samples_;  // pixel-major, per_pixel_ each
+  std::vector<uint32_t> by_time_;     // per pixel, its samples' indices by time (motion only)
   std::vector<Visible> nearest_;
   std::vector<uint8_t> opaque_hit_;
   size_t opaque_count_ = 0;  // samples with an opaque hit
