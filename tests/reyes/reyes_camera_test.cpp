@@ -5,6 +5,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <cstdio>
 #include <limits>
 #include <string>
 
@@ -23,21 +24,36 @@ using testing::render_reyes;
 // mean profile across the edge is the uniform distribution of the edge over v pixels, blurred by
 // the pixel, so the spread of its derivative (adjacent-pixel differences) has variance
 // v²/12 + 1/6 (the box convolved with itself), from which v is measured back.
-double measured_blur_px(double v) {
-  constexpr int kHeight = 64;
-  const int width = int(v) + 48;
-  const double pixel_m = 0.01;
+struct MovingEdge {
   Scene scene;
-  scene.materials = {testing::unlit_material(Rgb(1.f))};
-  scene.meshes.push_back(
+  Camera camera;
+  int width = 0;
+};
+
+MovingEdge moving_edge(double v) {
+  constexpr int kHeight = 64;
+  MovingEdge e;
+  e.width = int(v) + 48;
+  const double pixel_m = 0.01;
+  e.scene.materials = {testing::unlit_material(Rgb(1.f))};
+  e.scene.meshes.push_back(
       testing::make_quad("half", 0, {-100, -10, 0}, {0, -10, 0}, {0, 10, 0}, {-100, 10, 0}));
   const double start = -(v / 2) * pixel_m;  // centred in the image over the shutter
   Instance moving = testing::make_instance("half", 0);
   moving.world_from_object = Transform::translate({start, 0, 0});
   moving.motion = {{0, Transform::translate({start, 0, 0})},
                    {1.0 / 60, Transform::translate({start + v * pixel_m, 0, 0})}};
-  scene.instances = {moving};
-  const Camera camera = testing::orthographic_camera(kHeight * pixel_m, width, kHeight);
+  e.scene.instances = {moving};
+  e.camera = testing::orthographic_camera(kHeight * pixel_m, e.width, kHeight);
+  return e;
+}
+
+double measured_blur_px(double v) {
+  constexpr int kHeight = 64;
+  const MovingEdge edge = moving_edge(v);
+  const Scene& scene = edge.scene;
+  const Camera& camera = edge.camera;
+  const int width = edge.width;
   const testing::ReyesFrame frame = render_reyes(scene, camera, {.pixel_samples = 64});
   std::vector<double> profile(size_t(width), 0.0);
   for (int y = 0; y < kHeight; ++y)
@@ -55,6 +71,67 @@ double measured_blur_px(double v) {
 
 TEST(ReyesCamera, AMovingEdgeRampsOverItsSpeed) {
   for (double v : {4.0, 16.0, 64.0}) EXPECT_NEAR(measured_blur_px(v), v, 0.5) << v << " px";
+}
+
+// The same camera numbers (film point, lens point, time) for the same seed in both renderers:
+// each sample sees the same surface, so the moving edge's pixels agree with the tracer's to a
+// sample, and almost all of them exactly.
+TEST(ReyesCamera, BlursAsTheTracerDoesSampleForSample) {
+  const MovingEdge edge = moving_edge(16);
+  FrameSettings settings{.renderer = renderer_named("direct"), .samples_per_pixel = 16};
+  settings.reyes.pixel_samples = 16;
+  const Image traced = render_frame(edge.scene, edge.camera, settings, false).finished();
+  settings.renderer = renderer_named("reyes");
+  const Image reyes = render_frame(edge.scene, edge.camera, settings, false).finished();
+  const double one_sample = edge.camera.exposure_scale() / 16;
+  int differ = 0, ramp = 0;
+  for (int y = 0; y < traced.height; ++y)
+    for (int x = 0; x < traced.width; ++x) {
+      const double d = std::abs(double(reyes.at(x, y, 0)) - traced.at(x, y, 0));
+      EXPECT_LE(d, one_sample * 1.001);
+      differ += d > 1e-6;
+      ramp += traced.at(x, y, 0) > 0 && traced.at(x, y, 0) < edge.camera.exposure_scale();
+    }
+  EXPECT_GT(ramp, 12 * 64);
+  std::printf("moving edge: %d of %d pixels differ from the tracer's (%d blurred)\n", differ,
+              traced.width * traced.height, ramp);
+  EXPECT_LE(differ, traced.width * traced.height / 100);
+}
+
+// Depth of field likewise: a small square off the focus plane through a bladed f/1.4 lens, each
+// sample's lens point the tracer's, so the bokeh (the blade polygon included) agrees with the
+// tracer's sample for sample.
+TEST(ReyesCamera, DefocusesAsTheTracerDoesSampleForSample) {
+  constexpr int kSize = 128;
+  Camera camera = testing::make_camera({0, 0, 0}, {0, 0, -1}, kSize, 30);
+  camera.film.filter = BoxFilter{0.5};
+  camera.lens.depth_of_field = true;
+  camera.lens.f_number = 1.4;
+  camera.lens.focus_distance_m = 1.5;
+  camera.lens.aperture.blades = 6;
+  const float h = 0.004f, z = -0.6f;  // nearer than the focus: a bokeh ~12 px across
+  Scene scene;
+  scene.materials = {testing::unlit_material(Rgb(1.f))};
+  scene.meshes.push_back(
+      testing::make_quad("dot", 0, {-h, -h, z}, {h, -h, z}, {h, h, z}, {-h, h, z}));
+  scene.instances = {testing::make_instance("dot", 0)};
+  FrameSettings settings{.renderer = renderer_named("direct"), .samples_per_pixel = 16};
+  settings.reyes.pixel_samples = 16;
+  const Image traced = render_frame(scene, camera, settings, false).finished();
+  settings.renderer = renderer_named("reyes");
+  const Image reyes = render_frame(scene, camera, settings, false).finished();
+  const double one_sample = camera.exposure_scale() / 16;
+  int differ = 0, lit = 0;
+  for (int y = 0; y < kSize; ++y)
+    for (int x = 0; x < kSize; ++x) {
+      const double d = std::abs(double(reyes.at(x, y, 0)) - traced.at(x, y, 0));
+      EXPECT_LE(d, one_sample * 1.001);
+      differ += d > 1e-6;
+      lit += traced.at(x, y, 0) > 0;
+    }
+  std::printf("bokeh: %d of %d lit pixels differ from the tracer's\n", differ, lit);
+  EXPECT_GT(lit, 100);
+  EXPECT_LE(differ, lit / 100 + 1);
 }
 
 // A small white square (3 px) off the focus plane images as the aperture: its spread (second
