@@ -32,19 +32,43 @@ bool owns(Point2d u, Point2d v, bool reversed) {
   return dy > 0 || (dy == 0 && dx < 0);
 }
 
-bool inside(Point2d a, Point2d b, Point2d c, double px, double py, double w[3]) {
-  double area = edge(a, b, c.x, c.y);
-  if (area == 0 || !std::isfinite(area)) return false;
-  double e0 = edge(b, c, px, py), e1 = edge(c, a, px, py), e2 = edge(a, b, px, py);
-  const bool reversed = area < 0;
-  if (reversed) area = -area, e0 = -e0, e1 = -e1, e2 = -e2;
-  if (e0 < 0 || e1 < 0 || e2 < 0) return false;
-  if ((e0 == 0 && !owns(b, c, reversed)) || (e1 == 0 && !owns(c, a, reversed)) ||
-      (e2 == 0 && !owns(a, b, reversed)))
-    return false;
-  w[0] = e0 / area, w[1] = e1 / area, w[2] = e2 / area;
+}  // namespace
+
+// A micropolygon triangle set up for many samples: its edges in canonical order (the same
+// doubles edge() computes) with the sign that turns the triangle positive, and which of them
+// own a sample lying exactly on them.
+BucketHider::Triangle BucketHider::set_up(Point2d a, Point2d b, Point2d c) {
+  Triangle t;
+  t.area = edge(a, b, c.x, c.y);
+  t.valid = t.area != 0 && std::isfinite(t.area);
+  if (!t.valid) return t;
+  const bool reversed = t.area < 0;
+  if (reversed) t.area = -t.area;
+  const Point2d from[3] = {b, c, a}, to[3] = {c, a, b};
+  for (int k = 0; k < 3; ++k) {
+    const Point2d u = from[k], v = to[k];
+    const bool swap = v.x < u.x || (v.x == u.x && v.y < u.y);
+    const Point2d& p = swap ? v : u;
+    const Point2d& q = swap ? u : v;
+    t.edges[k] = {p.x, p.y, q.x - p.x, q.y - p.y, swap != reversed, owns(u, v, reversed)};
+  }
+  return t;
+}
+
+bool BucketHider::inside(const Triangle& t, double px, double py, double w[3]) {
+  if (!t.valid) return false;
+  double e[3];
+  for (int k = 0; k < 3; ++k) {
+    const Edge& d = t.edges[k];
+    const double f = d.dx * (py - d.y) - d.dy * (px - d.x);
+    e[k] = d.negate ? -f : f;
+    if (e[k] < 0 || (e[k] == 0 && !d.owned)) return false;
+  }
+  w[0] = e[0] / t.area, w[1] = e[1] / t.area, w[2] = e[2] / t.area;
   return true;
 }
+
+namespace {
 
 constexpr float kInfinity = std::numeric_limits<float>::infinity();
 
@@ -94,6 +118,11 @@ BucketHider::BucketHider(const FrameView& view, const CameraSampleOrder& order,
   opaque_hit_.assign(count, 0);
 }
 
+void BucketHider::set_up_quad(const Corner corners[4], Triangle triangles[2]) {
+  triangles[0] = set_up(corners[0].r, corners[1].r, corners[2].r);
+  triangles[1] = set_up(corners[0].r, corners[2].r, corners[3].r);
+}
+
 bool BucketHider::hides(double depth) {
   if (opaque_count_ < samples_.size()) return false;
   if (!farthest_known_) {
@@ -112,6 +141,7 @@ void BucketHider::sample(const Grid& g, HiderCounts& counts) {
   const int x_max = pixels_.max.x + crop_min_.x, y_max = pixels_.max.y + crop_min_.y;
   const int width = pixels_.width();
   Corner corners[4];
+  Triangle triangles[2];
   RasterBounds b_open, b_close;
   double slack = 0, k0 = 0, k1 = 0,
          lens_grow = 0;  // the thin lens's factor at the nearest and farthest depth
@@ -150,6 +180,7 @@ void BucketHider::sample(const Grid& g, HiderCounts& counts) {
         if (view_.defocused()) b.grow(lens_grow);
       }
       if (b.empty() || !b.overlaps(bounds_)) continue;
+      if (still) set_up_quad(corners, triangles);
       const int px0 = std::max(x_min, int(std::floor(b.x0 - margin_px_)));
       const int px1 = std::min(x_max - 1, int(std::floor(b.x1 + margin_px_)));
       const int py0 = std::max(y_min, int(std::floor(b.y0 - margin_px_)));
@@ -217,20 +248,22 @@ void BucketHider::sample(const Grid& g, HiderCounts& counts) {
                 }
                 corners[k] = {r, d};
               }
-            test(g, micropolygon, corners, index, uint32_t(s), sp, counts);
+            if (!still) set_up_quad(corners, triangles);
+            test(g, micropolygon, corners, triangles, index, uint32_t(s), sp, counts);
           }
         }
     }
 }
 
 void BucketHider::test(const Grid& g, uint32_t micropolygon, const Corner corners[4],
-                       const int index[4], uint32_t sample, const SamplePoint& s,
-                       HiderCounts& counts) {
+                       const Triangle triangles[2], const int index[4], uint32_t sample,
+                       const SamplePoint& s, HiderCounts& counts) {
   ++counts.tested;
   static constexpr int kTriangles[2][3] = {{0, 1, 2}, {0, 2, 3}};
-  for (const auto& t : kTriangles) {
+  for (int k = 0; k < 2; ++k) {
+    const int* t = kTriangles[k];
     double w[3];
-    if (!inside(corners[t[0]].r, corners[t[1]].r, corners[t[2]].r, s.x, s.y, w)) continue;
+    if (!inside(triangles[k], s.x, s.y, w)) continue;
     const double depth =
         w[0] * corners[t[0]].depth + w[1] * corners[t[1]].depth + w[2] * corners[t[2]].depth;
     if (!(depth >= view_.near_m() && depth <= view_.far_m())) return;

@@ -98,8 +98,21 @@ class BucketHider {
     double depth;
   };
 
-  void test(const Grid& grid, uint32_t micropolygon, const Corner corners[4], const int index[4],
-            uint32_t sample, const SamplePoint& s, HiderCounts& counts);
+  struct Edge {
+    double x = 0, y = 0, dx = 0, dy = 0;  // canonical start and direction
+    bool negate = false, owned = false;
+  };
+  struct Triangle {
+    Edge edges[3] = {};  // opposite corners 0, 1, 2
+    double area = 0;     // twice the area, positive
+    bool valid = false;
+  };
+  static Triangle set_up(Point2d a, Point2d b, Point2d c);
+  static void set_up_quad(const Corner corners[4], Triangle triangles[2]);
+  static bool inside(const Triangle& t, double px, double py, double w[3]);
+  void test(const Grid& grid, uint32_t micropolygon, const Corner corners[4],
+            const Triangle triangles[2], const int index[4], uint32_t sample, const SamplePoint& s,
+            HiderCounts& counts);
 
   const FrameView& view_;
   Bounds2i pixels_;
