@@ -14,6 +14,7 @@
 #include "obscura/raster/pipeline.h"
 #include "obscura/raster/scene_program.h"
 #include "obscura/scene/tangents.h"
+#include "obscura/shading/scene_lighting.h"
 
 namespace obscura::raster {
 
@@ -271,36 +272,23 @@ SceneRasterizer::SceneRasterizer(const Scene& scene, RasterSettings settings)
     for (const std::vector<Point3f>& step : mesh.deformation.positions)
       for (Point3f p : step) cover(p);
     instances_.push_back(std::move(c));
-    const Material& material = scene.materials[scene.material_of(instance)];
-    if (settings.surface_lights && !material.emission.is_black())
-      if (auto light = shading::surface_light(scene.meshes[instance.mesh], instance.world_from_object,
-                                     material.emission))
-        lights_.surface.push_back(*light);
   }
+  if (settings.surface_lights) shading::add_emissive_surface_lights(scene, lights_);
 
   if (scene.environment) {
     const Environment& env = *scene.environment;
     environment_scale_ = env.color * env.intensity;
     environment_from_world_ = inverse(env.world_from_environment);
-    Rgb mean = environment_scale_;
     if (env.texture >= 0) {
       const obscura::Texture& t = scene.textures[env.texture];
       environment_map_ = Image(t.width, t.height, 3);
-      Rgb sum;
-      double weight = 0;
-      for (int y = 0; y < t.height; ++y) {
-        // Rows of an equirectangular map cover solid angle ∝ sin θ.
-        float w = std::sin(kPi * (y + 0.5f) / t.height);
+      for (int y = 0; y < t.height; ++y)
         for (int x = 0; x < t.width; ++x) {
           Vector4f v = sample_texture(t, {(x + 0.5f) / t.width, (y + 0.5f) / t.height});
           environment_map_.set_rgb(x, y, {v.x, v.y, v.z});
-          sum += Rgb(v.x, v.y, v.z) * w;
         }
-        weight += double(w) * t.width;
-      }
-      mean = environment_scale_ * (sum / float(weight));
     }
-    lights_.ambient = mean;
+    lights_.ambient = shading::environment_mean_radiance(scene);
     environment_lighting_ = environment_map_.width > 0
                                 ? std::make_shared<const EnvironmentLighting>(
                                       environment_map_, environment_scale_, environment_from_world_)

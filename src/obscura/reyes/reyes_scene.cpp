@@ -4,6 +4,8 @@
 #include <cmath>
 #include <numbers>
 
+#include "obscura/shading/scene_lighting.h"
+
 namespace obscura::reyes {
 
 namespace {
@@ -25,37 +27,16 @@ ReyesScene::ReyesScene(const Scene& scene) : scene_(&scene), motion_(scene) {
   for (const Material& m : scene.materials)
     materials_.push_back(shading::compile_surface_material(m));
   shading::add_scene_lights(scene, lights_);
-  for (const Instance& instance : scene.instances) {
-    const Mesh& mesh = scene.meshes[instance.mesh];
-    moves_ = moves_ || instance.animated() || mesh.deforms();
-    const Material& material = scene.materials[scene.material_of(instance)];
-    if (!material.emission.is_black())
-      if (auto light = shading::surface_light(mesh, instance.world_from_object, material.emission))
-        lights_.surface.push_back(*light);
-  }
+  shading::add_emissive_surface_lights(scene, lights_);
+  lights_.ambient = shading::environment_mean_radiance(scene);
+  for (const Instance& instance : scene.instances)
+    moves_ = moves_ || instance.animated() || scene.meshes[instance.mesh].deforms();
   if (scene.environment) {
     const Environment& env = *scene.environment;
     environment_scale_ = env.color * env.intensity;
     environment_from_world_ = inverse(env.world_from_environment);
-    Rgb mean = environment_scale_;
-    if (env.texture >= 0 && scene.textures[size_t(env.texture)].width > 0) {
+    if (env.texture >= 0 && scene.textures[size_t(env.texture)].width > 0)
       environment_map_ = &scene.textures[size_t(env.texture)];
-      const Texture& t = *environment_map_;
-      // The mean radiance over the sphere: rows of an equirectangular map cover solid angle
-      // ∝ sin θ.
-      Rgb sum;
-      double weight = 0;
-      for (int y = 0; y < t.height; ++y) {
-        const float w = float(std::sin(kPi * (y + 0.5) / t.height));
-        for (int x = 0; x < t.width; ++x) {
-          const Vector4f v = sample_texture(t, {(x + 0.5f) / t.width, (y + 0.5f) / t.height});
-          sum += Rgb(v.x, v.y, v.z) * w;
-        }
-        weight += double(w) * t.width;
-      }
-      mean = environment_scale_ * (sum / float(weight));
-    }
-    lights_.ambient = mean;
   }
 }
 
