@@ -38,6 +38,7 @@ FrameRequest frame_request(const RenderOptions& o) {
   r.glare_strength = o.glare.strength;
   r.glare_radius_px = o.glare.radius_px;
   if (o.flare) r.flare = true;
+  request_reyes_options(o.reyes, r);
   return r;
 }
 
@@ -98,6 +99,7 @@ void resolve_render_options(RenderOptions& options) {
   validate(options.tracer);
   validate(options.raster, options.tracer.renderer);
   validate(options.raster_effects, options.tracer.renderer);
+  validate(options.reyes, options.tracer.renderer);
 }
 
 Scene load_render_scene(RenderOptions& options, bool writes_output) {
@@ -187,6 +189,7 @@ FrameSettings frame_settings(const RenderOptions& options, const SceneRenderSett
       resolve_frame_request(frame_request(options), scene, options.tracer.renderer);
   settings.glare = finishing.glare;
   settings.flare = finishing.flare;
+  settings.reyes = finishing.reyes;
   return settings;
 }
 

@@ -70,9 +70,9 @@ std::string job_key(const CLI::App& render) {
 void print_summary(const RenderOptions& options, const Scene& scene, const RenderedFrame& frame,
                    const std::string& ranks, double rays, double seconds) {
   if (!frame.renderer.capabilities().takes_samples_per_pixel) {
-    std::fprintf(stderr, "rendered %s: %dx%d (raster%s) in %s%s\n", scene.name.c_str(),
-                 options.width, options.height, ranks.c_str(), format_seconds(seconds).c_str(),
-                 partial_note(frame.progress).c_str());
+    std::fprintf(stderr, "rendered %s: %dx%d (%s%s) in %s%s\n", scene.name.c_str(), options.width,
+                 options.height, frame.renderer.name(), ranks.c_str(),
+                 format_seconds(seconds).c_str(), partial_note(frame.progress).c_str());
   } else {
     std::fprintf(stderr, "rendered %s: %dx%d, %lld spp (%s%s) in %s (%.2f Mrays/s)%s\n",
                  scene.name.c_str(), options.width, options.height, frame.progress.done,
@@ -82,6 +82,8 @@ void print_summary(const RenderOptions& options, const Scene& scene, const Rende
                  : frame.time_limit_reached ? " [time limit reached]"
                                             : "");
   }
+  if (options.stats)
+    for (const std::string& line : frame.stats.details) std::fprintf(stderr, "%s\n", line.c_str());
   if (frame.finish.flare) {
     const FlareStats& f = frame.flare_stats;
     std::fprintf(stderr,
@@ -270,6 +272,10 @@ void add_frame_options(CLI::App& command, RenderOptions& o) {
   add_tracer_options(*render, options->tracer);
   add_raster_options(*render, options->raster);
   add_raster_effects_options(*render, options->raster_effects);
+  add_reyes_options(*render, options->reyes);
+  render->add_flag("--stats", options->stats,
+                   "Print the renderer's own counters after the summary (reyes: grids, "
+                   "micropolygons and their area, samples tested and hit, eye splits, peak grids)");
   add_glare_options(*render, options->glare);
   render->add_flag("--flare", options->flare,
                    "Ghost flares: the images of bright lights that reflections between a lens "

@@ -10,6 +10,7 @@
 #include "ground_truth_output.h"
 #include "raster_effects_options.h"
 #include "raster_options.h"
+#include "reyes_options.h"
 #include "scene_choice_options.h"
 #include "sensor_options.h"
 #include "tracer_options.h"
@@ -37,8 +38,10 @@ struct RenderOptions {
   TracerOptions tracer;
   RasterOptions raster;
   RasterEffectsOptions raster_effects;
+  ReyesOptions reyes;  // --reyes-*
   GlareOptions glare;               // --glare, --glare-strength, --glare-radius
   bool flare = false;               // --flare: ghost flares of a lens-system camera
+  bool stats = false;               // --stats: the renderer's own counters after the summary
   GroundTruthOptions ground_truth;  // --ground-truth, --flow-times
   std::string display_server;       // --display-server HOST:PORT: push the frame to tev
   SensorOptions sensor;  // --raw-sensor, --metering, --exposure-mode auto (docs/sensor.md)

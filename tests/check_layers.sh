@@ -16,7 +16,8 @@ declare -A allowed=(
   [io]="io scene film color math camera sensor"
   [trace]="trace math color camera scene film shading"
   [raster]="raster math color camera scene film shading"
-  [render]="render math color camera scene shading film sensor io trace raster"
+  [reyes]="reyes math color camera scene film shading"
+  [render]="render math color camera scene shading film sensor io trace raster reyes"
 )
 
 status=0

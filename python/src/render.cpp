@@ -87,16 +87,16 @@ RenderResult result_of(RenderOutcome&& outcome, const std::vector<std::string>& 
   throw py::error_already_set();
 }
 
-RenderResult render_frame_py(const py::object& scene_or_session, std::optional<Camera> camera,
-                             const std::string& renderer, std::optional<int> spp,
-                             const std::vector<std::string>& aov_names, int threads,
-                             std::optional<uint64_t> seed, const std::string& sampler,
-                             int max_depth, double time_limit, const py::object& progress, int msaa,
-                             const std::string& shading, bool cull, bool wireframe, int shadow_map,
-                             const std::string& raster_dof, int raster_samples,
-                             std::optional<bool> spectral, bool glare,
-                             std::optional<double> glare_strength, std::optional<int> glare_radius,
-                             std::optional<bool> flare) {
+RenderResult render_frame_py(
+    const py::object& scene_or_session, std::optional<Camera> camera, const std::string& renderer,
+    std::optional<int> spp, const std::vector<std::string>& aov_names, int threads,
+    std::optional<uint64_t> seed, const std::string& sampler, int max_depth, double time_limit,
+    const py::object& progress, int msaa, const std::string& shading, bool cull, bool wireframe,
+    int shadow_map, const std::string& raster_dof, int raster_samples, std::optional<bool> spectral,
+    bool glare, std::optional<double> glare_strength, std::optional<int> glare_radius,
+    std::optional<bool> flare, std::optional<double> reyes_shading_rate,
+    std::optional<int> reyes_grid_size, std::optional<int> reyes_bucket_size,
+    std::optional<int> reyes_pixel_samples, std::optional<int> reyes_eye_splits) {
   static const std::set<std::string> known{"albedo", "normal", "depth", "range", "id"};
   for (const std::string& name : aov_names)
     if (!known.count(name))
@@ -119,7 +119,12 @@ RenderResult render_frame_py(const py::object& scene_or_session, std::optional<C
                                   .glare = glare,
                                   .glare_strength = glare_strength,
                                   .glare_radius_px = glare_radius,
-                                  .flare = flare},
+                                  .flare = flare,
+                                  .reyes_shading_rate = reyes_shading_rate,
+                                  .reyes_grid_size = reyes_grid_size,
+                                  .reyes_bucket_size = reyes_bucket_size,
+                                  .reyes_pixel_samples = reyes_pixel_samples,
+                                  .reyes_eye_splits = reyes_eye_splits},
                         .sampler = sampler,
                         .max_depth = max_depth,
                         .time_limit_s = time_limit,
@@ -255,11 +260,14 @@ void bind_render(py::module_& m) {
         py::arg("shadow_map") = 1024, py::arg("raster_dof") = "accumulate",
         py::arg("raster_samples") = 32, py::arg("spectral") = py::none(), py::arg("glare") = false,
         py::arg("glare_strength") = py::none(), py::arg("glare_radius") = py::none(),
-        py::arg("flare") = py::none(),
+        py::arg("flare") = py::none(), py::arg("reyes_shading_rate") = py::none(),
+        py::arg("reyes_grid_size") = py::none(), py::arg("reyes_bucket_size") = py::none(),
+        py::arg("reyes_pixel_samples") = py::none(), py::arg("reyes_eye_splits") = py::none(),
         "Renders `camera` (default: the scene's camera) over `scene` (a Scene, or a "
         "RenderSession that keeps what it compiled for the next call) and returns a "
         "RenderResult whose .image is float32 (H, W, 3) linear RGB without a copy of the film. "
-        "renderer: 'path', 'whitted', 'direct' or 'raster'; spp: samples per pixel (default: "
+        "renderer: 'path', 'whitted', 'direct', 'raster' or 'reyes'; spp: samples per pixel "
+        "(default: "
         "the scene file's render.spp, else 32, as `obscura render`); aovs: any of 'albedo' "
         "(tracer only), 'normal', 'depth' (along the optical axis), 'range' (along the ray), "
         "'id'; threads: 0 = all cores (the image is the same for any count); seed, sampler "
@@ -273,7 +281,9 @@ void bind_render(py::module_& m) {
         "(texels, 0: none), raster_dof ('off', 'accumulate', 'post') and raster_samples "
         "(frames accumulated for depth of field and motion blur). Finishing, as on `obscura "
         "render`: spectral (path tracer), glare / glare_strength / glare_radius (diffraction "
-        "glare), flare (ghost flares of a lens-system camera); each not given is the scene "
+        "glare), flare (ghost flares of a lens-system camera); REYES's knobs, as on `obscura "
+        "render --renderer reyes`: reyes_shading_rate, reyes_grid_size, reyes_bucket_size, "
+        "reyes_pixel_samples, reyes_eye_splits; each not given is the scene "
         "file's render block's, as seed is. Every renderer goes through the library's "
         "render_frame and every frame is finished by its finish_frame, as the CLI's are, so the "
         "images are the CLI's bit for bit.");

@@ -57,6 +57,7 @@ FrameSettings frame_settings(const RenderRequest& r, const SceneRenderSettings& 
   s.raster.shadow_map_size = r.shadow_map;
   s.raster.depth_of_field = depth_of_field_named(r.raster_dof);
   s.raster.effect_samples = r.raster_samples;
+  s.reyes = frame.reyes;
   return s;
 }
 

@@ -16,7 +16,7 @@
 namespace obscura::python {
 
 struct RenderRequest {
-  std::string renderer = "path";  // path | whitted | direct | raster
+  std::string renderer = "path";  // path | whitted | direct | raster | reyes
   // What the frame is beyond the camera, each given or not (render/frame_request.h): samples,
   // seed, spectral, glare, flare; the scene file's render block fills in the rest.
   FrameRequest frame;

@@ -47,6 +47,8 @@ CASES = [
     ("post_dof_raster", "depth-of-field", {}, {"renderer": "raster", "raster-dof": "post"}),
     ("accumulated_dof_raster", "depth-of-field", {},
      {"renderer": "raster", "raster-dof": "accumulate", "raster-samples": 4}),
+    ("motion_blur_dof_reyes", "motion-blur", {"fstop": 2.8, "focus_distance": 4},
+     {"renderer": "reyes", "reyes-pixel-samples": 4, "reyes-bucket-size": 8}),
 ]
 
 

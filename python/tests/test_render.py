@@ -18,7 +18,7 @@ def small_scene_camera(width=48, height=36):
     return scene, camera
 
 
-@pytest.mark.parametrize("renderer", ["path", "direct", "whitted", "raster"])
+@pytest.mark.parametrize("renderer", ["path", "direct", "whitted", "raster", "reyes"])
 def test_render_is_bit_identical_to_the_cli(cli, tmp_path, renderer):
     out = tmp_path / "cli.exr"
     cli("render", "cornell-box", "--renderer", renderer, "--width", 48, "--height", 36,
@@ -34,6 +34,20 @@ def test_render_is_bit_identical_to_the_cli(cli, tmp_path, renderer):
     assert from_cli.shape == (36, 48, 3)
     assert np.array_equal(from_python, from_cli)
     assert np.array_equal(result.image, from_cli)  # the film has no NaN, so nothing was altered
+
+
+def test_reyes_knobs_match_the_cli(cli, tmp_path):
+    out = tmp_path / "cli.exr"
+    cli("render", "cornell-box", "--renderer", "reyes", "--width", 48, "--height", 36,
+        "--reyes-shading-rate", 2, "--reyes-pixel-samples", 4, "--reyes-bucket-size", 8,
+        "--seed", 3, "-q", "-o", out)
+    from_cli, _, _ = obscura.read_exr(str(out))
+    scene, camera = small_scene_camera()
+    result = obscura.render(scene, camera, renderer="reyes", seed=3, reyes_shading_rate=2,
+                            reyes_pixel_samples=4, reyes_bucket_size=8)
+    assert np.array_equal(result.image, from_cli)
+    with pytest.raises(obscura.Error, match="shading-rate"):
+        obscura.render(scene, camera, renderer="reyes", reyes_shading_rate=0)
 
 
 def test_raster_options_and_aovs_match_the_cli(cli, tmp_path):

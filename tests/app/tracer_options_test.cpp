@@ -31,7 +31,7 @@ TEST_F(TracerCli, EveryRendererRenders) {
 TEST_F(TracerCli, UnknownRendererOrSamplerIsAUsageError) {
   auto r = test::run_cli("render --renderer photon -o " + path("r.png"));
   EXPECT_EQ(r.exit_code, 2);
-  EXPECT_NE(r.output.find("--renderer must be path, whitted, direct or raster; got 'photon'"),
+  EXPECT_NE(r.output.find("--renderer must be path, whitted, direct, raster or reyes; got 'photon'"),
             std::string::npos)
       << r.output;
   r = test::run_cli("render --sampler halton -o " + path("r.png"));

@@ -75,14 +75,15 @@ TEST(RenderFrame, RenderersAreParsedByName) {
     EXPECT_EQ(parse_renderer(r.name()), r);
     names.push_back(r.name());
   }
-  EXPECT_EQ(names, (std::vector<std::string>{"path", "whitted", "direct", "raster"}));
+  EXPECT_EQ(names, (std::vector<std::string>{"path", "whitted", "direct", "raster", "reyes"}));
   EXPECT_EQ(Renderer(), renderer_named("path"));  // the default
-  EXPECT_EQ(renderer_names(), "path, whitted, direct or raster");
+  EXPECT_EQ(renderer_names(), "path, whitted, direct, raster or reyes");
   EXPECT_FALSE(parse_renderer("Path"));
   EXPECT_FALSE(parse_renderer(""));
-  EXPECT_THROW(renderer_named("reyes"), Error);
+  EXPECT_THROW(renderer_named("Reyes"), Error);
   EXPECT_EQ(renderer_named("path").capabilities().tile_size, 16);
   EXPECT_EQ(renderer_named("raster").capabilities().tile_size, 64);
+  EXPECT_EQ(renderer_named("reyes").capabilities().tile_size, 64);
   EXPECT_TRUE(renderer_named("path").capabilities().spectral);
   EXPECT_FALSE(renderer_named("whitted").capabilities().spectral);
 }

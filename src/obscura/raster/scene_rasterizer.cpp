@@ -14,6 +14,7 @@
 #include "obscura/raster/pipeline.h"
 #include "obscura/raster/scene_program.h"
 #include "obscura/scene/tangents.h"
+#include "obscura/shading/scene_lighting.h"
 
 namespace obscura::raster {
 
@@ -152,60 +153,6 @@ std::vector<bool> used_textures(const Scene& scene) {
   return used;
 }
 
-// An emissive instance as one SurfaceLight (at its time-0 pose): at the area-weighted centroid;
-// flat emitters (all faces within ~2.5° of one normal) emit a cosine lobe, others uniformly.
-std::optional<SurfaceLight> surface_light(const Mesh& mesh, const Transform& world_from_object,
-                                          Rgb radiance) {
-  double area = 0;
-  Vector3d centroid, normal_sum;
-  for (size_t t = 0; t + 2 < mesh.indices.size(); t += 3) {
-    Point3f p[3];
-    for (int k = 0; k < 3; ++k) p[k] = world_from_object(mesh.positions[mesh.indices[t + k]]);
-    Vector3f n = cross(p[1] - p[0], p[2] - p[0]) * 0.5f;
-    double a = length(n);
-    area += a;
-    normal_sum += Vector3d(n.x, n.y, n.z);
-    centroid +=
-        Vector3d(p[0].x + p[1].x + p[2].x, p[0].y + p[1].y + p[2].y, p[0].z + p[1].z + p[2].z) *
-        (a / 3);
-  }
-  if (area <= 0) return std::nullopt;
-  if (world_from_object.swaps_handedness()) normal_sum = -normal_sum;
-  centroid = centroid / area;
-  SurfaceLight light;
-  light.position = Point3f(float(centroid.x), float(centroid.y), float(centroid.z));
-  double flatness = length(normal_sum) / area;  // 1 for a flat emitter
-  light.one_sided = flatness > 0.999;
-  if (light.one_sided) {
-    Vector3d n = normal_sum / length(normal_sum);
-    light.normal = Vector3f(float(n.x), float(n.y), float(n.z));
-    light.intensity = radiance * float(area);
-    light.radius2 = float(area / std::numbers::pi);
-  } else {
-    light.intensity = radiance * float(area / 4);
-    light.radius2 = float(area / (4 * std::numbers::pi));
-  }
-  return light;
-}
-
-void compile_lights(const Scene& scene, LightSet& lights) {
-  for (const Light& light : scene.lights) {
-    std::visit(
-        [&](const auto& l) {
-          using T = std::decay_t<decltype(l)>;
-          if constexpr (std::is_same_v<T, obscura::PointLight>) {
-            lights.point.push_back({l.position, l.intensity});
-          } else if constexpr (std::is_same_v<T, obscura::SpotLight>) {
-            lights.spot.push_back({l.position, normalize(l.direction), l.intensity,
-                                   std::cos(l.inner_cone_radians), std::cos(l.outer_cone_radians)});
-          } else {
-            lights.directional.push_back({-normalize(l.direction), l.irradiance});
-          }
-        },
-        light.model);
-  }
-}
-
 Matrix4 to_matrix(const Transform& t) {
   return t.matrix();
 }
@@ -300,7 +247,7 @@ SceneRasterizer::SceneRasterizer(const Scene& scene, RasterSettings settings)
   for (const Material& m : scene.materials)
     materials_.push_back(compile_material(m, texture_table_.get()));
 
-  compile_lights(scene, lights_);
+  shading::add_scene_lights(scene, lights_);
   for (const Instance& instance : scene.instances) {
     CompiledInstance c{instance.mesh, scene.material_of(instance), instance.world_from_object, {}};
     if (instance.animated()) {
@@ -325,36 +272,23 @@ SceneRasterizer::SceneRasterizer(const Scene& scene, RasterSettings settings)
     for (const std::vector<Point3f>& step : mesh.deformation.positions)
       for (Point3f p : step) cover(p);
     instances_.push_back(std::move(c));
-    const Material& material = scene.materials[scene.material_of(instance)];
-    if (settings.surface_lights && !material.emission.is_black())
-      if (auto light = surface_light(scene.meshes[instance.mesh], instance.world_from_object,
-                                     material.emission))
-        lights_.surface.push_back(*light);
   }
+  if (settings.surface_lights) shading::add_emissive_surface_lights(scene, lights_);
 
   if (scene.environment) {
     const Environment& env = *scene.environment;
     environment_scale_ = env.color * env.intensity;
     environment_from_world_ = inverse(env.world_from_environment);
-    Rgb mean = environment_scale_;
     if (env.texture >= 0) {
       const obscura::Texture& t = scene.textures[env.texture];
       environment_map_ = Image(t.width, t.height, 3);
-      Rgb sum;
-      double weight = 0;
-      for (int y = 0; y < t.height; ++y) {
-        // Rows of an equirectangular map cover solid angle ∝ sin θ.
-        float w = std::sin(kPi * (y + 0.5f) / t.height);
+      for (int y = 0; y < t.height; ++y)
         for (int x = 0; x < t.width; ++x) {
           Vector4f v = sample_texture(t, {(x + 0.5f) / t.width, (y + 0.5f) / t.height});
           environment_map_.set_rgb(x, y, {v.x, v.y, v.z});
-          sum += Rgb(v.x, v.y, v.z) * w;
         }
-        weight += double(w) * t.width;
-      }
-      mean = environment_scale_ * (sum / float(weight));
     }
-    lights_.ambient = mean;
+    lights_.ambient = shading::environment_mean_radiance(scene);
     environment_lighting_ = environment_map_.width > 0
                                 ? std::make_shared<const EnvironmentLighting>(
                                       environment_map_, environment_scale_, environment_from_world_)

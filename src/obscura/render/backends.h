@@ -12,5 +12,7 @@ const RendererBackend& whitted_backend();
 const RendererBackend& direct_lighting_backend();
 // render/raster_backend.cpp: the software rasterizer.
 const RendererBackend& rasterizer_backend();
+// render/reyes_backend.cpp: REYES micropolygons.
+const RendererBackend& reyes_backend();
 
 }  // namespace obscura

@@ -23,6 +23,13 @@ ResolvedFrameRequest resolve_frame_request(const FrameRequest& request,
     r.glare = glare;
   }
   if (request.flare.value_or(scene.flare.value_or(false))) r.flare = FlareSettings{};
+  // REYES's knobs come from the caller alone (the scene file's render block has none yet).
+  const reyes::ReyesSettings defaults;
+  r.reyes.shading_rate = request.reyes_shading_rate.value_or(defaults.shading_rate);
+  r.reyes.grid_size = request.reyes_grid_size.value_or(defaults.grid_size);
+  r.reyes.bucket_size = request.reyes_bucket_size.value_or(defaults.bucket_size);
+  r.reyes.pixel_samples = request.reyes_pixel_samples.value_or(defaults.pixel_samples);
+  r.reyes.eye_splits = request.reyes_eye_splits.value_or(defaults.eye_splits);
   return r;
 }
 

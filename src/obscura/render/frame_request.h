@@ -10,6 +10,7 @@
 #include "obscura/film/glare.h"
 #include "obscura/render/lens_flare.h"
 #include "obscura/render/renderer.h"
+#include "obscura/reyes/reyes_settings.h"
 #include "obscura/scene/scene.h"
 
 namespace obscura {
@@ -25,6 +26,10 @@ struct FrameRequest {
   std::optional<double> glare_strength = std::nullopt;  // implies glare
   std::optional<int> glare_radius_px = std::nullopt;
   std::optional<bool> flare = std::nullopt;
+  // REYES's knobs (--reyes-*; Python's reyes_* arguments).
+  std::optional<double> reyes_shading_rate = std::nullopt;
+  std::optional<int> reyes_grid_size = std::nullopt, reyes_bucket_size = std::nullopt,
+                     reyes_pixel_samples = std::nullopt, reyes_eye_splits = std::nullopt;
 };
 
 struct ResolvedFrameRequest {
@@ -33,6 +38,7 @@ struct ResolvedFrameRequest {
   bool spectral = false;
   std::optional<GlareSettings> glare;
   std::optional<FlareSettings> flare;
+  reyes::ReyesSettings reyes;  // its knobs; the rest of it is FrameSettings'
 };
 
 // The request over the scene file's render settings over the defaults. The scene's wish for

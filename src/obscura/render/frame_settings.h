@@ -15,6 +15,7 @@
 #include "obscura/raster/render_settings.h"
 #include "obscura/render/lens_flare.h"
 #include "obscura/render/renderer.h"
+#include "obscura/reyes/reyes_settings.h"
 
 namespace obscura {
 
@@ -34,6 +35,9 @@ struct FrameSettings {
   WorkShare share = {};                       // MPI/--shard parts; default alone
   // The rasterizer's own settings; its seed, time limit, cancel and share are the ones above.
   raster::RenderSettings raster = {};
+  // REYES's own settings (shading rate, grid and bucket size, pixel samples, eye splits); its
+  // seed, sampler, time limit, cancel and share are the ones above.
+  reyes::ReyesSettings reyes = {};
   // Finishing (render/frame_finish.h), prepared by RenderSession::render's RenderedFrame:
   // diffraction glare (a perspective or lens-system camera) and ghost flares (a lens system).
   std::optional<GlareSettings> glare = std::nullopt;
@@ -46,6 +50,9 @@ struct FrameStats {
   int done = 0, requested = 0;  // in the renderer's progress unit (RendererCapabilities)
   bool cancelled = false, time_limited = false;  // partial = cancelled || time_limited
   std::vector<std::string> warnings;
+  // A renderer's own counters, one "name: value" a line (REYES: grids, micropolygons, …), for
+  // the command line's --stats.
+  std::vector<std::string> details;
   // Post-process depth of field (the rasterizer's --raster-dof post): what finishing blurs the
   // film with; the film the renderer fills is sharp.
   std::optional<raster::PostDepthOfFieldInputs> post_dof;

@@ -15,6 +15,7 @@ std::span<const Renderer> renderers() {
       Renderer(whitted_backend()),
       Renderer(direct_lighting_backend()),
       Renderer(rasterizer_backend()),
+      Renderer(reyes_backend()),
   };
   return table;
 }
