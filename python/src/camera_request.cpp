@@ -21,7 +21,10 @@ using Triple = std::optional<std::vector<double>>;
 Text triple_text(const Triple& v) {
   if (!v) return std::nullopt;
   std::string text;
-  for (double x : *v) text += (text.empty() ? "" : ",") + number_text(x);
+  for (double x : *v) {
+    if (!text.empty()) text += ',';  // appended, not "," + …: GCC 12 warns falsely on that
+    text += number_text(x);
+  }
   return text;
 }
 
