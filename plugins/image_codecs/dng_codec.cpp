@@ -57,15 +57,6 @@ bool cfa_colours(const std::string& name, uint8_t colours[4]) {
   return true;
 }
 
-std::string now_as_tiff_date() {
-  std::time_t t = std::time(nullptr);
-  std::tm local{};
-  localtime_r(&t, &local);
-  char text[20];
-  std::strftime(text, sizeof text, "%Y:%m:%d %H:%M:%S", &local);
-  return text;
-}
-
 }  // namespace
 
 std::vector<unsigned char> encode_dng(const EncodeRequest& request) {

@@ -129,15 +129,6 @@ class TiffDecoder final : public StoredImageDecoder {
   bool supported_ = false;
 };
 
-std::string now_as_tiff_date() {
-  std::time_t t = std::time(nullptr);
-  std::tm local{};
-  localtime_r(&t, &local);
-  char text[20];
-  std::strftime(text, sizeof text, "%Y:%m:%d %H:%M:%S", &local);
-  return text;
-}
-
 }  // namespace
 
 std::unique_ptr<ImageDecoder> open_tiff(EncodedBytes encoded) {

@@ -1,5 +1,7 @@
 #include "tiff_memory_stream.h"
 
+#include <ctime>
+
 #include <algorithm>
 #include <cstdarg>
 #include <cstdio>
@@ -88,6 +90,15 @@ TIFF* open_tiff_stream(TiffMemoryStream& stream, const char* mode, const std::st
                                 close_proc, size_proc, map_proc, unmap_proc, options);
   TIFFOpenOptionsFree(options);
   return tif;
+}
+
+std::string now_as_tiff_date() {
+  std::time_t t = std::time(nullptr);
+  std::tm local{};
+  localtime_r(&t, &local);
+  char text[20];
+  std::strftime(text, sizeof text, "%Y:%m:%d %H:%M:%S", &local);
+  return text;
 }
 
 }  // namespace obscura::codecs

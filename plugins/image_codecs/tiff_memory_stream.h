@@ -21,4 +21,7 @@ struct TiffMemoryStream {
 // Opens `stream` ("r" or "w"); nullptr when libtiff refuses (the reason in stream.errors).
 TIFF* open_tiff_stream(TiffMemoryStream& stream, const char* mode, const std::string& name);
 
+// The local time now as TIFF's DateTime tag writes it ("YYYY:MM:DD HH:MM:SS").
+std::string now_as_tiff_date();
+
 }  // namespace obscura::codecs
