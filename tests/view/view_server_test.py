@@ -264,6 +264,11 @@ def test_many_clients_at_once(view):
 
 
 def test_memory_stays_bounded(view):
+    if os.environ.get("OBSCURA_SANITIZED") == "1":
+        # AddressSanitizer keeps freed blocks in a quarantine of up to 256 MiB to catch use after
+        # free, so resident memory grows by design there; the Release run measures the server.
+        print("  not measured under AddressSanitizer (its quarantine holds freed memory)")
+        return
     def round_of_moves(n):
         for i in range(n):
             view.move({"position": [0.278 + 0.01 * (i % 7), 0.273, -0.8], "target": [0.278, 0.273, 0.2]})
