@@ -192,12 +192,16 @@ bool write_png(PngWriter& w, const EncodeRequest& request, int bit_depth,
   }
   if (!text.empty()) png_set_text(w.png, w.info, text.data(), int(text.size()));
   // "png:compression" (an int, 0-9): zlib's level, for a caller that wants speed over size (the
-  // live view's frames); 1 and below also take the one cheap row filter instead of trying all.
+  // live view's frames); 1 takes the one cheap row filter instead of trying all, and 0 (stored,
+  // nothing to compress for) none.
   for (const HeaderAttribute& attribute : request.attributes)
     if (const int* level = std::get_if<int>(&attribute.value);
         level && attribute.name == "png:compression") {
       png_set_compression_level(w.png, std::clamp(*level, 0, 9));
-      if (*level <= 1) png_set_filter(w.png, PNG_FILTER_TYPE_BASE, PNG_FILTER_SUB);
+      if (*level <= 0)
+        png_set_filter(w.png, PNG_FILTER_TYPE_BASE, PNG_FILTER_NONE);
+      else if (*level == 1)
+        png_set_filter(w.png, PNG_FILTER_TYPE_BASE, PNG_FILTER_SUB);
     }
   png_write_info(w.png, w.info);
   if (bit_depth == 16) png_set_swap(w.png);

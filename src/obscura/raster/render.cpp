@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <chrono>
 #include <cstdio>
+#include <memory>
 #include <optional>
 #include <string>
 
@@ -11,6 +12,7 @@
 #include "obscura/raster/accumulation.h"
 #include "obscura/raster/depth_of_field_post.h"
 #include "obscura/raster/lens_warp.h"
+#include "obscura/raster/rasterizer_cache.h"
 #include "obscura/raster/rolling_shutter.h"
 #include "obscura/raster/vignetting_gain.h"
 
@@ -62,10 +64,19 @@ std::vector<Image> draw_frame(const SceneRasterizer& rasterizer, const Camera& c
   return {normal_image(target), depth_image(target), range_image(target, camera), id_image(target)};
 }
 
+// The scene prepared with `settings`: from `prepared` where given, else for this frame alone.
+std::shared_ptr<const SceneRasterizer> prepare(const Scene& scene, const RasterSettings& settings,
+                                               RasterizerCache* prepared) {
+  return prepared ? prepared->get(settings)
+                  : std::make_shared<const SceneRasterizer>(scene, settings);
+}
+
 // One sharp frame at mid-shutter (or band by band for a rolling shutter).
 RenderStats render_sharp(const Scene& scene, const Camera& camera, const RenderSettings& settings,
-                         Film& film, AovBuffers* aovs) {
-  SceneRasterizer rasterizer(scene, rasterizer_settings(settings, aovs != nullptr));
+                         Film& film, AovBuffers* aovs, RasterizerCache* prepared) {
+  const std::shared_ptr<const SceneRasterizer> kept =
+      prepare(scene, rasterizer_settings(settings, aovs != nullptr), prepared);
+  const SceneRasterizer& rasterizer = *kept;
   RenderStats stats;
   stats.warnings = rasterizer.warnings();
   auto draw = [&](const Camera& c, Film& f) {
@@ -91,7 +102,8 @@ RenderStats render_sharp(const Scene& scene, const Camera& camera, const RenderS
 // Accumulated frames through jittered lens points and shutter times (one when only the
 // post-process asks for effects), and the post-process's view depth.
 RenderStats render_effects(const Scene& scene, const Camera& camera, const RenderSettings& settings,
-                           Film& film, AovBuffers* aovs, const ProgressCallback& progress) {
+                           Film& film, AovBuffers* aovs, const ProgressCallback& progress,
+                           RasterizerCache* prepared) {
   const bool dof = camera.lens.depth_of_field;
   const bool post = settings.depth_of_field == DepthOfFieldMethod::kPost && dof;
   const bool lens_blur = settings.depth_of_field == DepthOfFieldMethod::kAccumulate && dof;
@@ -99,7 +111,9 @@ RenderStats render_effects(const Scene& scene, const Camera& camera, const Rende
   const bool many = lens_blur || has_motion_blur(camera, scene_moves(scene));
   const bool keep_aovs = aovs != nullptr || post;
 
-  SceneRasterizer rasterizer(scene, rasterizer_settings(settings, keep_aovs));
+  const std::shared_ptr<const SceneRasterizer> kept =
+      prepare(scene, rasterizer_settings(settings, keep_aovs), prepared);
+  const SceneRasterizer& rasterizer = *kept;
   AccumulationSettings accumulation{.samples = many ? settings.effect_samples : 1,
                                     .seed = settings.seed,
                                     .msaa_samples = settings.msaa_samples,
@@ -194,7 +208,8 @@ bool wants_effects(const Scene& scene, const Camera& camera, const RenderSetting
 }
 
 RenderStats render(const Scene& scene, const Camera& camera, const RenderSettings& settings,
-                   Film& film, AovBuffers* aovs, const ProgressCallback& progress) {
+                   Film& film, AovBuffers* aovs, const ProgressCallback& progress,
+                   RasterizerCache* prepared) {
   const auto start = Clock::now();
   const Bounds2i crop = camera.film.crop_pixels();
   if (film.width() != crop.width() || film.height() != crop.height())
@@ -211,8 +226,9 @@ RenderStats render(const Scene& scene, const Camera& camera, const RenderSetting
   std::optional<FittedLensCamera> fitted = fit_lens_system_camera(camera, unfitted);
   const Camera& drawn = fitted ? fitted->camera : camera;
   const bool effects = wants_effects(scene, drawn, settings);
-  RenderStats stats = effects ? render_effects(scene, drawn, settings, film, aovs, progress)
-                              : render_sharp(scene, drawn, settings, film, aovs);
+  RenderStats stats = effects
+                          ? render_effects(scene, drawn, settings, film, aovs, progress, prepared)
+                          : render_sharp(scene, drawn, settings, film, aovs, prepared);
   // Accumulated depth of field keeps or drops each lens point's frame per pixel at the barrel
   // (accumulate()): the cat-eye bokeh, and the barrel's light loss with it.
   const bool barrel_in_frames = effects && drawn.lens.depth_of_field &&

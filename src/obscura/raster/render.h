@@ -25,6 +25,8 @@
 
 namespace obscura::raster {
 
+class RasterizerCache;  // rasterizer_cache.h
+
 struct RenderStats {
   double seconds = 0;  // compiling the scene and drawing the frame(s)
   int frames = 0;      // frames drawn (accumulated)
@@ -53,8 +55,11 @@ bool wants_effects(const Scene& scene, const Camera& camera, const RenderSetting
 // Renders `camera` over `scene` into `film` (the camera's crop size) and, if given, `aovs` (the
 // same size): the normal, the distance along the pixel centre's ray and the instance id of the
 // frame nearest mid-shutter. The rasterizer has no albedo: `aovs` is replaced by buffers without
-// one. Throws obscura::Error for invalid settings or a film of another size.
+// one. With `prepared` (a cache over the same scene), the scene's preparation is taken from it
+// and kept there for the next frame. Throws obscura::Error for invalid settings or a film of
+// another size.
 RenderStats render(const Scene& scene, const Camera& camera, const RenderSettings& settings,
-                   Film& film, AovBuffers* aovs = nullptr, const ProgressCallback& progress = {});
+                   Film& film, AovBuffers* aovs = nullptr, const ProgressCallback& progress = {},
+                   RasterizerCache* prepared = nullptr);
 
 }  // namespace obscura::raster

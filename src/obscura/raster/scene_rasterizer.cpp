@@ -1,11 +1,14 @@
 #include "obscura/raster/scene_rasterizer.h"
 
 #include <algorithm>
+#include <atomic>
 #include <cmath>
 #include <limits>
 #include <numbers>
 #include <numeric>
 #include <variant>
+
+#include <tbb/parallel_for.h>
 
 #include "obscura/math/error.h"
 #include "obscura/math/safe_index.h"
@@ -76,14 +79,19 @@ void compile_mesh(const Mesh& mesh, int normal_map_uv_set, std::vector<MeshVerte
   }
 }
 
+// Hands `store` the scene texture's linear RGBA at each texel centre (x, y), rows in parallel.
+template <class Store>
+void for_each_texel(const obscura::Texture& t, Store&& store) {
+  tbb::parallel_for(0, t.height, [&](int y) {
+    for (int x = 0; x < t.width; ++x)
+      store(x, y, sample_texture(t, {(x + 0.5f) / t.width, (y + 0.5f) / t.height}));
+  });
+}
+
 // A scene texture decoded to linear RGB, mipmapped.
 Texture compile_texture(const obscura::Texture& t) {
   Image image(t.width, t.height, 3);
-  for (int y = 0; y < t.height; ++y)
-    for (int x = 0; x < t.width; ++x) {
-      Vector4f v = sample_texture(t, {(x + 0.5f) / t.width, (y + 0.5f) / t.height});
-      image.set_rgb(x, y, {v.x, v.y, v.z});
-    }
+  for_each_texel(t, [&](int x, int y, Vector4f v) { image.set_rgb(x, y, {v.x, v.y, v.z}); });
   return Texture(image, t.wrap_u, t.wrap_v);
 }
 
@@ -94,13 +102,11 @@ void mark_used(const TextureRef& ref, std::vector<bool>& used) {
 // A scene texture's alpha channel as a grey raster texture, or nothing where it is opaque.
 std::optional<Texture> compile_alpha_texture(const obscura::Texture& t) {
   Image image(t.width, t.height, 3);
-  bool translucent = false;
-  for (int y = 0; y < t.height; ++y)
-    for (int x = 0; x < t.width; ++x) {
-      float a = sample_texture(t, {(x + 0.5f) / t.width, (y + 0.5f) / t.height}).w;
-      translucent |= a < 1;
-      image.set_rgb(x, y, Rgb(a));
-    }
+  std::atomic<bool> translucent = false;
+  for_each_texel(t, [&](int x, int y, Vector4f v) {
+    if (v.w < 1) translucent.store(true, std::memory_order_relaxed);
+    image.set_rgb(x, y, Rgb(v.w));
+  });
   if (!translucent) return std::nullopt;
   return Texture(image, t.wrap_u, t.wrap_v);
 }
@@ -198,7 +204,8 @@ std::vector<Rgb> resolved_colors(const RenderTarget& target) {
 
 }  // namespace
 
-SceneRasterizer::SceneRasterizer(const Scene& scene, RasterSettings settings)
+SceneRasterizer::SceneRasterizer(const Scene& scene, RasterSettings settings,
+                                 std::shared_ptr<const Surfaces> share)
     : settings_(settings) {
   if (!is_valid_sample_count(settings.msaa_samples))
     throw Error("raster settings",
@@ -219,35 +226,7 @@ SceneRasterizer::SceneRasterizer(const Scene& scene, RasterSettings settings)
     if (scene.meshes[m].deforms()) deforming_.emplace(uint32_t(m), scene.meshes[m]);
   }
 
-  std::vector<bool> used = used_textures(scene);
-  auto table = std::make_shared<TextureTable>();
-  std::vector<const Texture*>& texture_of = table->color;
-  texture_of.assign(scene.textures.size(), nullptr);
-  textures_.reserve(scene.textures.size());
-  for (size_t t = 0; t < scene.textures.size(); ++t)
-    if (used[t] && scene.textures[t].width > 0 && scene.textures[t].height > 0)
-      textures_.push_back(compile_texture(scene.textures[t]));
-  for (size_t t = 0, k = 0; t < scene.textures.size(); ++t)
-    if (used[t] && scene.textures[t].width > 0 && scene.textures[t].height > 0)
-      texture_of[t] = &textures_[k++];
-  // Coverage textures, built first and pointed to after: the vector no longer reallocates.
-  std::vector<bool> coverage = alpha_channel_textures(scene);
-  std::vector<const Texture*>& alpha_of = table->alpha;
-  alpha_of.assign(scene.textures.size(), nullptr);
-  std::vector<int> alpha_index(scene.textures.size(), -1);
-  for (size_t t = 0; t < scene.textures.size(); ++t)
-    if (coverage[t] && scene.textures[t].width > 0 && scene.textures[t].height > 0)
-      if (std::optional<Texture> alpha = compile_alpha_texture(scene.textures[t])) {
-        alpha_index[t] = int(alpha_textures_.size());
-        alpha_textures_.push_back(std::move(*alpha));
-      }
-  for (size_t t = 0; t < scene.textures.size(); ++t)
-    if (alpha_index[t] >= 0) alpha_of[t] = &alpha_textures_[size_t(alpha_index[t])];
-  texture_table_ = std::move(table);
-  for (const Material& m : scene.materials)
-    materials_.push_back(compile_material(m, texture_table_.get()));
-
-  shading::add_scene_lights(scene, lights_);
+  surfaces_ = share ? std::move(share) : prepare_surfaces(scene);
   for (const Instance& instance : scene.instances) {
     CompiledInstance c{instance.mesh, scene.material_of(instance), instance.world_from_object, {}};
     if (instance.animated()) {
@@ -262,39 +241,101 @@ SceneRasterizer::SceneRasterizer(const Scene& scene, RasterSettings settings)
                             "); drawn at its time-0 pose");
       }
     }
+    instances_.push_back(std::move(c));
+  }
+  bounds_ = instance_bounds(scene);
+
+  gather_lights(scene);
+}
+
+std::shared_ptr<const SceneRasterizer::Surfaces> SceneRasterizer::prepare_surfaces(
+    const Scene& scene) {
+  auto prepared = std::make_shared<Surfaces>();
+  Surfaces& surfaces = *prepared;
+  std::vector<bool> used = used_textures(scene);
+  auto table = std::make_shared<TextureTable>();
+  std::vector<const Texture*>& texture_of = table->color;
+  texture_of.assign(scene.textures.size(), nullptr);
+  surfaces.textures.reserve(scene.textures.size());
+  for (size_t t = 0; t < scene.textures.size(); ++t)
+    if (used[t] && scene.textures[t].width > 0 && scene.textures[t].height > 0)
+      surfaces.textures.push_back(compile_texture(scene.textures[t]));
+  for (size_t t = 0, k = 0; t < scene.textures.size(); ++t)
+    if (used[t] && scene.textures[t].width > 0 && scene.textures[t].height > 0)
+      texture_of[t] = &surfaces.textures[k++];
+  // Coverage textures, built first and pointed to after: the vector no longer reallocates.
+  std::vector<bool> coverage = alpha_channel_textures(scene);
+  std::vector<const Texture*>& alpha_of = table->alpha;
+  alpha_of.assign(scene.textures.size(), nullptr);
+  std::vector<int> alpha_index(scene.textures.size(), -1);
+  for (size_t t = 0; t < scene.textures.size(); ++t)
+    if (coverage[t] && scene.textures[t].width > 0 && scene.textures[t].height > 0)
+      if (std::optional<Texture> alpha = compile_alpha_texture(scene.textures[t])) {
+        alpha_index[t] = int(surfaces.alpha_textures.size());
+        surfaces.alpha_textures.push_back(std::move(*alpha));
+      }
+  for (size_t t = 0; t < scene.textures.size(); ++t)
+    if (alpha_index[t] >= 0) alpha_of[t] = &surfaces.alpha_textures[size_t(alpha_index[t])];
+  surfaces.texture_table = std::move(table);
+  for (const Material& m : scene.materials)
+    surfaces.materials.push_back(compile_material(m, surfaces.texture_table.get()));
+
+  if (scene.environment) {
+    const Environment& env = *scene.environment;
+    surfaces.environment_scale = env.color * env.intensity;
+    surfaces.environment_from_world = inverse(env.world_from_environment);
+    if (env.texture >= 0) {
+      const obscura::Texture& t = scene.textures[env.texture];
+      Image& map = surfaces.environment_map = Image(t.width, t.height, 3);
+      for_each_texel(t, [&](int x, int y, Vector4f v) { map.set_rgb(x, y, {v.x, v.y, v.z}); });
+    }
+    surfaces.environment_lighting =
+        surfaces.environment_map.width > 0
+            ? std::make_shared<const EnvironmentLighting>(surfaces.environment_map,
+                                                          surfaces.environment_scale,
+                                                          surfaces.environment_from_world)
+            : std::make_shared<const EnvironmentLighting>(surfaces.environment_scale);
+  }
+  return prepared;
+}
+
+void SceneRasterizer::gather_lights(const Scene& scene) {
+  lights_ = {};
+  shading::add_scene_lights(scene, lights_);
+  if (settings_.surface_lights) shading::add_emissive_surface_lights(scene, lights_);
+  if (scene.environment) {
+    lights_.ambient = shading::environment_mean_radiance(scene);
+    lights_.environment = surfaces_->environment_lighting.get();
+  }
+}
+
+Bounds3f SceneRasterizer::instance_bounds(const Scene& scene) {
+  Bounds3f bounds;
+  for (const Instance& instance : scene.instances) {
     const Mesh& mesh = scene.meshes[instance.mesh];
     auto cover = [&](Point3f p) {
-      bounds_ = unite(bounds_, instance.world_from_object(p));
-      for (const TransformKey& k : instance.motion)
-        bounds_ = unite(bounds_, k.world_from_object(p));
+      bounds = unite(bounds, instance.world_from_object(p));
+      for (const TransformKey& k : instance.motion) bounds = unite(bounds, k.world_from_object(p));
     };
     for (Point3f p : mesh.positions) cover(p);
     for (const std::vector<Point3f>& step : mesh.deformation.positions)
       for (Point3f p : step) cover(p);
-    instances_.push_back(std::move(c));
   }
-  if (settings.surface_lights) shading::add_emissive_surface_lights(scene, lights_);
+  return bounds;
+}
 
-  if (scene.environment) {
-    const Environment& env = *scene.environment;
-    environment_scale_ = env.color * env.intensity;
-    environment_from_world_ = inverse(env.world_from_environment);
-    if (env.texture >= 0) {
-      const obscura::Texture& t = scene.textures[env.texture];
-      environment_map_ = Image(t.width, t.height, 3);
-      for (int y = 0; y < t.height; ++y)
-        for (int x = 0; x < t.width; ++x) {
-          Vector4f v = sample_texture(t, {(x + 0.5f) / t.width, (y + 0.5f) / t.height});
-          environment_map_.set_rgb(x, y, {v.x, v.y, v.z});
-        }
-    }
-    lights_.ambient = shading::environment_mean_radiance(scene);
-    environment_lighting_ = environment_map_.width > 0
-                                ? std::make_shared<const EnvironmentLighting>(
-                                      environment_map_, environment_scale_, environment_from_world_)
-                                : std::make_shared<const EnvironmentLighting>(environment_scale_);
-    lights_.environment = environment_lighting_.get();
+void SceneRasterizer::update_meshes(const Scene& scene, std::span<const uint32_t> meshes) {
+  for (uint32_t m : meshes) {
+    if (m >= scene.meshes.size() || m >= vertices_.size())
+      throw Error("raster", "a posed mesh index beyond the scene's meshes: " + std::to_string(m));
+    compile_mesh(scene.meshes[m], normal_map_uv_set_[m], vertices_[m], indices_[m]);
+    if (scene.meshes[m].deforms())
+      deforming_.insert_or_assign(m, scene.meshes[m]);
+    else
+      deforming_.erase(m);
   }
+  bounds_ = instance_bounds(scene);
+  gather_lights(scene);  // an emissive mesh's surface light moves with it
 }
 
 std::pair<const std::vector<MeshVertex>*, const std::vector<uint32_t>*> SceneRasterizer::mesh_at(
@@ -318,8 +359,8 @@ RenderTarget SceneRasterizer::make_target(const Camera& camera) const {
 
 void SceneRasterizer::draw_background(const Matrix4& world_from_clip, RenderTarget& target,
                                       float exposure) const {
-  if (environment_map_.width == 0) {
-    target.clear(environment_scale_ * exposure);
+  if (surfaces_->environment_map.width == 0) {
+    target.clear(surfaces_->environment_scale * exposure);
     return;
   }
   target.clear();
@@ -332,14 +373,15 @@ void SceneRasterizer::draw_background(const Matrix4& world_from_clip, RenderTarg
       Vector4d b = world_from_clip * Vector4d(nx, ny, 0, 1);
       Vector3f d(float(b.x / b.w - a.x / a.w), float(b.y / b.w - a.y / a.w),
                  float(b.z / b.w - a.z / a.w));
-      Vector3f l = normalize(environment_from_world_(d));
+      Vector3f l = normalize(surfaces_->environment_from_world(d));
       // The tracer's equirectangular mapping: u = 0.5 along −Z, growing towards +X; v = θ/π.
       float theta = std::atan2(std::sqrt(l.x * l.x + l.z * l.z), l.y);
       float u = 0.5f + std::atan2(l.x, -l.z) / (2 * kPi);
       u -= std::floor(u);
-      int tx = cell_index(u * environment_map_.width, environment_map_.width);
-      int ty = cell_index(theta / kPi * environment_map_.height, environment_map_.height);
-      Rgb c = environment_map_.rgb(tx, ty) * environment_scale_ * exposure;
+      int tx = cell_index(u * surfaces_->environment_map.width, surfaces_->environment_map.width);
+      int ty = cell_index(theta / kPi * surfaces_->environment_map.height,
+                          surfaces_->environment_map.height);
+      Rgb c = surfaces_->environment_map.rgb(tx, ty) * surfaces_->environment_scale * exposure;
       for (int s = 0; s < target.samples(); ++s) target.set_color(target.sample_index(x, y, s), c);
     }
   });
@@ -350,7 +392,7 @@ ShadowMap SceneRasterizer::render_shadow_map(const Matrix4& clip_from_world, flo
   ShadowMap map(clip_from_world, settings_.shadow_map_size, texel_world, perspective);
   for (const CompiledInstance& instance : instances_) {
     const Matrix4f clip_from_object(clip_from_world * world_from_object(instance, time_s).matrix());
-    const SurfaceMaterial& material = materials_[instance.material];
+    const SurfaceMaterial& material = surfaces_->materials[instance.material];
     std::vector<MeshVertex> scratch;
     std::vector<uint32_t> scratch_indices;
     auto [vertices, indices] = mesh_at(instance.mesh, time_s, scratch, scratch_indices);
@@ -425,7 +467,7 @@ void SceneRasterizer::render_frame(const Camera& camera, const RasterFrame& fram
   // over everything.
   std::vector<size_t> blended, transmissive;
   for (size_t i = 0; i < instances_.size(); ++i) {
-    const SurfaceMaterial& m = materials_[instances_[i].material];
+    const SurfaceMaterial& m = surfaces_->materials[instances_[i].material];
     if (m.alpha_mode == AlphaMode::kBlend) {
       blended.push_back(i);
     } else if (m.transmits()) {
@@ -449,7 +491,7 @@ void SceneRasterizer::draw_instance(RenderTarget& target, const InstanceUniforms
                                     std::span<const uint32_t> sorted) const {
   const CompiledInstance& instance = instances_[i];
   const Transform world_from_object = this->world_from_object(instance, time_s);
-  const SurfaceMaterial& material = materials_[instance.material];
+  const SurfaceMaterial& material = surfaces_->materials[instance.material];
   InstanceUniforms u = base;
   u.clip_from_object = Matrix4f(clip_from_world * to_matrix(world_from_object));
   u.world_from_object = Matrix4f(world_from_object.matrix());

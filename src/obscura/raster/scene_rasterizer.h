@@ -48,6 +48,8 @@ struct RasterSettings {
   bool surface_lights = true;  // emissive instances light the scene as SurfaceLights
   // Texels per side of each directional and spot light's shadow map; 0: no shadows.
   int shadow_map_size = 1024;
+
+  bool operator==(const RasterSettings&) const = default;
 };
 
 // One frame's camera. Unset matrices come from the camera at `time_s`.
@@ -59,8 +61,29 @@ struct RasterFrame {
 
 class SceneRasterizer {
  public:
-  // Throws obscura::Error for an invalid scene or settings (MSAA not 1, 4 or 8).
-  explicit SceneRasterizer(const Scene& scene, RasterSettings settings = {});
+  // What no setting changes: the textures mipmapped, the materials reading them, the environment
+  // as background and image-based lighting — the costly part of preparing a textured scene,
+  // shared by rasterizers of one scene prepared with different settings.
+  struct Surfaces {
+    std::vector<Texture> textures;        // the used scene textures
+    std::vector<Texture> alpha_textures;  // the alpha channels some material reads
+    // Both by scene texture index, which `materials` point to.
+    std::shared_ptr<const TextureTable> texture_table;
+    std::vector<SurfaceMaterial> materials;
+    // Background: an equirectangular radiance map (empty: constant) times a colour.
+    Image environment_map;
+    Rgb environment_scale;
+    Transform environment_from_world;
+    // Its image-based lighting, which the lights' environment points to.
+    std::shared_ptr<const EnvironmentLighting> environment_lighting;
+  };
+
+  // Throws obscura::Error for an invalid scene or settings (MSAA not 1, 4 or 8). `share`: the
+  // surfaces of another rasterizer of the same scene, taken instead of preparing them again.
+  explicit SceneRasterizer(const Scene& scene, RasterSettings settings = {},
+                           std::shared_ptr<const Surfaces> share = nullptr);
+
+  const std::shared_ptr<const Surfaces>& surfaces() const { return surfaces_; }
 
   // A target covering the camera's crop window, with the settings' MSAA and AOVs.
   RenderTarget make_target(const Camera& camera) const;
@@ -73,6 +96,11 @@ class SceneRasterizer {
   // weight 1; fills `target` if given (else a temporary one).
   void render(const Camera& camera, Film& film, RenderTarget* target = nullptr) const;
 
+  // The scene's meshes `meshes` were posed again (Scene::pose: their vertex and triangle counts
+  // kept): recompiles those meshes, the bounds shadow maps cover and the lights (an emissive
+  // mesh's surface light moves with it), keeping the textures, materials and environment.
+  void update_meshes(const Scene& scene, std::span<const uint32_t> meshes);
+
   const LightSet& lights() const { return lights_; }
   const RasterSettings& settings() const { return settings_; }
   // What compilation approximated or skipped, for the user.
@@ -84,6 +112,9 @@ class SceneRasterizer {
     Transform world_from_object;
     std::optional<AnimatedTransform> motion;
   };
+  static std::shared_ptr<const Surfaces> prepare_surfaces(const Scene& scene);
+  void gather_lights(const Scene& scene);               // lights_ from the scene
+  static Bounds3f instance_bounds(const Scene& scene);  // every instance at every motion key
   Transform world_from_object(const CompiledInstance& instance, double time_s) const;
   // The mesh's vertices at `time_s`: compiled once, or, for a deforming mesh, posed into
   // `scratch` (vertices) and `scratch_indices`.
@@ -107,20 +138,10 @@ class SceneRasterizer {
   std::vector<std::vector<uint32_t>> indices_;     // per mesh (empty: unindexed)
   std::map<uint32_t, Mesh> deforming_;             // meshes posed per frame, by index
   std::vector<int> normal_map_uv_set_;             // per mesh: its normal map's UV set, or −1
-  std::vector<Texture> textures_;                  // the used scene textures
-  std::vector<Texture> alpha_textures_;            // the alpha channels some material reads
-  // Both by scene texture index, which materials_ point to (shared: copies keep it).
-  std::shared_ptr<const TextureTable> texture_table_;
-  std::vector<SurfaceMaterial> materials_;
+  std::shared_ptr<const Surfaces> surfaces_;       // shared by the scene's rasterizers
   std::vector<CompiledInstance> instances_;
   LightSet lights_;
   Bounds3f bounds_;  // every instance at every motion key (what shadow maps must cover)
-  // Background: an equirectangular radiance map (empty: constant) times a colour.
-  Image environment_map_;
-  Rgb environment_scale_;
-  Transform environment_from_world_;
-  // Its image-based lighting, which lights_.environment points to (shared: copies keep it).
-  std::shared_ptr<const EnvironmentLighting> environment_lighting_;
   std::vector<std::string> warnings_;
 };
 

@@ -3,6 +3,8 @@
 #include <algorithm>
 #include <cmath>
 
+#include <tbb/parallel_for.h>
+
 #include "obscura/math/error.h"
 #include "obscura/math/safe_index.h"
 
@@ -14,15 +16,17 @@ Texture::Texture(const Image& image, TextureWrap wrap_u, TextureWrap wrap_v)
     throw Error("texture", "expected a non-empty RGB or RGBA image");
   Level base{image.width, image.height, {}};
   base.texels.resize(size_t(image.width) * image.height);
-  for (int y = 0; y < image.height; ++y)
+  // Rows in parallel, each texel computed as alone (the same values for any thread count).
+  tbb::parallel_for(0, image.height, [&](int y) {
     for (int x = 0; x < image.width; ++x)
       base.texels[size_t(y) * image.width + x] = image.rgb(x, y);
+  });
   levels_.push_back(std::move(base));
   while (levels_.back().width > 1 || levels_.back().height > 1) {
     const Level& src = levels_.back();
     Level dst{std::max(1, src.width / 2), std::max(1, src.height / 2), {}};
     dst.texels.resize(size_t(dst.width) * dst.height);
-    for (int y = 0; y < dst.height; ++y)
+    tbb::parallel_for(0, dst.height, [&](int y) {
       for (int x = 0; x < dst.width; ++x) {
         // The source texels whose centres fall in this texel's footprint.
         int x0 = x * src.width / dst.width, x1 = (x + 1) * src.width / dst.width;
@@ -32,6 +36,7 @@ Texture::Texture(const Image& image, TextureWrap wrap_u, TextureWrap wrap_v)
           for (int i = x0; i < x1; ++i) sum += src.texels[size_t(j) * src.width + i];
         dst.texels[size_t(y) * dst.width + x] = sum / float((x1 - x0) * (y1 - y0));
       }
+    });
     levels_.push_back(std::move(dst));
   }
 }

@@ -69,6 +69,8 @@ struct Wireframe {
   bool enabled = false;
   float width_pixels = 1.f;
   Rgb color{1.f, 1.f, 1.f};
+
+  bool operator==(const Wireframe&) const = default;
 };
 
 struct FragmentSettings {

@@ -1,11 +1,12 @@
-// The rasterizer's back end (raster/render.h). The rasterizer prepares what it draws (meshes in
-// its bins, textures, shadow maps) for each frame from the scene and its own settings, so its
-// compiled scene is the scene itself.
+// The rasterizer's back end (raster/render.h). The rasterizer draws the scene as it is at each
+// frame's moments; what it prepares of it (meshes in its vertex format, mipmapped textures, the
+// environment's lighting) is kept for the session's next frames, one preparation per setting.
 #include <memory>
 #include <utility>
 
 #include "obscura/film/ground_truth_buffer.h"
 #include "obscura/raster/ground_truth_render.h"
+#include "obscura/raster/rasterizer_cache.h"
 #include "obscura/raster/render.h"
 #include "obscura/raster/render_target.h"
 #include "obscura/render/backends.h"
@@ -18,14 +19,20 @@ namespace {
 
 class SceneToRasterize final : public CompiledScene {
  public:
-  explicit SceneToRasterize(const Scene& scene) : scene_(scene) {}
-  // The rasterizer reads the scene as it is at each frame: nothing to bring up to date.
+  explicit SceneToRasterize(const Scene& scene) : scene_(scene), prepared_(scene) {}
+  // Motion is drawn from the scene at each frame's times: every exposure is served.
   bool serves(const Shutter&) const override { return true; }
-  bool update(const Scene&, std::span<const uint32_t>, const Shutter&) override { return true; }
+  bool update(const Scene&, std::span<const uint32_t> changed, const Shutter&) override {
+    prepared_.meshes_changed(changed);
+    return true;
+  }
   const Scene& scene() const { return scene_; }
+  // Shared by the frames of the session, which the back end renders through a const reference.
+  raster::RasterizerCache& prepared() const { return prepared_; }
 
  private:
   const Scene& scene_;
+  mutable raster::RasterizerCache prepared_;
 };
 
 class RasterBackend final : public RendererBackend {
@@ -52,9 +59,9 @@ class RasterBackend final : public RendererBackend {
     raster_settings.time_limit_s = settings.time_limit_s;
     raster_settings.cancel = settings.cancel;
     raster_settings.share = settings.share;
-    raster::RenderStats stats =
-        raster::render(static_cast<const SceneToRasterize&>(compiled).scene(), camera,
-                       raster_settings, film, aovs, progress);
+    const auto& scene = static_cast<const SceneToRasterize&>(compiled);
+    raster::RenderStats stats = raster::render(scene.scene(), camera, raster_settings, film, aovs,
+                                               progress, &scene.prepared());
     FrameStats frame;
     frame.seconds = stats.seconds;
     frame.done = stats.frames;
@@ -74,12 +81,13 @@ class RasterBackend final : public RendererBackend {
   GroundTruthBuffer ground_truth(const CompiledScene& compiled, const Camera& camera,
                                  const FrameSettings& settings,
                                  const GroundTruthTimes& times) const override {
-    const Scene& scene = static_cast<const SceneToRasterize&>(compiled).scene();
+    const auto& scene = static_cast<const SceneToRasterize&>(compiled);
     raster::RasterSettings raster_settings = raster::rasterizer_settings(settings.raster, true);
     raster_settings.msaa_samples = 1;
     raster_settings.shadow_map_size = 0;
-    const raster::SceneRasterizer rasterizer(scene, raster_settings);
-    return raster::render_ground_truth(rasterizer, SurfaceMotion(scene), camera, times,
+    const std::shared_ptr<const raster::SceneRasterizer> rasterizer =
+        scene.prepared().get(raster_settings);
+    return raster::render_ground_truth(*rasterizer, SurfaceMotion(scene.scene()), camera, times,
                                        settings.cancel);
   }
 };
