@@ -104,7 +104,9 @@ TEST_F(PngCicp, HlgCodesFollowTheBt2100Oetf) {
   // BT.2100's HLG OETF with its constants a, b = 1 − 4a, c = 0.5 − a·ln(4a): E′ = √(3E) up to
   // E = 1/12 (E′ = 0.5 there), a·ln(12E − b) + c above (E′ = 1 at nominal peak E = 1).
   const double a = 0.17883277, b = 1 - 4 * a, c = 0.5 - a * std::log(4 * a);
-  auto oetf = [&](double e) { return e <= 1.0 / 12 ? std::sqrt(3 * e) : a * std::log(12 * e - b) + c; };
+  auto oetf = [&](double e) {
+    return e <= 1.0 / 12 ? std::sqrt(3 * e) : a * std::log(12 * e - b) + c;
+  };
   // BT.2408: diffuse white at 75 % of the HLG signal, i.e. the scene light E_w whose OETF is 0.75
   // (0.2650); the film's 1 is diffuse white, so film value v is E = v · E_w.
   const double white = (std::exp((0.75 - c) / a) + b) / 12;

@@ -50,8 +50,10 @@ double delta_e_2000(const Vec3d& lab1, const Vec3d& lab2, const DeltaE2000Weight
   const double lm = (l1 + l2) / 2, cm = (c1p + c2p) / 2;
   double hm = h1p + h2p;
   if (c1p * c2p != 0) {
-    if (std::abs(h1p - h2p) <= 180) hm /= 2;
-    else hm = hm < 360 ? (hm + 360) / 2 : (hm - 360) / 2;
+    if (std::abs(h1p - h2p) <= 180)
+      hm /= 2;
+    else
+      hm = hm < 360 ? (hm + 360) / 2 : (hm - 360) / 2;
   }
   const double t = 1 - 0.17 * std::cos(radians(hm - 30)) + 0.24 * std::cos(radians(2 * hm)) +
                    0.32 * std::cos(radians(3 * hm + 6)) - 0.20 * std::cos(radians(4 * hm - 63));

@@ -36,8 +36,8 @@ std::vector<std::string> display_space_names() {
 DisplaySpace parse_display_space(const std::string& name) {
   for (const DisplaySpaceInfo& d : displays())
     if (d.name == name) return d.id;
-  throw Error("display",
-              "unknown display '" + name + "'; expected srgb, display-p3, rec2020-pq or rec2020-hlg");
+  throw Error("display", "unknown display '" + name +
+                             "'; expected srgb, display-p3, rec2020-pq or rec2020-hlg");
 }
 
 void validate(const DisplaySettings& s) {

@@ -13,8 +13,8 @@
 namespace obscura {
 
 enum class DisplaySpace {
-  kSrgb,       // Rec.709 primaries, sRGB curve: the web, most monitors
-  kDisplayP3,  // P3 primaries, D65, sRGB curve: Apple displays, wide-gamut phones
+  kSrgb,        // Rec.709 primaries, sRGB curve: the web, most monitors
+  kDisplayP3,   // P3 primaries, D65, sRGB curve: Apple displays, wide-gamut phones
   kRec2020Pq,   // BT.2100 PQ: Rec.2020 primaries, ST 2084, diffuse white at 203 cd/m²
   kRec2020Hlg,  // BT.2100 HLG: Rec.2020 primaries, the HLG OETF, diffuse white at 75 % signal
 };
