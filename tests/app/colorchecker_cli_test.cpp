@@ -22,6 +22,7 @@
 #include <array>
 #include <cmath>
 #include <fstream>
+#include <iostream>
 #include <map>
 #include <numeric>
 #include <sstream>
@@ -40,7 +41,7 @@ constexpr int kColumns = 6, kRows = 4, kPatchPixels = 20;
 // A CSV of one header row and numeric rows, as data/color/ stores its tables.
 std::vector<std::vector<double>> read_csv(const std::string& relative) {
   std::ifstream in(test::source_path(relative));
-  EXPECT_TRUE(in) << relative;
+  EXPECT_TRUE(in.good()) << relative;
   std::vector<std::vector<double>> rows;
   std::string line;
   std::getline(in, line);  // header
