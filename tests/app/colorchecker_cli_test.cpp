@@ -156,7 +156,7 @@ TEST_F(ColorCheckerCli, LibRawDevelopsTheChartToItsPublishedColours) {
   }
   const std::string scene = path("chart.json"), dng = path("chart.dng");
   std::ofstream(scene) << chart_scene(reflectances);
-  // 16-bit ADC and a 60 000 e⁻ well, 1/10 s: the white patch fills about a third of it, so no
+  // 16-bit ADC and a 60 000 e⁻ well, 1/10 s: the white patch fills about half of it, so no
   // channel clips after LibRaw's white balance, shot noise averages out over a patch, and the
   // dark current (1 e⁻/s, not subtracted by a developer) stays far below the black patch's
   // signal. (At 80 s under a sky of 1 cd/m², the same exposure, its 80 e⁻ tint the dark patches
