@@ -9,6 +9,7 @@
 #include <array>
 #include <cmath>
 #include <cstdio>
+#include <memory>
 #include <optional>
 #include <vector>
 
@@ -76,27 +77,31 @@ TEST_F(PngCicp, WideGamutAndPqFilesDeclareTheirSpace) {
   }
 }
 
-// The first row of a 16-bit RGB PNG, as libpng reads it: the red sample of each pixel.
+// The first row of a 16-bit RGB PNG, as libpng reads it: the red sample of each pixel. (Everything
+// the error path touches is made before setjmp; libpng longjmps back on a malformed file.)
 std::vector<int> read_red_16(const std::string& path) {
-  std::vector<int> reds;
-  FILE* file = std::fopen(path.c_str(), "rb");
-  if (!file) return reds;
+  struct Closer {
+    void operator()(FILE* f) const { std::fclose(f); }
+  };
+  const std::unique_ptr<FILE, Closer> file(std::fopen(path.c_str(), "rb"));
+  if (!file) return {};
+  std::array<png_byte, 4096> row{};
   png_structp png = png_create_read_struct(PNG_LIBPNG_VER_STRING, nullptr, nullptr, nullptr);
   png_infop info = png_create_info_struct(png);
   if (setjmp(png_jmpbuf(png))) {
     png_destroy_read_struct(&png, &info, nullptr);
-    std::fclose(file);
     return {};
   }
-  png_init_io(png, file);
+  png_init_io(png, file.get());
   png_read_info(png, info);
-  if (png_get_bit_depth(png, info) == 16 && png_get_color_type(png, info) == PNG_COLOR_TYPE_RGB) {
-    std::vector<png_byte> row(png_get_rowbytes(png, info));
-    png_read_row(png, row.data(), nullptr);
-    for (size_t i = 0; i + 5 < row.size(); i += 6) reds.push_back(row[i] << 8 | row[i + 1]);
-  }
+  const size_t bytes = png_get_rowbytes(png, info);
+  const bool rgb16 =
+      png_get_bit_depth(png, info) == 16 && png_get_color_type(png, info) == PNG_COLOR_TYPE_RGB;
+  if (rgb16 && bytes <= row.size()) png_read_row(png, row.data(), nullptr);
   png_destroy_read_struct(&png, &info, nullptr);
-  std::fclose(file);
+  std::vector<int> reds;
+  if (rgb16 && bytes <= row.size())
+    for (size_t i = 0; i + 5 < bytes; i += 6) reds.push_back(row[i] << 8 | row[i + 1]);
   return reds;
 }
 
@@ -127,7 +132,9 @@ TEST_F(PngCicp, HlgCodesFollowTheBt2100Oetf) {
   for (size_t i = 0; i < codes.size(); ++i) {
     // A grey stays a grey from Rec.709 to Rec.2020 (both D65): the red sample carries it.
     const double expected = oetf(scene_light[i]);
-    if (published[i] >= 0) EXPECT_NEAR(expected, published[i], 1e-6) << "E = " << scene_light[i];
+    if (published[i] >= 0) {
+      EXPECT_NEAR(expected, published[i], 1e-6) << "E = " << scene_light[i];
+    }
     EXPECT_NEAR(codes[i], expected * 65535, 1.0) << "E = " << scene_light[i];
   }
 }
