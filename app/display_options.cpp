@@ -23,9 +23,11 @@ void add_display_options(CLI::App* command, DisplayOptions& o, bool with_exposur
   command->add_option("--gamut", o.gamut, "Out-of-gamut colours: clip, or compress chroma (OKLCh)")
       ->check(CLI::IsMember({"clip", "compress"}))
       ->capture_default_str();
-  command->add_option("--bits", o.bits, "Bits per channel, 1-16 (above 8: 16-bit PNG/TIFF)")
-      ->check(integer_in(1, 16))
-      ->capture_default_str();
+  command
+      ->add_option("--bits", o.bits,
+                   "Bits per channel, 1-16 (above 8: 16-bit PNG/TIFF); default 8, and 16 for "
+                   "rec2020-pq and rec2020-hlg")
+      ->check(integer_in(1, 16));
   command->add_option("--dither", o.dither, "Dithering before quantization")
       ->check(CLI::IsMember({"none", "bayer", "blue-noise"}))
       ->capture_default_str();
@@ -43,7 +45,9 @@ ImageWriteOptions image_write_options(const DisplayOptions& o) {
     w.display.tonemap = {.op = parse_tone_map(o.tonemap), .reinhard_white = o.reinhard_white};
     w.display.gamut = parse_gamut_mapping(o.gamut);
     w.display.dither = parse_dither(o.dither);
-    w.display.bits = o.bits;
+    const bool hdr = w.display.display == DisplaySpace::kRec2020Pq ||
+                     w.display.display == DisplaySpace::kRec2020Hlg;
+    w.display.bits = o.bits > 0 ? o.bits : hdr ? 16 : 8;
     w.display.exposure_ev = o.exposure_ev;
     validate(w.display);
     w.exr_half = o.exr_half;

@@ -15,7 +15,7 @@ struct DisplayOptions {
   std::string tonemap = "clamp";
   std::string gamut = "clip";
   std::string dither = "none";
-  int bits = 8;
+  int bits = 0;  // 0: 8, or 16 for the HDR displays (rec2020-pq, rec2020-hlg)
   float reinhard_white = 4;
   float exposure_ev = 0;  // only where --exposure is registered (image convert)
   bool exr_half = false;

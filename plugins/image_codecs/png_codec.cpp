@@ -180,6 +180,7 @@ bool write_png(PngWriter& w, const EncodeRequest& request, int bit_depth,
   png_byte cicp[4] = {0, 0, 0, 1};
   if (space && *space == "Display P3") cicp[0] = 12, cicp[1] = 13;  // P3-D65, sRGB's curve
   if (space && *space == "Rec2100-PQ") cicp[0] = 9, cicp[1] = 16;   // BT.2020, SMPTE ST 2084
+  if (space && *space == "Rec2100-HLG") cicp[0] = 9, cicp[1] = 18;  // BT.2020, BT.2100 HLG
   png_unknown_chunk chunk{};
   if (cicp[0] != 0) {
     std::memcpy(chunk.name, "cICP", 5);

@@ -249,7 +249,7 @@ def convert(values: ArrayLike, from_space: str, to_space: str) -> FloatArray: ..
 def develop(pixels: npt.NDArray[np.float32], *, exposure: float = 0.0,
             tonemap: Literal["none", "clamp", "reinhard", "aces", "hable"] = "clamp",
             reinhard_white: float = 4.0,
-            display: Literal["srgb", "display-p3", "rec2020-pq"] = "srgb",
+            display: Literal["srgb", "display-p3", "rec2020-pq", "rec2020-hlg"] = "srgb",
             gamut: Literal["clip", "compress"] = "clip", bits: int = 8,
             dither: Literal["none", "bayer", "blue-noise"] = "none"
             ) -> Union[npt.NDArray[np.uint8], npt.NDArray[np.uint16]]: ...

@@ -174,7 +174,7 @@ void bind_color(py::module_& m) {
       py::arg("pixels"),
       "Develops linear Rec.709 pixels (float32 (H, W, 3|4)) into display codes as image files "
       "get them: exposure (EV), tonemap ('none', 'clamp', 'reinhard', 'aces', 'hable'), "
-      "reinhard_white, display ('srgb', 'display-p3', 'rec2020-pq'), gamut ('clip', "
+      "reinhard_white, display ('srgb', 'display-p3', 'rec2020-pq', 'rec2020-hlg'), gamut ('clip', "
       "'compress'), bits (1-16) and dither ('none', 'bayer', 'blue-noise'). Returns uint8 "
       "(bits <= 8) or uint16 codes of shape (H, W, C).");
 

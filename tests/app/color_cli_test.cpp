@@ -1,6 +1,7 @@
 // The `color` and `image` subcommands, run as a user would: exit codes, output, errors.
 #include <filesystem>
 #include <fstream>
+#include <iterator>
 #include <limits>
 #include <sstream>
 #include <string>
@@ -201,6 +202,18 @@ TEST(ColorCli, RenderTakesDisplayOptions) {
   EXPECT_TRUE(fs::exists(out));
   EXPECT_EQ(run("render --bits 17 -o " + out).exit_code, 2);
   EXPECT_EQ(run("render --dither floyd -o " + out).exit_code, 2);
+  // Without --bits, the HDR displays get 16 bits and the others 8: the PNG's bit depth (IHDR,
+  // byte 24 of the file).
+  for (const auto& [display, depth] :
+       {std::pair{"rec2020-hlg", 16}, std::pair{"rec2020-pq", 16}, std::pair{"srgb", 8}}) {
+    r = run("render --width 8 --height 8 --spp 1 -q --display " + std::string(display) + " -o " +
+            out);
+    ASSERT_EQ(r.exit_code, 0) << r.out;
+    std::ifstream in(out, std::ios::binary);
+    const std::string bytes((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+    ASSERT_GT(bytes.size(), 24u);
+    EXPECT_EQ(int(static_cast<unsigned char>(bytes[24])), depth) << display;
+  }
   fs::remove_all(dir);
 }
 

@@ -14,6 +14,8 @@ const std::vector<DisplaySpaceInfo>& displays() {
        TransferFunction::kSrgb, 1.0},
       {DisplaySpace::kRec2020Pq, "rec2020-pq", "rec2100-pq", primaries::kRec2020,
        TransferFunction::kPq, 203.0 / 10000},
+      {DisplaySpace::kRec2020Hlg, "rec2020-hlg", "rec2100-hlg", primaries::kRec2020,
+       TransferFunction::kHlg, decode(TransferFunction::kHlg, 0.75)},
   };
   return d;
 }
@@ -34,7 +36,8 @@ std::vector<std::string> display_space_names() {
 DisplaySpace parse_display_space(const std::string& name) {
   for (const DisplaySpaceInfo& d : displays())
     if (d.name == name) return d.id;
-  throw Error("display", "unknown display '" + name + "'; expected srgb, display-p3 or rec2020-pq");
+  throw Error("display", "unknown display '" + name +
+                             "'; expected srgb, display-p3, rec2020-pq or rec2020-hlg");
 }
 
 void validate(const DisplaySettings& s) {

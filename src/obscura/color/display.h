@@ -13,18 +13,21 @@
 namespace obscura {
 
 enum class DisplaySpace {
-  kSrgb,       // Rec.709 primaries, sRGB curve: the web, most monitors
-  kDisplayP3,  // P3 primaries, D65, sRGB curve: Apple displays, wide-gamut phones
-  kRec2020Pq,  // BT.2100 PQ: Rec.2020 primaries, ST 2084, diffuse white at 203 cd/m²
+  kSrgb,        // Rec.709 primaries, sRGB curve: the web, most monitors
+  kDisplayP3,   // P3 primaries, D65, sRGB curve: Apple displays, wide-gamut phones
+  kRec2020Pq,   // BT.2100 PQ: Rec.2020 primaries, ST 2084, diffuse white at 203 cd/m²
+  kRec2020Hlg,  // BT.2100 HLG: Rec.2020 primaries, the HLG OETF, diffuse white at 75 % signal
 };
 
 struct DisplaySpaceInfo {
   DisplaySpace id;
-  std::string name;         // command-line name: "srgb", "display-p3", "rec2020-pq"
-  std::string color_space;  // the id in color_space.h: "srgb", "display-p3", "rec2100-pq"
+  std::string name;         // command-line name: "srgb", "display-p3", "rec2020-pq", "rec2020-hlg"
+  std::string color_space;  // the id in color_space.h: "srgb", "display-p3", "rec2100-pq", …
   RgbPrimaries primaries;
   TransferFunction transfer;
-  double linear_scale;  // encoded = transfer(linear · scale); PQ: 203/10000
+  // encoded = transfer(linear · scale). PQ: 203/10000 (diffuse white at 203 cd/m²); HLG: the
+  // scene light E = 0.2650 whose OETF is 0.75, where ITU-R BT.2408 puts diffuse white.
+  double linear_scale;
 };
 
 const DisplaySpaceInfo& display_space_info(DisplaySpace d);

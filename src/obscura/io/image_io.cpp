@@ -85,6 +85,8 @@ std::string colorspace_attribute(DisplaySpace d) {
       return "Display P3";
     case DisplaySpace::kRec2020Pq:
       return "Rec2100-PQ";
+    case DisplaySpace::kRec2020Hlg:
+      return "Rec2100-HLG";
   }
   return "sRGB";
 }
