@@ -67,6 +67,26 @@ class JsonSceneReader {
     if (json.has("glare_radius"))
       scene_.render.glare_radius_px = json.integer("glare_radius", 256, 1, 4096);
     if (json.has("flare")) scene_.render.flare = json.boolean("flare", false);
+    if (json.has("reyes")) read_reyes(json.object("reyes"));
+    json.finish();
+  }
+
+  // REYES's knobs, in the ranges the renderer takes (scene/reyes_knobs.h).
+  void read_reyes(JsonReader json) {
+    namespace k = reyes_knobs;
+    SceneReyesSettings& r = scene_.render.reyes;
+    if (json.has("shading_rate"))
+      r.shading_rate = json.number_in("shading_rate", k::kDefaultShadingRate, k::kMinShadingRate,
+                                      k::kMaxShadingRate);
+    if (json.has("grid_size"))
+      r.grid_size = json.integer("grid_size", k::kDefaultGridSize, 1, k::kMaxGridSize);
+    if (json.has("bucket_size"))
+      r.bucket_size = json.integer("bucket_size", k::kDefaultBucketSize, 1, k::kMaxBucketSize);
+    if (json.has("pixel_samples"))
+      r.pixel_samples =
+          json.integer("pixel_samples", k::kDefaultPixelSamples, 1, k::kMaxPixelSamples);
+    if (json.has("eye_splits"))
+      r.eye_splits = json.integer("eye_splits", k::kDefaultEyeSplits, 0, k::kMaxEyeSplits);
     json.finish();
   }
 
