@@ -184,6 +184,11 @@ class JsonSceneReader {
     m.emission_texture = texture(json, "emission_texture", TextureEncoding::kSrgb);
     m.normal_texture = texture(json, "normal_texture", TextureEncoding::kLinear);
     m.double_sided = json.boolean("double_sided", true);
+    // Displacement (REYES): metres along the normal, times a scalar texture's first channel.
+    m.displacement = float(json.number_in("displacement", 0, -1e6, 1e6));
+    m.displacement_texture = texture(json, "displacement_texture", TextureEncoding::kLinear);
+    if (json.has("displacement_bound"))
+      m.displacement_bound = float(json.number_in("displacement_bound", 0, 0, 1e6));
     json.finish();
     return m;
   }
@@ -260,6 +265,18 @@ class JsonSceneReader {
           unit_mesh("sphere/" + std::to_string(segments), [&] { return make_sphere(1, segments); }),
           Transform::scale(r, r, r)};
     }
+    if (kind == "analytic_sphere") {
+      // Kept as a unit sphere placed by its centre and radius: REYES dices the sphere itself,
+      // the tracer and the rasterizer draw its tessellation into `segments`.
+      const Vector3d center = json.vector3("center", {0, 0, 0});
+      if (!(std::abs(center.x) <= 1e9 && std::abs(center.y) <= 1e9 && std::abs(center.z) <= 1e9))
+        json.fail("center", "expected coordinates within ±1e9; got " + json.at("center").dump());
+      const double r = json.number_in("radius", 1, 1e-6, 1e9);
+      const int segments = json.integer("segments", 64, 3, 4096);
+      return {unit_mesh("analytic_sphere/" + std::to_string(segments),
+                        [&] { return make_analytic_sphere(1, segments); }),
+              Transform::translate(center) * Transform::scale(r, r, r)};
+    }
     if (kind == "rectangle") {
       std::vector<double> size = sizes(json, "size", 2);
       return {unit_mesh("rectangle", [] { return make_rectangle(1, 1); }),
@@ -277,7 +294,8 @@ class JsonSceneReader {
       scene_.meshes.push_back(triangle_mesh(json));
       return {uint32_t(scene_.meshes.size() - 1), Transform()};
     }
-    json.fail("shape", "unknown shape '" + kind + "'; expected sphere, rectangle, box or mesh");
+    json.fail("shape", "unknown shape '" + kind +
+                           "'; expected sphere, analytic_sphere, rectangle, box or mesh");
   }
 
   Mesh triangle_mesh(JsonReader& json) {
@@ -374,6 +392,7 @@ class JsonSceneReader {
     for (Material& m : model.materials) {
       shift(m.emission_texture);
       shift(m.normal_texture);
+      shift(m.displacement_texture);
       std::visit(
           [&](auto& v) {
             using T = std::decay_t<decltype(v)>;

@@ -53,6 +53,7 @@ std::vector<std::string> ReyesStats::lines() const {
           line("reyes eye splits", double(eye_splits)),
           line("reyes eye-split culls", double(eye_split_culled)),
           line("reyes occlusion culls", double(occlusion_culled)),
+          line("reyes displacement overruns", double(displacement_overruns)),
           line("reyes peak grids", double(peak_grids)),
           line("reyes peak grid bytes", double(peak_grid_bytes))};
 }

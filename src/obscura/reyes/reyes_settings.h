@@ -55,12 +55,13 @@ struct ReyesStats {
   double area_min_px = 0, area_mean_px = 0, area_max_px = 0;  // non-degenerate micropolygons
                                                               // at the shading time, pinhole
   uint64_t samples_tested = 0;                                // sample-in-micropolygon tests
-  uint64_t samples_hit = 0;       // of which inside (and within the near/far range)
-  uint64_t eye_splits = 0;        // splits of pieces crossing the near plane
-  uint64_t eye_split_culled = 0;  // pieces dropped at the limit
-  uint64_t occlusion_culled = 0;  // bucket visits of grids behind every sample's opaque hit
-  uint64_t peak_grids = 0;        // grids alive at once
-  uint64_t peak_grid_bytes = 0;   // their bytes at that moment
+  uint64_t samples_hit = 0;            // of which inside (and within the near/far range)
+  uint64_t eye_splits = 0;             // splits of pieces crossing the near plane
+  uint64_t eye_split_culled = 0;       // pieces dropped at the limit
+  uint64_t occlusion_culled = 0;       // bucket visits of grids behind every sample's opaque hit
+  uint64_t displacement_overruns = 0;  // vertices displaced beyond their material's bound
+  uint64_t peak_grids = 0;             // grids alive at once
+  uint64_t peak_grid_bytes = 0;        // their bytes at that moment
   std::vector<std::string> warnings;
 
   // The counters as lines "name: value" for --stats.
