@@ -119,8 +119,8 @@ Grid start_grid(const Block& block, uint64_t key, uint32_t instance, uint32_t tr
 
 void shade_vertex(const ReyesScene& scene, const FrameView& view, const shading::SurfaceMaterial& m,
                   const VertexSurface& s, Grid& g) {
-  const Point3f p = s.position;
-  const Point3d pd(p.x, p.y, p.z);
+  const Point3d pd = s.position;
+  const Point3f p(float(pd.x), float(pd.y), float(pd.z));
   const Vector3f v =
       view.perspective() ? unit(to_float(view.eye() - pd)) : to_float(view.to_viewer());
   VertexTextures lookup{&scene.scene().textures, {}};
@@ -207,9 +207,9 @@ Grid dice_and_shade(const ReyesScene& scene, const FrameView& view, const DicePl
       if (view.moves()) g.close.push_back(lp.close);
       const double b[3] = {1 - lp.bary.x - lp.bary.y, lp.bary.x, lp.bary.y};
       VertexSurface vs;
-      vs.position = Point3f(float(b[0] * world[0].x + b[1] * world[1].x + b[2] * world[2].x),
-                            float(b[0] * world[0].y + b[1] * world[1].y + b[2] * world[2].y),
-                            float(b[0] * world[0].z + b[1] * world[1].z + b[2] * world[2].z));
+      vs.position = Point3d(b[0] * world[0].x + b[1] * world[1].x + b[2] * world[2].x,
+                            b[0] * world[0].y + b[1] * world[1].y + b[2] * world[2].y,
+                            b[0] * world[0].z + b[1] * world[1].z + b[2] * world[2].z);
       vs.true_normal = true_normal;
       vs.shading_normal = true_normal;
       if (!mesh.normals.empty()) {

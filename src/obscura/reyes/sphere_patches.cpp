@@ -244,10 +244,11 @@ bool split_uniformly(const FrameView& view, const SphereFrame& s, uint32_t spher
       case EyeVerdict::kInFront:
         break;
     }
-    if (!hull_bounds(view, hull).overlaps(region)) continue;
-    planned.push_back(plan_patch(view, s, sphere_index, next.rect, limits.side_px));
-    if ((long long)planned.back().nu * planned.back().nv > kMaxLattice && rows < kMaxPatchRows)
-      return false;
+    // Every patch in the frame's view decides the rows, whether or not it reaches `region` (a
+    // crop window or a bucket): the sphere is diced alike for every region of the frame.
+    const PatchPlan plan = plan_patch(view, s, sphere_index, next.rect, limits.side_px);
+    if ((long long)plan.nu * plan.nv > kMaxLattice && rows < kMaxPatchRows) return false;
+    if (hull_bounds(view, hull).overlaps(region)) planned.push_back(plan);
   }
   // Every patch dices at these rows: cut the lattices into blocks.
   for (const PatchPlan& plan : planned) {
@@ -333,7 +334,7 @@ Grid dice_and_shade_patch(const ReyesScene& scene, const FrameView& view, const 
       const Normal3d nw = world_from_object(Normal3d(d.x, d.y, d.z));
       const double l = std::sqrt(nw.x * nw.x + nw.y * nw.y + nw.z * nw.z);
       VertexSurface vs;
-      vs.position = Point3f(float(w.x), float(w.y), float(w.z));
+      vs.position = w;
       // Outward: the inverse transpose keeps a normal on the side it was on.
       vs.true_normal = Vector3f(float(nw.x / l), float(nw.y / l), float(nw.z / l));
       vs.shading_normal = vs.true_normal;

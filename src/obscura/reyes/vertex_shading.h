@@ -20,7 +20,7 @@ class ReyesScene;
 
 // The surface at one grid vertex at the shading time, world space.
 struct VertexSurface {
-  Point3f position;
+  Point3d position;
   Vector3f true_normal;             // unit: the surface's own side (a triangle's winding)
   Vector3f shading_normal;          // unit: interpolated (or exact, for an analytic surface)
   std::optional<Vector4f> tangent;  // xyz along +u, w the bitangent's sign (normal maps)
