@@ -83,9 +83,12 @@ TEST(ReyesSceneFile, TheFilesKnobsReachTheRenderer) {
   const FrameStats fine = render_with(scene, {.reyes_shading_rate = 1, .reyes_pixel_samples = 8});
   const double ratio = counter(fine, "reyes micropolygons") / counter(file, "reyes micropolygons");
   EXPECT_NEAR(ratio, 4, 1);
+  RecordProperty("micropolygon_ratio", std::to_string(ratio));
   EXPECT_LE(counter(file, "reyes micropolygons"), 16 * counter(file, "reyes grids"));
   EXPECT_LE(counter(fine, "reyes micropolygons"), 16 * counter(fine, "reyes grids"));
-  EXPECT_NEAR(counter(fine, "reyes samples hit") / counter(file, "reyes samples hit"), 4, 0.2);
+  const double hits = counter(fine, "reyes samples hit") / counter(file, "reyes samples hit");
+  EXPECT_NEAR(hits, 4, 0.2);
+  RecordProperty("samples_hit_ratio", std::to_string(hits));
   EXPECT_LE(counter(file, "reyes micropolygon area max (px)"), 4.0);
 }
 

@@ -50,6 +50,7 @@ TEST(ReyesAnalyticSphere, SeesWhatTheTracerSeesAtTheSameSamples) {
   // REYES diced the sphere, not its 262,144 triangles.
   const testing::ReyesFrame frame = render_reyes(scene, scene.camera, {.pixel_samples = 1});
   EXPECT_LT(frame.stats.pieces, 1000u);
+  RecordProperty("patches", int(frame.stats.pieces));
 }
 
 // Seen from 0.7 radii through a 110° lens — once facing the seam (u = 0 faces +Z), once looking
@@ -80,6 +81,9 @@ TEST(ReyesAnalyticSphere, LeavesNoCracksAtItsSeamAndPolesInSteepPerspective) {
       EXPECT_GT(inside, 2000);
       EXPECT_EQ(cracked, 0) << "eye " << eye.x << " " << eye.y << " " << eye.z << ", shading rate "
                             << rate;
+      RecordProperty("inside_pixels_eye_y" + std::to_string(int(eye.y * 10)) + "_rate" +
+                         std::to_string(int(rate * 100)),
+                     inside);
       EXPECT_TRUE(frame.stats.warnings.empty());
     }
   }
@@ -103,6 +107,8 @@ TEST(ReyesAnalyticSphere, CoversItsOrthographicDiskByItsArea) {
       for (int x = 0; x < kSize; ++x) covered += coverage(frame, camera, x, y);
     const double pixel = kView / kSize;
     EXPECT_NEAR(covered * pixel * pixel / std::numbers::pi, 1.0, 0.002) << "tilt " << tilt;
+    RecordProperty("area_over_pi_r2_tilt" + std::to_string(int(tilt * 100)),
+                   std::to_string(covered * pixel * pixel / std::numbers::pi));
   }
 }
 
