@@ -223,8 +223,11 @@ TEST_F(JsonScene, AnalyticSphereKeepsItsCentreAndRadius) {
   // The unit sphere's pole and a point on its equator land on the sphere of the file.
   const Transform& t = scene.instances[0].world_from_object;
   const Point3d pole = t(Point3d(0, 1, 0)), side = t(Point3d(1, 0, 0));
-  EXPECT_NEAR(pole.x, 1, 1e-12), EXPECT_NEAR(pole.y, 2.5, 1e-12), EXPECT_NEAR(pole.z, 3, 1e-12);
-  EXPECT_NEAR(side.x, 1.5, 1e-12), EXPECT_NEAR(side.y, 2, 1e-12);
+  EXPECT_NEAR(pole.x, 1, 1e-12);
+  EXPECT_NEAR(pole.y, 2.5, 1e-12);
+  EXPECT_NEAR(pole.z, 3, 1e-12);
+  EXPECT_NEAR(side.x, 1.5, 1e-12);
+  EXPECT_NEAR(side.y, 2, 1e-12);
   const Mesh& coarse = scene.meshes[scene.instances[1].mesh];
   EXPECT_EQ(coarse.triangle_count(), 8u * 4u * 2u - 2u * 8u);
   EXPECT_NEAR(scene.instances[1].world_from_object(Point3d(0, 0, 1)).z, 2, 1e-12);
