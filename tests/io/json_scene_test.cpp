@@ -206,6 +206,42 @@ TEST_F(JsonScene, WrongTypesAndRanges) {
                {"no camera named 'missing'"});
 }
 
+// An analytic sphere keeps its centre and radius: one shared unit sphere (its tessellation for
+// the tracer and the rasterizer, and the sphere itself), placed by the instance.
+TEST_F(JsonScene, AnalyticSphereKeepsItsCentreAndRadius) {
+  std::string path = write("analytic.json", R"({
+    "materials": {"m": {"type": "diffuse"}},
+    "objects": [
+      {"shape": "analytic_sphere", "center": [1, 2, 3], "radius": 0.5, "material": "m"},
+      {"shape": "analytic_sphere", "radius": 2, "segments": 8, "material": "m"}
+    ]})");
+  const Scene scene = load_scene_file(path);
+  ASSERT_EQ(scene.instances.size(), 2u);
+  const Mesh& mesh = scene.meshes[scene.instances[0].mesh];
+  ASSERT_TRUE(mesh.analytic_sphere.has_value());
+  EXPECT_EQ(mesh.triangle_count(), 64u * 32u * 2u - 2u * 64u);  // 64 segments, poles as fans
+  // The unit sphere's pole and a point on its equator land on the sphere of the file.
+  const Transform& t = scene.instances[0].world_from_object;
+  const Point3d pole = t(Point3d(0, 1, 0)), side = t(Point3d(1, 0, 0));
+  EXPECT_NEAR(pole.x, 1, 1e-12);
+  EXPECT_NEAR(pole.y, 2.5, 1e-12);
+  EXPECT_NEAR(pole.z, 3, 1e-12);
+  EXPECT_NEAR(side.x, 1.5, 1e-12);
+  EXPECT_NEAR(side.y, 2, 1e-12);
+  const Mesh& coarse = scene.meshes[scene.instances[1].mesh];
+  EXPECT_EQ(coarse.triangle_count(), 8u * 4u * 2u - 2u * 8u);
+  EXPECT_NEAR(scene.instances[1].world_from_object(Point3d(0, 0, 1)).z, 2, 1e-12);
+  expect_error(R"({"materials": {"m": {"type": "diffuse"}},
+                   "objects": [{"shape": "analytic_sphere", "radius": 0, "material": "m"}]})",
+               {"$.objects[0].radius"});
+  expect_error(R"({"materials": {"m": {"type": "diffuse"}},
+                   "objects": [{"shape": "analytic_sphere", "center": [0, 1e300, 0], "material": "m"}]})",
+               {"$.objects[0].center"});
+  expect_error(R"({"materials": {"m": {"type": "diffuse"}},
+                   "objects": [{"shape": "analytic_sphere", "center": [0, 1], "material": "m"}]})",
+               {"$.objects[0].center"});
+}
+
 TEST_F(JsonScene, SpectralFieldsArriveAndAreChecked) {
   // A dispersive glass, a blackbody lamp (its RGB: the colour of 6504 K, luminance 2) and the
   // render block's spectral switch.

@@ -25,38 +25,10 @@
 namespace obscura {
 namespace {
 
+using testing::centre_ids;
 using testing::coverage;
+using testing::expect_same_coverage;
 using testing::render_reyes;
-
-// The id AOV of one sample per pixel at the pixel centre (a filter too narrow to move it).
-Image centre_ids(const Scene& scene, Camera camera, const char* renderer) {
-  camera.film.filter = BoxFilter{1e-6};
-  FrameSettings settings{.renderer = renderer_named(renderer), .samples_per_pixel = 1};
-  settings.reyes.pixel_samples = 1;
-  const RenderedFrame frame = render_frame(scene, camera, settings, true);
-  return frame.aovs->id();
-}
-
-// Pixels whose ids differ, and whether each lies within 1 px of a silhouette in `reference`.
-void expect_same_coverage(const Image& reyes, const Image& reference, const char* what) {
-  int differ = 0, away = 0;
-  for (int y = 0; y < reference.height; ++y)
-    for (int x = 0; x < reference.width; ++x) {
-      if (reyes.at(x, y, 0) == reference.at(x, y, 0)) continue;
-      ++differ;
-      bool edge = false;
-      for (int dy = -1; dy <= 1; ++dy)
-        for (int dx = -1; dx <= 1; ++dx) {
-          const int u = std::clamp(x + dx, 0, reference.width - 1);
-          const int v = std::clamp(y + dy, 0, reference.height - 1);
-          edge = edge || reference.at(u, v, 0) != reference.at(x, y, 0);
-        }
-      away += !edge;
-    }
-  const double share = double(differ) / (reference.width * reference.height);
-  EXPECT_LE(share, 0.001) << what << ": " << differ << " pixels differ";
-  EXPECT_EQ(away, 0) << what << ": differing pixels away from any silhouette";
-}
 
 Scene sphere_scene() {
   Scene scene;

@@ -67,6 +67,26 @@ class JsonSceneReader {
     if (json.has("glare_radius"))
       scene_.render.glare_radius_px = json.integer("glare_radius", 256, 1, 4096);
     if (json.has("flare")) scene_.render.flare = json.boolean("flare", false);
+    if (json.has("reyes")) read_reyes(json.object("reyes"));
+    json.finish();
+  }
+
+  // REYES's knobs, in the ranges the renderer takes (scene/reyes_knobs.h).
+  void read_reyes(JsonReader json) {
+    namespace k = reyes_knobs;
+    SceneReyesSettings& r = scene_.render.reyes;
+    if (json.has("shading_rate"))
+      r.shading_rate = json.number_in("shading_rate", k::kDefaultShadingRate, k::kMinShadingRate,
+                                      k::kMaxShadingRate);
+    if (json.has("grid_size"))
+      r.grid_size = json.integer("grid_size", k::kDefaultGridSize, 1, k::kMaxGridSize);
+    if (json.has("bucket_size"))
+      r.bucket_size = json.integer("bucket_size", k::kDefaultBucketSize, 1, k::kMaxBucketSize);
+    if (json.has("pixel_samples"))
+      r.pixel_samples =
+          json.integer("pixel_samples", k::kDefaultPixelSamples, 1, k::kMaxPixelSamples);
+    if (json.has("eye_splits"))
+      r.eye_splits = json.integer("eye_splits", k::kDefaultEyeSplits, 0, k::kMaxEyeSplits);
     json.finish();
   }
 
@@ -164,6 +184,11 @@ class JsonSceneReader {
     m.emission_texture = texture(json, "emission_texture", TextureEncoding::kSrgb);
     m.normal_texture = texture(json, "normal_texture", TextureEncoding::kLinear);
     m.double_sided = json.boolean("double_sided", true);
+    // Displacement (REYES): metres along the normal, times a scalar texture's first channel.
+    m.displacement = float(json.number_in("displacement", 0, -1e6, 1e6));
+    m.displacement_texture = texture(json, "displacement_texture", TextureEncoding::kLinear);
+    if (json.has("displacement_bound"))
+      m.displacement_bound = float(json.number_in("displacement_bound", 0, 0, 1e6));
     json.finish();
     return m;
   }
@@ -240,6 +265,18 @@ class JsonSceneReader {
           unit_mesh("sphere/" + std::to_string(segments), [&] { return make_sphere(1, segments); }),
           Transform::scale(r, r, r)};
     }
+    if (kind == "analytic_sphere") {
+      // Kept as a unit sphere placed by its centre and radius: REYES dices the sphere itself,
+      // the tracer and the rasterizer draw its tessellation into `segments`.
+      const Vector3d center = json.vector3("center", {0, 0, 0});
+      if (!(std::abs(center.x) <= 1e9 && std::abs(center.y) <= 1e9 && std::abs(center.z) <= 1e9))
+        json.fail("center", "expected coordinates within ±1e9; got " + json.at("center").dump());
+      const double r = json.number_in("radius", 1, 1e-6, 1e9);
+      const int segments = json.integer("segments", 64, 3, 4096);
+      return {unit_mesh("analytic_sphere/" + std::to_string(segments),
+                        [&] { return make_analytic_sphere(1, segments); }),
+              Transform::translate(center) * Transform::scale(r, r, r)};
+    }
     if (kind == "rectangle") {
       std::vector<double> size = sizes(json, "size", 2);
       return {unit_mesh("rectangle", [] { return make_rectangle(1, 1); }),
@@ -257,7 +294,8 @@ class JsonSceneReader {
       scene_.meshes.push_back(triangle_mesh(json));
       return {uint32_t(scene_.meshes.size() - 1), Transform()};
     }
-    json.fail("shape", "unknown shape '" + kind + "'; expected sphere, rectangle, box or mesh");
+    json.fail("shape", "unknown shape '" + kind +
+                           "'; expected sphere, analytic_sphere, rectangle, box or mesh");
   }
 
   Mesh triangle_mesh(JsonReader& json) {
@@ -354,6 +392,7 @@ class JsonSceneReader {
     for (Material& m : model.materials) {
       shift(m.emission_texture);
       shift(m.normal_texture);
+      shift(m.displacement_texture);
       std::visit(
           [&](auto& v) {
             using T = std::decay_t<decltype(v)>;

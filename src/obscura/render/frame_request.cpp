@@ -23,13 +23,18 @@ ResolvedFrameRequest resolve_frame_request(const FrameRequest& request,
     r.glare = glare;
   }
   if (request.flare.value_or(scene.flare.value_or(false))) r.flare = FlareSettings{};
-  // REYES's knobs come from the caller alone (the scene file's render block has none yet).
+  // REYES's knobs: the caller's, else the scene file's `render.reyes` block, else the defaults.
   const reyes::ReyesSettings defaults;
-  r.reyes.shading_rate = request.reyes_shading_rate.value_or(defaults.shading_rate);
-  r.reyes.grid_size = request.reyes_grid_size.value_or(defaults.grid_size);
-  r.reyes.bucket_size = request.reyes_bucket_size.value_or(defaults.bucket_size);
-  r.reyes.pixel_samples = request.reyes_pixel_samples.value_or(defaults.pixel_samples);
-  r.reyes.eye_splits = request.reyes_eye_splits.value_or(defaults.eye_splits);
+  const SceneReyesSettings& file = scene.reyes;
+  r.reyes.shading_rate =
+      request.reyes_shading_rate.value_or(file.shading_rate.value_or(defaults.shading_rate));
+  r.reyes.grid_size = request.reyes_grid_size.value_or(file.grid_size.value_or(defaults.grid_size));
+  r.reyes.bucket_size =
+      request.reyes_bucket_size.value_or(file.bucket_size.value_or(defaults.bucket_size));
+  r.reyes.pixel_samples =
+      request.reyes_pixel_samples.value_or(file.pixel_samples.value_or(defaults.pixel_samples));
+  r.reyes.eye_splits =
+      request.reyes_eye_splits.value_or(file.eye_splits.value_or(defaults.eye_splits));
   return r;
 }
 

@@ -164,31 +164,38 @@ void cut_blocks(const FrameView& view, const DicePlan& plan, uint32_t plan_index
 }
 
 EyeVerdict eye_verdict(const FrameView& view, const Piece& piece, double margin_px) {
+  std::vector<Point3d> points;
+  points.reserve(6);
+  for (const LatticePoint& c : piece.corners) points.push_back(c.open), points.push_back(c.close);
+  return eye_verdict(view, points, margin_px);
+}
+
+EyeVerdict eye_verdict(const FrameView& view, const std::vector<Point3d>& points,
+                       double margin_px) {
   if (!view.perspective()) return EyeVerdict::kInFront;
-  int in_front = 0, behind = 0, beyond = 0;
-  for (const LatticePoint& c : piece.corners)
-    for (const Point3d& p : {c.open, c.close}) {
-      const double d = FrameView::depth(p);
-      in_front += d >= view.near_m();
-      behind += d < view.near_m();
-      beyond += d > view.far_m();
-    }
-  if (in_front == 6) return beyond == 6 ? EyeVerdict::kBehind : EyeVerdict::kInFront;
-  if (behind == 6) return EyeVerdict::kBehind;
+  const size_t n = points.size();
+  size_t in_front = 0, behind = 0, beyond = 0;
+  for (const Point3d& p : points) {
+    const double d = FrameView::depth(p);
+    in_front += d >= view.near_m();
+    behind += d < view.near_m();
+    beyond += d > view.far_m();
+  }
+  if (in_front == n) return beyond == n ? EyeVerdict::kBehind : EyeVerdict::kInFront;
+  if (behind == n) return EyeVerdict::kBehind;
   // Beyond one side plane of the frustum (through the eye, so valid on both sides of it). The
   // lens widens what is seen near the eye: no side test with depth of field.
   if (!view.defocused()) {
     double x0, x1, y0, y1;
     view.window_bounds(margin_px, x0, x1, y0, y1);
-    int out[4] = {0, 0, 0, 0};
-    for (const LatticePoint& c : piece.corners)
-      for (const Point3d& p : {c.open, c.close}) {
-        const double d = FrameView::depth(p);
-        out[0] += p.x<x0 * d, out[1] += p.x> x1 * d;
-        out[2] += p.y<y0 * d, out[3] += p.y> y1 * d;
-      }
-    for (int k : out)
-      if (k == 6) return EyeVerdict::kOutside;
+    size_t out[4] = {0, 0, 0, 0};
+    for (const Point3d& p : points) {
+      const double d = FrameView::depth(p);
+      out[0] += p.x<x0 * d, out[1] += p.x> x1 * d;
+      out[2] += p.y<y0 * d, out[3] += p.y> y1 * d;
+    }
+    for (size_t k : out)
+      if (k == n) return EyeVerdict::kOutside;
   }
   return EyeVerdict::kStraddles;
 }

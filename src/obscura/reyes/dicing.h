@@ -73,6 +73,7 @@ struct Block {
   int i0 = 0, i1 = 0, j0 = 0, j1 = 0;
   RasterBounds bounds;
   double depth_min = 0;  // the nearest it comes (occlusion culling)
+  bool sphere = false;   // a block of a sphere patch (sphere_patches.h): `plan` is a PatchPlan
 };
 
 // The most micropolygons along one lattice side (a bound on the time a huge, near triangle
@@ -102,6 +103,8 @@ enum class EyeVerdict { kInFront, kBehind, kOutside, kStraddles };
 // kOutside when the piece lies beyond one side of the view frustum (grown by `margin_px`),
 // kStraddles when it crosses the near plane, else kInFront. Orthographic: always kInFront.
 EyeVerdict eye_verdict(const FrameView& view, const Piece& piece, double margin_px);
+// The same for any surface inside the convex hull of camera-space `points` (each at both times).
+EyeVerdict eye_verdict(const FrameView& view, const std::vector<Point3d>& points, double margin_px);
 // The four pieces of an eye split (edge midpoints).
 std::array<Piece, 4> split_in_four(const Piece& piece);
 

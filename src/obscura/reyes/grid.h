@@ -16,6 +16,9 @@ namespace obscura::reyes {
 
 class ReyesScene;
 
+// Grid::triangle of a grid diced from an analytic surface (Mesh::analytic_sphere), not a triangle.
+inline constexpr uint32_t kAnalyticSurface = 0xffffffffu;
+
 enum class Coverage : uint8_t {
   kOpaque,  // every sample it covers is hit
   kMask,    // hit where the interpolated α reaches the cut-off (glTF MASK)
@@ -33,7 +36,8 @@ struct Grid {
   Coverage coverage = Coverage::kOpaque;
   float alpha_cutoff = 0.5f;
   uint32_t mesh = 0;  // the id AOV: the instance index, as the other renderers write it
-  uint32_t instance = 0, triangle = 0;  // the scene triangle it was diced from
+  uint32_t instance = 0, triangle = 0;  // the scene triangle it was diced from, or
+                                        // kAnalyticSurface
 
   int row() const { return nu + 1; }
   size_t vertices() const { return size_t(nu + 1) * size_t(nv + 1); }
@@ -43,6 +47,7 @@ struct Grid {
 // What dicing and shading a grid adds to the frame's statistics.
 struct GridCounts {
   uint64_t grids = 0, micropolygons = 0, shaded_vertices = 0, measured = 0;
+  uint64_t displacement_overruns = 0;  // vertices displaced beyond their material's bound
   double area_min = 1e300, area_max = 0, area_sum = 0;
   void add(const GridCounts& o);
 };

@@ -8,6 +8,7 @@
 #include "obscura/math/shading_normal.h"
 #include "obscura/reyes/grid.h"
 #include "obscura/reyes/reyes_scene.h"
+#include "obscura/reyes/vertex_shading.h"
 #include "obscura/shading/material_point.h"
 #include "obscura/shading/normal_map.h"
 #include "obscura/shading/surface_response.h"
@@ -88,29 +89,15 @@ void GridCounts::add(const GridCounts& o) {
   grids += o.grids;
   micropolygons += o.micropolygons;
   shaded_vertices += o.shaded_vertices;
+  displacement_overruns += o.displacement_overruns;
   measured += o.measured;
   area_min = std::min(area_min, o.area_min);
   area_max = std::max(area_max, o.area_max);
   area_sum += o.area_sum;
 }
 
-Grid dice_and_shade(const ReyesScene& scene, const FrameView& view, const DicePlan& plan,
-                    const Block& block, uint64_t key, GridCounts& counts) {
-  const Scene& s = scene.scene();
-  const uint32_t instance = plan.piece.instance, triangle = plan.piece.triangle;
-  const Instance& inst = s.instances[instance];
-  const Mesh& mesh = s.meshes[inst.mesh];
-  const uint32_t idx[3] = {mesh.indices[3 * size_t(triangle)],
-                           mesh.indices[3 * size_t(triangle) + 1],
-                           mesh.indices[3 * size_t(triangle) + 2]};
-  const double ts = view.shading_time_s();
-  const std::array<Point3d, 3> world = scene.motion().world_triangle(instance, triangle, ts);
-  const Vector3f true_normal = to_float(scene.motion().geometric_normal(instance, triangle, ts));
-  const Transform world_from_object = scene.motion().world_from_object(instance, ts);
-  const float handedness = world_from_object.swaps_handedness() ? -1.f : 1.f;
-  const shading::SurfaceMaterial& m = scene.material(s.material_of(inst));
-  const shading::PunctualLights& lights = scene.lights();
-
+Grid start_grid(const Block& block, uint64_t key, uint32_t instance, uint32_t triangle,
+                const shading::SurfaceMaterial& m, bool moves) {
   Grid g;
   g.key = key;
   g.nu = block.i1 - block.i0;
@@ -123,77 +110,51 @@ Grid dice_and_shade(const ReyesScene& scene, const FrameView& view, const DicePl
   g.alpha_cutoff = m.alpha_cutoff;
   const size_t n = g.vertices();
   g.open.reserve(n);
-  if (view.moves()) g.close.reserve(n);
+  if (moves) g.close.reserve(n);
   g.color.reserve(n);
   g.normal.reserve(n);
   if (g.coverage != Coverage::kOpaque) g.alpha.reserve(n);
-  const bool textured_normals = m.normal_texture.valid() && !mesh.tangents.empty();
+  return g;
+}
 
-  for (int j = block.j0; j <= block.j1; ++j)
-    for (int i = block.i0; i <= block.i1; ++i) {
-      const LatticePoint lp = lattice_point(plan, i, j);
-      g.open.push_back(lp.open);
-      if (view.moves()) g.close.push_back(lp.close);
-      const double b[3] = {1 - lp.bary.x - lp.bary.y, lp.bary.x, lp.bary.y};
-      const Point3d pd(b[0] * world[0].x + b[1] * world[1].x + b[2] * world[2].x,
-                       b[0] * world[0].y + b[1] * world[1].y + b[2] * world[2].y,
-                       b[0] * world[0].z + b[1] * world[1].z + b[2] * world[2].z);
-      const Point3f p(float(pd.x), float(pd.y), float(pd.z));
-      const Vector3f v =
-          view.perspective() ? unit(to_float(view.eye() - pd)) : to_float(view.to_viewer());
-      Vector3f interpolated = true_normal;
-      if (!mesh.normals.empty()) {
-        const Normal3f no = blend_normals(mesh.normals, idx, b);
-        const Normal3f nw = world_from_object(no);
-        interpolated = unit(Vector3f(nw.x, nw.y, nw.z));
-      }
-      VertexTextures lookup{&s.textures, {}};
-      for (uint32_t set = 0; set < Mesh::kUvSets; ++set) {
-        const std::vector<Point2f>& uvs = mesh.uv_set(set);
-        if (uvs.empty()) continue;
-        lookup.uv[set] =
-            Point2f(float(b[0] * uvs[idx[0]].x + b[1] * uvs[idx[1]].x + b[2] * uvs[idx[2]].x),
-                    float(b[0] * uvs[idx[0]].y + b[1] * uvs[idx[1]].y + b[2] * uvs[idx[2]].y));
-      }
-      const Rgb vertex_color = mesh.colors.empty() ? Rgb(1.f) : blend3(mesh.colors, idx, b);
+void shade_vertex(const ReyesScene& scene, const FrameView& view, const shading::SurfaceMaterial& m,
+                  const VertexSurface& s, Grid& g) {
+  const Point3d pd = s.position;
+  const Point3f p(float(pd.x), float(pd.y), float(pd.z));
+  const Vector3f v =
+      view.perspective() ? unit(to_float(view.eye() - pd)) : to_float(view.to_viewer());
+  VertexTextures lookup{&scene.scene().textures, {}};
+  for (uint32_t set = 0; set < Mesh::kUvSets; ++set) lookup.uv[set] = s.uv[set];
+  // As the rasterizer's per-pixel program: the true surface facing the viewer, the shading
+  // normal (normal-mapped) kept visible from it.
+  const Vector3f geometric = face_towards(s.true_normal, v);
+  Vector3f shading_normal = s.shading_normal;
+  if (m.normal_texture.valid() && s.tangent) {
+    const Vector3f side = dot(shading_normal, geometric) < 0 ? -geometric : geometric;
+    shading_normal =
+        shading::keep_above_surface(shading::normal_mapped(m.normal_texture, m.normal_scale,
+                                                           shading_normal, *s.tangent, lookup),
+                                    side);
+  }
+  const Vector3f n = visible_shading_normal(shading_normal, geometric, v);
+  shading::SurfacePoint sp = shading::surface_point_with(m, s.color, lookup);
+  sp.coat_normal = m.model == shading::SurfaceModel::kLayeredMetallicRoughness
+                       ? visible_shading_normal(s.shading_normal, geometric, v)
+                       : geometric;
+  Rgb c = sp.model == shading::SurfaceModel::kUnlit
+              ? sp.base
+              : reflected_light(sp, scene.lights(), p, n, geometric, v);
+  if (dot(s.true_normal, v) > 0) c += shading::textured(m.emission, m.emission_texture, lookup);
+  g.color.push_back(c);
+  g.normal.push_back(face_towards(s.shading_normal, v));
+  if (g.coverage != Coverage::kOpaque)
+    g.alpha.push_back(m.base_alpha * s.alpha * lookup.alpha(m.alpha_texture));
+}
 
-      // As the rasterizer's per-pixel program: the true surface facing the viewer, the shading
-      // normal (normal-mapped) kept visible from it.
-      const Vector3f geometric = face_towards(true_normal, v);
-      Vector3f shading_normal = interpolated;
-      if (textured_normals) {
-        const Vector4f t = blend3(mesh.tangents, idx, b);
-        const Vector3f tw = world_from_object(Vector3f(t.x, t.y, t.z));
-        const float w = (mesh.tangents[idx[0]].w < 0 ? -1.f : 1.f) * handedness;
-        const Vector3f side = dot(shading_normal, geometric) < 0 ? -geometric : geometric;
-        shading_normal = shading::keep_above_surface(
-            shading::normal_mapped(m.normal_texture, m.normal_scale, shading_normal,
-                                   {tw.x, tw.y, tw.z, w}, lookup),
-            side);
-      }
-      const Vector3f n = visible_shading_normal(shading_normal, geometric, v);
-      shading::SurfacePoint sp = shading::surface_point_with(m, vertex_color, lookup);
-      sp.coat_normal = m.model == shading::SurfaceModel::kLayeredMetallicRoughness
-                           ? visible_shading_normal(interpolated, geometric, v)
-                           : geometric;
-      Rgb c = sp.model == shading::SurfaceModel::kUnlit
-                  ? sp.base
-                  : reflected_light(sp, lights, p, n, geometric, v);
-      if (dot(true_normal, v) > 0) c += shading::textured(m.emission, m.emission_texture, lookup);
-      g.color.push_back(c);
-      g.normal.push_back(face_towards(interpolated, v));
-      if (g.coverage != Coverage::kOpaque) {
-        const float vertex_alpha =
-            mesh.color_alphas.empty()
-                ? 1.f
-                : float(b[0] * mesh.color_alphas[idx[0]] + b[1] * mesh.color_alphas[idx[1]] +
-                        b[2] * mesh.color_alphas[idx[2]]);
-        g.alpha.push_back(m.base_alpha * vertex_alpha * lookup.alpha(m.alpha_texture));
-      }
-    }
-
+void finish_grid(const FrameView& view, Grid& g, GridCounts& counts) {
   // Statistics (the micropolygons as diced: at the shading time, through the lens centre), and
   // the still frame's projection done once per grid.
+  const size_t n = g.vertices();
   std::vector<Point2d> projected(n);
   const double f = view.motion_fraction(view.shading_time_s());
   for (size_t k = 0; k < n; ++k)
@@ -219,6 +180,62 @@ Grid dice_and_shade(const ReyesScene& scene, const FrameView& view, const DicePl
       c.area_sum += area;
     }
   counts.add(c);
+}
+
+Grid dice_and_shade(const ReyesScene& scene, const FrameView& view, const DicePlan& plan,
+                    const Block& block, uint64_t key, GridCounts& counts) {
+  const Scene& s = scene.scene();
+  const uint32_t instance = plan.piece.instance, triangle = plan.piece.triangle;
+  const Instance& inst = s.instances[instance];
+  const Mesh& mesh = s.meshes[inst.mesh];
+  const uint32_t idx[3] = {mesh.indices[3 * size_t(triangle)],
+                           mesh.indices[3 * size_t(triangle) + 1],
+                           mesh.indices[3 * size_t(triangle) + 2]};
+  const double ts = view.shading_time_s();
+  const std::array<Point3d, 3> world = scene.motion().world_triangle(instance, triangle, ts);
+  const Vector3f true_normal = to_float(scene.motion().geometric_normal(instance, triangle, ts));
+  const Transform world_from_object = scene.motion().world_from_object(instance, ts);
+  const float handedness = world_from_object.swaps_handedness() ? -1.f : 1.f;
+  const shading::SurfaceMaterial& m = scene.material(s.material_of(inst));
+  Grid g = start_grid(block, key, instance, triangle, m, view.moves());
+  const bool has_tangents = !mesh.tangents.empty();
+
+  for (int j = block.j0; j <= block.j1; ++j)
+    for (int i = block.i0; i <= block.i1; ++i) {
+      const LatticePoint lp = lattice_point(plan, i, j);
+      g.open.push_back(lp.open);
+      if (view.moves()) g.close.push_back(lp.close);
+      const double b[3] = {1 - lp.bary.x - lp.bary.y, lp.bary.x, lp.bary.y};
+      VertexSurface vs;
+      vs.position = Point3d(b[0] * world[0].x + b[1] * world[1].x + b[2] * world[2].x,
+                            b[0] * world[0].y + b[1] * world[1].y + b[2] * world[2].y,
+                            b[0] * world[0].z + b[1] * world[1].z + b[2] * world[2].z);
+      vs.true_normal = true_normal;
+      vs.shading_normal = true_normal;
+      if (!mesh.normals.empty()) {
+        const Normal3f nw = world_from_object(blend_normals(mesh.normals, idx, b));
+        vs.shading_normal = unit(Vector3f(nw.x, nw.y, nw.z));
+      }
+      for (uint32_t set = 0; set < Mesh::kUvSets; ++set) {
+        const std::vector<Point2f>& uvs = mesh.uv_set(set);
+        if (uvs.empty()) continue;
+        vs.uv[set] =
+            Point2f(float(b[0] * uvs[idx[0]].x + b[1] * uvs[idx[1]].x + b[2] * uvs[idx[2]].x),
+                    float(b[0] * uvs[idx[0]].y + b[1] * uvs[idx[1]].y + b[2] * uvs[idx[2]].y));
+      }
+      if (!mesh.colors.empty()) vs.color = blend3(mesh.colors, idx, b);
+      if (!mesh.color_alphas.empty())
+        vs.alpha = float(b[0] * mesh.color_alphas[idx[0]] + b[1] * mesh.color_alphas[idx[1]] +
+                         b[2] * mesh.color_alphas[idx[2]]);
+      if (has_tangents) {
+        const Vector4f t = blend3(mesh.tangents, idx, b);
+        const Vector3f tw = world_from_object(Vector3f(t.x, t.y, t.z));
+        const float w = (mesh.tangents[idx[0]].w < 0 ? -1.f : 1.f) * handedness;
+        vs.tangent = Vector4f(tw.x, tw.y, tw.z, w);
+      }
+      shade_vertex(scene, view, m, vs, g);
+    }
+  finish_grid(view, g, counts);
   return g;
 }
 

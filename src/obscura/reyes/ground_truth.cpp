@@ -20,12 +20,42 @@ struct Surface {
   double range_m = 0;
 };
 
-// The triangle's surface where the pixel centre's ray (lens centre, at `time_s`) meets its plane.
+// An analytic sphere's surface where `ray` first meets it (from outside, else from inside).
+std::optional<Surface> sphere_surface_at(const SurfaceMotion& motion, uint32_t instance,
+                                         const CameraRay& ray, double time_s) {
+  const Scene& scene = motion.scene();
+  const AnalyticSphere& sphere = *scene.meshes[scene.instances[instance].mesh].analytic_sphere;
+  const Transform world_from_object = motion.world_from_object(instance, time_s);
+  const Transform object_from_world = inverse(world_from_object);
+  // In object space, where the sphere is round; t is the same along the mapped ray.
+  const Point3d o = object_from_world(ray.origin);
+  const Vector3d d = object_from_world(ray.direction);
+  const Vector3d oc = o - Point3d(sphere.center.x, sphere.center.y, sphere.center.z);
+  const double a = dot(d, d), b = dot(oc, d), r = sphere.radius;
+  const double discriminant = b * b - a * (dot(oc, oc) - r * r);
+  if (!(discriminant >= 0 && a > 0)) return std::nullopt;
+  const double root = std::sqrt(discriminant);
+  double t = (-b - root) / a;
+  if (!(t > 0)) t = (-b + root) / a;
+  if (!(t > 0)) return std::nullopt;
+  const Vector3d n_object = (oc + d * t) / r;
+  const Normal3d nw = world_from_object(Normal3d(n_object.x, n_object.y, n_object.z));
+  Surface s;
+  s.position = ray.origin + ray.direction * t;
+  s.geometric_normal = Vector3d(nw.x, nw.y, nw.z) / length(Vector3d(nw.x, nw.y, nw.z));
+  s.shading_normal = s.geometric_normal;
+  s.range_m = t;
+  return s;
+}
+
+// The triangle's surface where the pixel centre's ray (lens centre, at `time_s`) meets its plane
+// (an analytic surface's where the ray meets it).
 std::optional<Surface> surface_at(const SurfaceMotion& motion, const PreparedCamera& camera,
                                   SeenTriangle seen, Point2d film_point, double time_s) {
   const std::optional<CameraRay> ray = camera.generate_ray(film_point, {0.5, 0.5}, time_s);
   if (!ray) return std::nullopt;
   const uint32_t instance = uint32_t(seen.instance);
+  if (seen.triangle == kAnalyticSurface) return sphere_surface_at(motion, instance, *ray, time_s);
   const std::array<Point3d, 3> tri = motion.world_triangle(instance, seen.triangle, time_s);
   const Vector3d n = motion.geometric_normal(instance, seen.triangle, time_s);
   const double facing = dot(ray->direction, n);

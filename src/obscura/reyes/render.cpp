@@ -20,17 +20,78 @@
 #include "obscura/reyes/dicing.h"
 #include "obscura/reyes/grid.h"
 #include "obscura/reyes/hider.h"
+#include "obscura/reyes/sphere_patches.h"
 
 namespace obscura::reyes {
 
 namespace {
 
-// What splitting produced: the lattice plans and their blocks, in a fixed order.
+// What splitting produced: the lattice plans (triangles' and sphere patches') and their blocks,
+// in a fixed order.
 struct Split {
   std::vector<DicePlan> plans;
-  std::vector<Block> blocks;
+  std::vector<SphereFrame> spheres;
+  std::vector<PatchPlan> patches;
+  std::vector<Block> blocks;  // Block::sphere: `plan` indexes `patches`, else `plans`
   uint64_t pieces = 0, eye_splits = 0, eye_split_culled = 0;
 };
+
+// The analytic sphere an instance draws, if REYES dices it natively (a rigid mesh that keeps
+// one).
+const AnalyticSphere* analytic_sphere(const Scene& scene, uint32_t instance) {
+  const Mesh& mesh = scene.meshes[scene.instances[instance].mesh];
+  return mesh.analytic_sphere && !mesh.deforms() ? &*mesh.analytic_sphere : nullptr;
+}
+
+SphereFrame sphere_frame(const ReyesScene& scene, const FrameView& view, uint32_t instance,
+                         const AnalyticSphere& sphere) {
+  const SurfaceMotion& motion = scene.motion();
+  const Transform open = motion.world_from_object(instance, view.open_s());
+  const Transform close = view.moves() ? motion.world_from_object(instance, view.close_s()) : open;
+  const Displacement& d =
+      scene.displacement(scene.scene().material_of(scene.scene().instances[instance]));
+  return {.instance = instance,
+          .center = {sphere.center.x, sphere.center.y, sphere.center.z},
+          .radius = sphere.radius,
+          .camera_from_object_open = view.camera_from_world_open() * open,
+          .camera_from_object_close = view.camera_from_world_close() * close,
+          .displacement = d.any() ? &d : nullptr,
+          .reach = d.any() ? std::max(d.bound, d.largest) : 0.0};
+}
+
+// The frame's warnings about displacement: beyond its bound (naming the materials whose
+// displacement can exceed theirs), or on surfaces REYES does not displace.
+void warn_about_displacement(const ReyesScene& scene, uint64_t overruns,
+                             std::vector<std::string>& warnings) {
+  const Scene& s = scene.scene();
+  std::string beyond, undisplaced;
+  for (uint32_t m = 0; m < s.materials.size(); ++m) {
+    const Displacement& d = scene.displacement(m);
+    if (!(d.any() && d.largest > d.bound)) continue;
+    if (!beyond.empty()) beyond += ", ";
+    beyond += "'";
+    beyond += s.materials[m].name;
+    beyond += "'";
+  }
+  for (uint32_t i = 0; i < s.instances.size(); ++i)
+    if (scene.displacement(s.material_of(s.instances[i])).any() && !analytic_sphere(s, i)) {
+      undisplaced = s.instances[i].name;
+      break;
+    }
+  if (overruns > 0) {
+    std::string w = "reyes: the displacement of material ";
+    w += beyond;
+    w += " reached beyond its displacement_bound at " + std::to_string(overruns);
+    w += " vertices; the bounds were grown to the real displacement (raise displacement_bound)";
+    warnings.push_back(w);
+  }
+  if (!undisplaced.empty()) {
+    std::string w = "reyes: displacement applies to analytic spheres only; '";
+    w += undisplaced;
+    w += "' (a triangle mesh) is drawn undisplaced";
+    warnings.push_back(w);
+  }
+}
 
 LatticePoint corner(const Transform& open, const Transform& close, Point3d world_open,
                     Point3d world_close, Point2d bary) {
@@ -104,27 +165,51 @@ Split split_scene(const ReyesScene& scene, const FrameView& view, const DiceLimi
                   int eye_split_limit, const RasterBounds& region, double margin_px) {
   // Chunks of triangles split in parallel, joined in order: the same plans and blocks, in the
   // same order, on any number of threads.
+  // An analytic sphere is one chunk of its own (its patches are planned together).
   struct Chunk {
     uint32_t instance, first, end;
+    const AnalyticSphere* sphere;
   };
   constexpr uint32_t kChunk = 512;
   std::vector<Chunk> chunks;
   const Scene& s = scene.scene();
   for (uint32_t i = 0; i < s.instances.size(); ++i) {
+    if (const AnalyticSphere* sphere = analytic_sphere(s, i)) {
+      chunks.push_back({i, 0, 0, sphere});
+      continue;
+    }
     const uint32_t triangles = uint32_t(s.meshes[s.instances[i].mesh].triangle_count());
     for (uint32_t t = 0; t < triangles; t += kChunk)
-      chunks.push_back({i, t, std::min(triangles, t + kChunk)});
+      chunks.push_back({i, t, std::min(triangles, t + kChunk), nullptr});
   }
   std::vector<Split> parts(chunks.size());
   tbb::parallel_for(size_t(0), chunks.size(), [&](size_t c) {
-    split_triangles(scene, view, chunks[c].instance, chunks[c].first, chunks[c].end, limits,
-                    eye_split_limit, region, margin_px, parts[c]);
+    const Chunk& chunk = chunks[c];
+    if (!chunk.sphere) {
+      split_triangles(scene, view, chunk.instance, chunk.first, chunk.end, limits, eye_split_limit,
+                      region, margin_px, parts[c]);
+      return;
+    }
+    Split& part = parts[c];
+    part.spheres.push_back(sphere_frame(scene, view, chunk.instance, *chunk.sphere));
+    PatchSplit patches;
+    split_sphere(view, part.spheres[0], 0, limits, eye_split_limit, region, margin_px, patches);
+    part.patches = std::move(patches.plans);
+    part.blocks = std::move(patches.blocks);
+    part.pieces = patches.pieces;
+    part.eye_splits = patches.eye_splits;
+    part.eye_split_culled = patches.eye_split_culled;
   });
   Split all;
   for (Split& part : parts) {
     const uint32_t offset = uint32_t(all.plans.size());
-    for (Block& b : part.blocks) b.plan += offset;
+    const uint32_t patch_offset = uint32_t(all.patches.size());
+    const uint32_t sphere_offset = uint32_t(all.spheres.size());
+    for (Block& b : part.blocks) b.plan += b.sphere ? patch_offset : offset;
+    for (PatchPlan& p : part.patches) p.sphere += sphere_offset;
     all.plans.insert(all.plans.end(), part.plans.begin(), part.plans.end());
+    all.spheres.insert(all.spheres.end(), part.spheres.begin(), part.spheres.end());
+    all.patches.insert(all.patches.end(), part.patches.begin(), part.patches.end());
     all.blocks.insert(all.blocks.end(), part.blocks.begin(), part.blocks.end());
     all.pieces += part.pieces;
     all.eye_splits += part.eye_splits;
@@ -276,8 +361,14 @@ ReyesStats render(const ReyesScene& scene, const Camera& camera, const ReyesSett
               std::lock_guard lock(slot.mutex);
               if (!slot.grid) {
                 const Block& block = split.blocks[k];
-                slot.grid = std::make_shared<const Grid>(
-                    dice_and_shade(scene, view, split.plans[block.plan], block, k, diced));
+                if (block.sphere) {
+                  const PatchPlan& patch = split.patches[block.plan];
+                  slot.grid = std::make_shared<const Grid>(dice_and_shade_patch(
+                      scene, view, split.spheres[patch.sphere], patch, block, k, diced));
+                } else {
+                  slot.grid = std::make_shared<const Grid>(
+                      dice_and_shade(scene, view, split.plans[block.plan], block, k, diced));
+                }
                 const uint64_t live = ++live_grids;
                 const uint64_t bytes = live_bytes += slot.grid->bytes();
                 std::lock_guard stats_lock(stats_mutex);
@@ -302,6 +393,8 @@ ReyesStats render(const ReyesScene& scene, const Camera& camera, const ReyesSett
   stats.grids = grid_counts.grids;
   stats.micropolygons = grid_counts.micropolygons;
   stats.shaded_vertices = grid_counts.shaded_vertices;
+  stats.displacement_overruns = grid_counts.displacement_overruns;
+  warn_about_displacement(scene, stats.displacement_overruns, stats.warnings);
   if (grid_counts.measured > 0) {
     stats.area_min_px = grid_counts.area_min;
     stats.area_max_px = grid_counts.area_max;

@@ -1,8 +1,9 @@
 // REYES's entry point: one frame of a compiled scene, bucket by bucket.
 //
-//   split   every triangle of every instance becomes a piece; pieces crossing the near plane
-//           are eye-split (dicing.h), pieces off the film dropped; each piece's lattice is
-//           planned from its projected edges and cut into blocks of at most the grid size
+//   split   every triangle of every instance becomes a piece, every analytic sphere an array
+//           of patches (sphere_patches.h); pieces crossing the near plane are eye-split
+//           (dicing.h), pieces off the film dropped; each piece's lattice is planned from its
+//           projected edges and cut into blocks of at most the grid size
 //   bucket  the work share's tiles (a bucket is at most a tile) are cut into buckets; every
 //           block is listed in the buckets its bounds reach
 //   dice    a block becomes a grid, diced and shaded (grid.h) when the first bucket that needs

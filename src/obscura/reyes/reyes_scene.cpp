@@ -24,8 +24,25 @@ Point2f environment_uv(Vector3d d) {
 ReyesScene::ReyesScene(const Scene& scene) : scene_(&scene), motion_(scene) {
   scene.validate();
   materials_.reserve(scene.materials.size());
-  for (const Material& m : scene.materials)
+  for (const Material& m : scene.materials) {
     materials_.push_back(shading::compile_surface_material(m));
+    Displacement d;
+    d.scale = m.displacement;
+    double texel_max = 1;
+    if (m.displacement_texture.valid() &&
+        scene.textures[size_t(m.displacement_texture.texture)].width > 0) {
+      d.texture = &scene.textures[size_t(m.displacement_texture.texture)];
+      d.reference = m.displacement_texture;
+      // Bilinear lookups never leave the texels' range.
+      texel_max = 0;
+      for (int y = 0; y < d.texture->height; ++y)
+        for (int x = 0; x < d.texture->width; ++x)
+          texel_max = std::max(texel_max, std::abs(double(d.texture->texel(x, y, 0))));
+    }
+    d.largest = std::abs(d.scale) * texel_max;
+    d.bound = m.displacement_bound ? double(*m.displacement_bound) : d.largest;
+    displacements_.push_back(d);
+  }
   shading::add_scene_lights(scene, lights_);
   shading::add_emissive_surface_lights(scene, lights_);
   lights_.ambient = shading::environment_mean_radiance(scene);
@@ -38,6 +55,11 @@ ReyesScene::ReyesScene(const Scene& scene) : scene_(&scene), motion_(scene) {
     if (env.texture >= 0 && scene.textures[size_t(env.texture)].width > 0)
       environment_map_ = &scene.textures[size_t(env.texture)];
   }
+}
+
+double Displacement::at(Point2f uv) const {
+  if (!texture) return scale;
+  return scale * double(sample_texture(*texture, reference.transform(uv)).x);
 }
 
 Rgb ReyesScene::background(Vector3d d) const {

@@ -18,6 +18,19 @@
 
 namespace obscura::reyes {
 
+// A material's displacement as REYES applies it: `scale` metres along the normal times the
+// texture's first channel (1 without one).
+struct Displacement {
+  double scale = 0;
+  const Texture* texture = nullptr;
+  TextureRef reference;
+  double largest = 0;  // the most |displacement| the scale and the texture's texels can give
+  double bound = 0;    // the material's displacement_bound, else `largest`
+  bool any() const { return scale != 0; }
+  // The displacement at texture coordinates `uv` (metres).
+  double at(Point2f uv) const;
+};
+
 class ReyesScene {
  public:
   // `scene` must outlive this and not change. Throws obscura::Error for an invalid scene.
@@ -26,6 +39,7 @@ class ReyesScene {
   const Scene& scene() const { return *scene_; }
   const SurfaceMotion& motion() const { return motion_; }
   const shading::SurfaceMaterial& material(uint32_t index) const { return materials_[index]; }
+  const Displacement& displacement(uint32_t material) const { return displacements_[material]; }
   // Every emissive instance is a surface light too, as in the rasterizer; `ambient` is the
   // environment's mean radiance.
   const shading::PunctualLights& lights() const { return lights_; }
@@ -38,6 +52,7 @@ class ReyesScene {
   const Scene* scene_;
   SurfaceMotion motion_;
   std::vector<shading::SurfaceMaterial> materials_;
+  std::vector<Displacement> displacements_;
   shading::PunctualLights lights_;
   bool moves_ = false;
   Rgb environment_scale_;

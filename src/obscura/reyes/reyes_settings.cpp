@@ -27,10 +27,11 @@ void check_range(const char* option, double value, double low, double high, cons
 void validate(const ReyesSettings& s) {
   check_range("--reyes-shading-rate", s.shading_rate, kMinShadingRate, kMaxShadingRate,
               "pixels per micropolygon");
-  check_range("--reyes-grid-size", s.grid_size, 1, 65536, "micropolygons");
+  check_range("--reyes-grid-size", s.grid_size, 1, reyes_knobs::kMaxGridSize, "micropolygons");
   check_range("--reyes-bucket-size", s.bucket_size, 1, kTileSize, "pixels");
-  check_range("--reyes-pixel-samples", s.pixel_samples, 1, 4096, "samples");
-  check_range("--reyes-eye-splits", s.eye_splits, 0, 32, "splits");
+  check_range("--reyes-pixel-samples", s.pixel_samples, 1, reyes_knobs::kMaxPixelSamples,
+              "samples");
+  check_range("--reyes-eye-splits", s.eye_splits, 0, reyes_knobs::kMaxEyeSplits, "splits");
   if (!(s.time_limit_s >= 0))
     throw Error("time limit", "must be ≥ 0 s; got " + number(s.time_limit_s));
   if (s.share.parts < 1 || s.share.part < 0 || s.share.part >= s.share.parts)
@@ -52,6 +53,7 @@ std::vector<std::string> ReyesStats::lines() const {
           line("reyes eye splits", double(eye_splits)),
           line("reyes eye-split culls", double(eye_split_culled)),
           line("reyes occlusion culls", double(occlusion_culled)),
+          line("reyes displacement overruns", double(displacement_overruns)),
           line("reyes peak grids", double(peak_grids)),
           line("reyes peak grid bytes", double(peak_grid_bytes))};
 }

@@ -16,19 +16,21 @@
 
 #include "obscura/film/work_share.h"
 #include "obscura/math/sampler.h"
+#include "obscura/scene/reyes_knobs.h"
 
 namespace obscura::reyes {
 
 // The side of the square tiles a WorkShare deals for REYES (render/reyes_backend.cpp's
 // capabilities row): buckets are cut from them, so a bucket is never larger.
-inline constexpr int kTileSize = 64;
+inline constexpr int kTileSize = reyes_knobs::kMaxBucketSize;
 
 struct ReyesSettings {
-  double shading_rate = 1;  // pixels² per micropolygon, in [kMinShadingRate, kMaxShadingRate]
-  int grid_size = 256;      // micropolygons per grid at most, in [1, 65536]
-  int bucket_size = 16;     // pixels, in [1, kTileSize]
-  int pixel_samples = 16;   // visibility samples per pixel, in [1, 4096]
-  int eye_splits = 8;       // in [0, 32]
+  // Defaults and ranges: scene/reyes_knobs.h.
+  double shading_rate = reyes_knobs::kDefaultShadingRate;  // pixels² per micropolygon
+  int grid_size = reyes_knobs::kDefaultGridSize;           // micropolygons per grid at most
+  int bucket_size = reyes_knobs::kDefaultBucketSize;       // pixels, at most kTileSize
+  int pixel_samples = reyes_knobs::kDefaultPixelSamples;   // visibility samples per pixel
+  int eye_splits = reyes_knobs::kDefaultEyeSplits;
   uint64_t seed = 0;
   SamplerType sampler = SamplerType::kSobol;
   double time_limit_s = 0;                    // ≥ 0; 0: none (REYES renders in one pass)
@@ -36,8 +38,8 @@ struct ReyesSettings {
   WorkShare share = {};
 };
 
-inline constexpr double kMinShadingRate = 1.0 / 64;
-inline constexpr double kMaxShadingRate = 1024;
+inline constexpr double kMinShadingRate = reyes_knobs::kMinShadingRate;
+inline constexpr double kMaxShadingRate = reyes_knobs::kMaxShadingRate;
 
 // Throws obscura::Error naming the first option out of range (its command-line name) and its
 // value: NaN, 0, 1e-9 and 1e9 are refused, not rendered for hours or skipped.
@@ -53,12 +55,13 @@ struct ReyesStats {
   double area_min_px = 0, area_mean_px = 0, area_max_px = 0;  // non-degenerate micropolygons
                                                               // at the shading time, pinhole
   uint64_t samples_tested = 0;                                // sample-in-micropolygon tests
-  uint64_t samples_hit = 0;       // of which inside (and within the near/far range)
-  uint64_t eye_splits = 0;        // splits of pieces crossing the near plane
-  uint64_t eye_split_culled = 0;  // pieces dropped at the limit
-  uint64_t occlusion_culled = 0;  // bucket visits of grids behind every sample's opaque hit
-  uint64_t peak_grids = 0;        // grids alive at once
-  uint64_t peak_grid_bytes = 0;   // their bytes at that moment
+  uint64_t samples_hit = 0;            // of which inside (and within the near/far range)
+  uint64_t eye_splits = 0;             // splits of pieces crossing the near plane
+  uint64_t eye_split_culled = 0;       // pieces dropped at the limit
+  uint64_t occlusion_culled = 0;       // bucket visits of grids behind every sample's opaque hit
+  uint64_t displacement_overruns = 0;  // vertices displaced beyond their material's bound
+  uint64_t peak_grids = 0;             // grids alive at once
+  uint64_t peak_grid_bytes = 0;        // their bytes at that moment
   std::vector<std::string> warnings;
 
   // The counters as lines "name: value" for --stats.

@@ -5,6 +5,7 @@
 #pragma once
 
 #include <limits>
+#include <optional>
 #include <string>
 #include <string_view>
 #include <variant>
@@ -135,6 +136,14 @@ struct Material {
   bool double_sided = true;  // glTF doubleSided; the tracer reflects on both sides regardless
   AlphaMode alpha_mode = AlphaMode::kOpaque;
   float alpha_cutoff = 0.5f;  // kMask only
+  // Displacement along the surface's normal before shading (REYES; the tracer and the rasterizer
+  // draw the surface undisplaced): `displacement` metres (world), times the displacement
+  // texture's first channel (linear) where there is one. `displacement_bound` (≥ 0, metres) is
+  // the most it may reach, what REYES grows a surface's bounds by before dicing; absent, the
+  // largest the displacement and its texture can give.
+  float displacement = 0;
+  TextureRef displacement_texture;
+  std::optional<float> displacement_bound;
 };
 
 // A Lambertian material, emitting where `emission` is not black: the common case of scenes built

@@ -2,6 +2,7 @@
 #pragma once
 
 #include <cstdint>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -18,6 +19,14 @@ struct MeshDeformation {
   double open_s = 0, close_s = 0;
   std::vector<std::vector<Point3f>> positions;  // per time step: one per vertex
   std::vector<std::vector<Normal3f>> normals;   // per time step: one per vertex, or none at all
+};
+
+// A sphere kept as its centre and radius (object space): the surface a mesh's triangles
+// tessellate when it was made from one (the scene file's `analytic_sphere` shape). REYES dices
+// it natively; the tracer and the rasterizer draw the triangles.
+struct AnalyticSphere {
+  Point3f center;
+  float radius = 1;  // > 0
 };
 
 // Indexed triangles. Front faces wind counter-clockwise seen from outside: the geometric normal
@@ -37,6 +46,8 @@ struct Mesh {
   std::vector<uint32_t> indices;  // three per triangle
   uint32_t material = 0;          // index into Scene::materials; an Instance may override it
   MeshDeformation deformation;    // empty for a rigid mesh; `positions` is then the still pose
+  // The analytic surface the triangles tessellate, if any (ignored while the mesh deforms).
+  std::optional<AnalyticSphere> analytic_sphere;
 
   bool deforms() const { return deformation.positions.size() > 1; }
   // The mesh with its deformation's positions and normals at `time_s` (itself if rigid).

@@ -109,6 +109,9 @@ void validate_mesh(const Mesh& m, const std::string& where, size_t material_coun
   check_attribute_size(where, "tangents", m.tangents, m.positions.size());
   check_attribute_size(where, "colors", m.colors, m.positions.size());
   check_attribute_size(where, "color_alphas", m.color_alphas, m.positions.size());
+  if (m.analytic_sphere && !(finite(m.analytic_sphere->center) && m.analytic_sphere->radius > 0 &&
+                             std::isfinite(m.analytic_sphere->radius)))
+    throw Error(where, "analytic sphere: needs a finite centre and a finite radius > 0");
   const MeshDeformation& d = m.deformation;
   if (!d.positions.empty() && (!(d.open_s <= d.close_s) || d.positions.size() < 2 ||
                                (!d.normals.empty() && d.normals.size() != d.positions.size())))
@@ -140,6 +143,10 @@ void check_texture(const TextureRef& ref, const std::string& where, const char* 
 void validate_material(const Material& m, const std::string& where, size_t texture_count) {
   check_texture(m.emission_texture, where, "emission", texture_count);
   check_texture(m.normal_texture, where, "normal", texture_count);
+  check_texture(m.displacement_texture, where, "displacement", texture_count);
+  if (!std::isfinite(m.displacement) ||
+      (m.displacement_bound && !(*m.displacement_bound >= 0 && *m.displacement_bound < 1e30f)))
+    throw Error(where, "displacement: needs a finite displacement and a finite bound ≥ 0");
   if (auto* d = std::get_if<DiffuseMaterial>(&m.model))
     check_texture(d->reflectance_texture, where, "reflectance", texture_count);
   if (auto* p = std::get_if<PhongMaterial>(&m.model))

@@ -19,6 +19,7 @@
 #include "obscura/scene/material.h"
 #include "obscura/scene/mesh.h"
 #include "obscura/scene/mesh_poser.h"
+#include "obscura/scene/reyes_knobs.h"
 #include "obscura/scene/texture.h"
 
 namespace obscura {
@@ -37,6 +38,8 @@ struct SceneRenderSettings {
   std::optional<int> glare_radius_px;
   // Ghost flares of a lens-system camera (render/lens_flare.h).
   std::optional<bool> flare;
+  // REYES's knobs (the `render.reyes` block).
+  SceneReyesSettings reyes;
 };
 
 // Counts for `obscura info` and benchmarks.

@@ -35,6 +35,13 @@ Mesh make_sphere(float radius, int segments) {
   return m;
 }
 
+Mesh make_analytic_sphere(float radius, int segments) {
+  Mesh m = make_sphere(radius, segments);
+  m.name = "analytic sphere";
+  m.analytic_sphere = AnalyticSphere{.center = {0, 0, 0}, .radius = radius};
+  return m;
+}
+
 Mesh make_rectangle(float width, float depth) {
   Mesh m;
   m.name = "rectangle";
