@@ -356,6 +356,9 @@ void ViewRenderer::render(uint64_t generation, const ViewCamera& view) {
     frame->normal = normal;
     frame->id = id;
     frame->raster_image = raster_image;
+    // Encoded before it is announced: the page asks for it at once, and by then the tracer below
+    // holds every core.
+    frame->png("beauty");
     publish(std::move(frame), true);
   }
   if (raster_only || cancel_) return;
