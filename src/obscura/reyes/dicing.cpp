@@ -129,13 +129,18 @@ LatticePoint lattice_point(const DicePlan& plan, int i, int j) {
   return lerp(lerp(c[0], c[1], u), c[2], v);
 }
 
+std::array<int, 2> block_cells(int grid_size, int nu, int nv) {
+  const int g = std::max(1, int(std::sqrt(double(grid_size))));
+  int bu = std::min(nu, g), bv = std::min(nv, g);
+  if (bu < g) bv = std::min(nv, std::max(1, grid_size / bu));
+  if (bv < g) bu = std::min(nu, std::max(1, grid_size / bv));
+  return {bu, bv};
+}
+
 void cut_blocks(const FrameView& view, const DicePlan& plan, uint32_t plan_index,
                 const DiceLimits& limits, std::vector<Block>& blocks) {
-  // Square-ish blocks of at most grid_size micropolygons; a thin lattice takes long thin ones.
-  const int g = std::max(1, int(std::sqrt(double(limits.grid_size))));
-  int bu = std::min(plan.nu, g), bv = std::min(plan.nv, g);
-  if (bu < g) bv = std::min(plan.nv, std::max(1, limits.grid_size / bu));
-  if (bv < g) bu = std::min(plan.nu, std::max(1, limits.grid_size / bv));
+  const std::array<int, 2> cells = block_cells(limits.grid_size, plan.nu, plan.nv);
+  const int bu = cells[0], bv = cells[1];
   for (int j0 = 0; j0 < plan.nv; j0 += bv)
     for (int i0 = 0; i0 < plan.nu; i0 += bu) {
       Block b{.plan = plan_index,

@@ -92,6 +92,9 @@ RasterBounds piece_bounds(const FrameView& view, const Piece& piece);
 DicePlan plan_dicing(const FrameView& view, const Piece& piece, const DiceLimits& limits);
 // The lattice vertex (i, j) of a plan (0 ≤ i ≤ nu, 0 ≤ j ≤ nv).
 LatticePoint lattice_point(const DicePlan& plan, int i, int j);
+// The cells per block, along u and along v, that cut a lattice of nu × nv cells into square-ish
+// blocks of at most `grid_size` micropolygons (a thin lattice takes long thin ones).
+std::array<int, 2> block_cells(int grid_size, int nu, int nv);
 // Cuts a plan's lattice into blocks (appended, in row order), each with its bounds: over both
 // exposure ends and, with depth of field, grown by the largest lens shift at its depths.
 void cut_blocks(const FrameView& view, const DicePlan& plan, uint32_t plan_index,

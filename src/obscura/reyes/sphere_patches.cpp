@@ -160,15 +160,13 @@ RasterBounds hull_bounds(const FrameView& view, const std::vector<Point3d>& hull
   return b;
 }
 
-// Blocks of at most grid_size micropolygons, as dicing.cpp's cut_blocks, bounded by every
+// Blocks of at most grid_size micropolygons (block_cells, as cut_blocks), bounded by every
 // lattice vertex they hold (a curved patch bulges between its boundary vertices).
 void cut_patch_blocks(const FrameView& view, const SphereFrame& s, const PatchPlan& plan,
                       uint32_t plan_index, const DiceLimits& limits, const RasterBounds& region,
                       std::vector<Block>& blocks) {
-  const int g = std::max(1, int(std::sqrt(double(limits.grid_size))));
-  int bu = std::min(plan.nu, g), bv = std::min(plan.nv, g);
-  if (bu < g) bv = std::min(plan.nv, std::max(1, limits.grid_size / bu));
-  if (bv < g) bu = std::min(plan.nu, std::max(1, limits.grid_size / bv));
+  const std::array<int, 2> cells = block_cells(limits.grid_size, plan.nu, plan.nv);
+  const int bu = cells[0], bv = cells[1];
   for (int j0 = 0; j0 < plan.nv; j0 += bv)
     for (int i0 = 0; i0 < plan.nu; i0 += bu) {
       Block b{.plan = plan_index,
