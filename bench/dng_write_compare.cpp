@@ -27,22 +27,18 @@
 #include <vector>
 
 #include "obscura/io/dng_file.h"
-#include "obscura/math/rng.h"
 #include "obscura/sensor/sensor_capture.h"
+#include "sensor_bench_inputs.h"
 
 namespace {
 
 using namespace obscura;
 
-constexpr int kWidth = 3840, kHeight = 2160;
+using bench::kHeight;
+using bench::kWidth;
 
 RawCapture capture_4k() {
-  Image film(kWidth, kHeight, 3);
-  Pcg32 rng(1);
-  for (float& v : film.data) v = rng.next_float();
-  SensorExposure exposure;
-  exposure.lux_seconds_per_film = 0.05;  // a few thousand electrons in a mid-grey pixel
-  return capture_raw(film, SensorSpec{}, exposure, 0);
+  return capture_raw(bench::film_4k(), SensorSpec{}, bench::sensor_exposure(), 0);
 }
 
 void libtiff_write(const std::string& path, const RawCapture& capture, bool sync) {

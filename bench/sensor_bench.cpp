@@ -13,28 +13,17 @@
 
 #include "obscura/io/atomic_file.h"
 #include "obscura/io/dng_file.h"
-#include "obscura/math/rng.h"
 #include "obscura/sensor/isp.h"
 #include "obscura/sensor/sensor_capture.h"
+#include "sensor_bench_inputs.h"
 
 namespace {
 
 using namespace obscura;
 
-constexpr int kWidth = 3840, kHeight = 2160;
-
-Image film_4k() {
-  Image image(kWidth, kHeight, 3);
-  Pcg32 rng(1);
-  for (float& v : image.data) v = rng.next_float();
-  return image;
-}
-
-SensorExposure exposure() {
-  SensorExposure e;
-  e.lux_seconds_per_film = 0.05;  // a few thousand electrons in a mid-grey pixel
-  return e;
-}
+using bench::film_4k;
+using bench::kHeight;
+using bench::kWidth;
 
 int threads_of(const benchmark::State& state) {
   return state.range(0) > 0 ? int(state.range(0)) : int(std::thread::hardware_concurrency());
@@ -45,12 +34,12 @@ void BM_SensorCapture4k(benchmark::State& state) {
   const Image film = film_4k();
   uint64_t seed = 0;
   for (auto _ : state)
-    benchmark::DoNotOptimize(capture_raw(film, SensorSpec{}, exposure(), seed++));
+    benchmark::DoNotOptimize(capture_raw(film, SensorSpec{}, bench::sensor_exposure(), seed++));
 }
 
 void BM_SensorDevelop4k(benchmark::State& state) {
   tbb::global_control limit(tbb::global_control::max_allowed_parallelism, threads_of(state));
-  const RawCapture capture = capture_raw(film_4k(), SensorSpec{}, exposure(), 0);
+  const RawCapture capture = capture_raw(film_4k(), SensorSpec{}, bench::sensor_exposure(), 0);
   for (auto _ : state) benchmark::DoNotOptimize(develop_raw(capture, DemosaicMethod::kMalvar));
 }
 
@@ -59,7 +48,7 @@ std::string scratch(const char* name) {
 }
 
 void BM_DngWrite4k(benchmark::State& state) {
-  const RawCapture capture = capture_raw(film_4k(), SensorSpec{}, exposure(), 0);
+  const RawCapture capture = capture_raw(film_4k(), SensorSpec{}, bench::sensor_exposure(), 0);
   DngWriteOptions options;
   options.ground_truth = false;
   const std::string path = scratch("obscura-bench.dng");
@@ -80,7 +69,7 @@ void BM_AtomicWrite4k(benchmark::State& state) {
 
 // libtiff's own: TIFFOpen on the file, the same rows, no compression, one strip per 32 rows.
 void BM_LibtiffRawWrite4k(benchmark::State& state) {
-  const RawCapture capture = capture_raw(film_4k(), SensorSpec{}, exposure(), 0);
+  const RawCapture capture = capture_raw(film_4k(), SensorSpec{}, bench::sensor_exposure(), 0);
   const std::string path = scratch("obscura-bench.tif");
   for (auto _ : state) {
     TIFF* t = TIFFOpen(path.c_str(), "w");

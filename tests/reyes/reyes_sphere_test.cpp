@@ -68,16 +68,7 @@ TEST(ReyesAnalyticSphere, LeavesNoCracksAtItsSeamAndPolesInSteepPerspective) {
     for (double rate : {0.25, 1.0, 4.0}) {
       const testing::ReyesFrame frame = render_reyes(
           scene, camera, {.shading_rate = rate, .bucket_size = 8, .pixel_samples = 16});
-      int inside = 0, cracked = 0;
-      for (int y = 1; y + 1 < 128; ++y)
-        for (int x = 1; x + 1 < 128; ++x) {
-          bool all = true;
-          for (int dy = -1; dy <= 1; ++dy)
-            for (int dx = -1; dx <= 1; ++dx) all = all && traced.at(x + dx, y + dy, 0) == 0;
-          if (!all) continue;
-          ++inside;
-          cracked += coverage(frame, camera, x, y) < 0.999;
-        }
+      const auto [inside, cracked] = testing::count_cracks(traced, frame, camera);
       EXPECT_GT(inside, 2000);
       EXPECT_EQ(cracked, 0) << "eye " << eye.x << " " << eye.y << " " << eye.z << ", shading rate "
                             << rate;
@@ -217,16 +208,7 @@ TEST(ReyesDisplacement, LeavesNoCracksInATextureDisplacedSphere) {
   for (double rate : {0.25, 1.0, 4.0}) {
     const testing::ReyesFrame frame =
         render_reyes(scene, camera, {.shading_rate = rate, .bucket_size = 8, .pixel_samples = 16});
-    int inside = 0, cracked = 0;
-    for (int y = 1; y + 1 < 128; ++y)
-      for (int x = 1; x + 1 < 128; ++x) {
-        bool all = true;
-        for (int dy = -1; dy <= 1; ++dy)
-          for (int dx = -1; dx <= 1; ++dx) all = all && traced.at(x + dx, y + dy, 0) == 0;
-        if (!all) continue;
-        ++inside;
-        cracked += coverage(frame, camera, x, y) < 0.999;
-      }
+    const auto [inside, cracked] = testing::count_cracks(traced, frame, camera);
     EXPECT_GT(inside, 2000);
     EXPECT_EQ(cracked, 0) << "shading rate " << rate;
     EXPECT_TRUE(frame.stats.warnings.empty());

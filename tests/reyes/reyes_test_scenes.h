@@ -98,6 +98,25 @@ inline double coverage(const ReyesFrame& frame, const Camera& camera, int x, int
   return frame.film.pixel({x, y}).r / camera.exposure_scale();
 }
 
+// Cracks: pixels deep inside object 0 in `traced_ids` (it and its eight neighbours hit it) that
+// the REYES frame does not cover completely. Both images are of `camera`.
+struct Cracks {
+  int inside = 0, cracked = 0;
+};
+inline Cracks count_cracks(const Image& traced_ids, const ReyesFrame& frame, const Camera& camera) {
+  Cracks c;
+  for (int y = 1; y + 1 < traced_ids.height; ++y)
+    for (int x = 1; x + 1 < traced_ids.width; ++x) {
+      bool all = true;
+      for (int dy = -1; dy <= 1; ++dy)
+        for (int dx = -1; dx <= 1; ++dx) all = all && traced_ids.at(x + dx, y + dy, 0) == 0;
+      if (!all) continue;
+      ++c.inside;
+      c.cracked += coverage(frame, camera, x, y) < 0.999;
+    }
+  return c;
+}
+
 // The id AOV of one sample per pixel at the pixel centre (a filter too narrow to move it).
 inline Image centre_ids(const Scene& scene, Camera camera, const char* renderer) {
   camera.film.filter = BoxFilter{1e-6};
