@@ -82,5 +82,23 @@ TEST(AovBuffers, MisshapedImagesAreRefused) {
   EXPECT_THROW(AovBuffers::from_images(images), Error);
 }
 
+TEST(AovBuffers, IdsThatNoRendererWritesAreRefused) {
+  // A shard file's id image is floats: values beyond int32 (found by the shard fuzzer),
+  // fractions, NaN and ids below −1 cannot be mesh indices.
+  const AovBuffers aovs(2, 1);
+  for (const float bad : {3.0e9f, -3.0e9f, 2.5f, -2.0f, std::numeric_limits<float>::quiet_NaN(),
+                          std::numeric_limits<float>::infinity(), 16777218.0f}) {
+    std::vector<AovImage> images = aovs.images();
+    images.back().image.data[1] = bad;
+    EXPECT_THROW(AovBuffers::from_images(images), Error) << bad;
+  }
+  std::vector<AovImage> images = aovs.images();
+  images.back().image.data[0] = 16777216.0f;
+  images.back().image.data[1] = -1.0f;
+  const Image ids = AovBuffers::from_images(images).id();
+  EXPECT_EQ(ids.data[0], 16777216.0f);
+  EXPECT_EQ(ids.data[1], -1.0f);
+}
+
 }  // namespace
 }  // namespace obscura

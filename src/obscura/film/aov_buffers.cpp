@@ -147,11 +147,21 @@ AovBuffers AovBuffers::from_images(const std::vector<AovImage>& images) {
       throw Error("AOV images", "expected every image of " + std::to_string(width) + "x" +
                                     std::to_string(height) + " pixels");
   AovBuffers buffers(width, height, albedo != nullptr);
+  // Ids are mesh indices stored in a float channel: integers from −1 (nothing hit) up to 2^24,
+  // the last integer a float holds exactly. Anything else did not come from a renderer.
+  constexpr float largest_exact_id = 16777216.0f;
   for (int y = 0; y < height; ++y)
-    for (int x = 0; x < width; ++x)
+    for (int x = 0; x < width; ++x) {
+      const float id_value = id->at(x, y, 0);
+      if (!(id_value >= -1.0f && id_value <= largest_exact_id) ||
+          id_value != float(int32_t(id_value)))
+        throw Error("AOV image 'id'", "expected a whole mesh index from -1 to 16777216 at pixel (" +
+                                          std::to_string(x) + ", " + std::to_string(y) +
+                                          "); got " + std::to_string(id_value));
       buffers.set_pixel({x, y}, albedo ? albedo->rgb(x, y) : Rgb(),
                         {normal->at(x, y, 0), normal->at(x, y, 1), normal->at(x, y, 2)},
-                        depth->at(x, y, 0), range->at(x, y, 0), int32_t(id->at(x, y, 0)));
+                        depth->at(x, y, 0), range->at(x, y, 0), int32_t(id_value));
+    }
   return buffers;
 }
 
