@@ -161,7 +161,9 @@ struct ScenePixelProgram {
              m.color, m.uv1.x, m.uv1.y, t, m.tangent.w * uniforms.handedness}};
   }
 
-  Rgb fragment(const Varyings& a, const Varyings& dx, const Varyings& dy, FragmentInfo info) const {
+  // Out of line: the material model is far larger than the tile loop around it, and inlined into
+  // each of the loop's copies (scalar and 8-lane, baseline and AVX2) it took minutes to compile.
+  OBSCURA_RASTER_OUTLINE Rgb fragment(const Varyings& a, const Varyings& dx, const Varyings& dy, FragmentInfo info) const {
     const SurfaceMaterial& m = *uniforms.material;
     Vector3f v = uniforms.view_direction(a.position);
     // The plane of the triangle from the derivatives of the position; facing the viewer.

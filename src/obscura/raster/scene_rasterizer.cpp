@@ -15,6 +15,7 @@
 #include "obscura/raster/depth_range.h"
 #include "obscura/raster/msaa.h"
 #include "obscura/raster/pipeline.h"
+#include "obscura/raster/scene_draws.h"
 #include "obscura/raster/scene_program.h"
 #include "obscura/scene/tangents.h"
 #include "obscura/shading/scene_lighting.h"
@@ -32,14 +33,6 @@ std::optional<ShadingMode> parse_shading_mode(std::string_view name) {
 namespace {
 
 constexpr float kPi = std::numbers::pi_v<float>;
-
-// Every scene draw tests depth with LESS: compiling the tile loop for that function alone keeps
-// this file's build time down (draw() compiles it for all eight).
-template <class P>
-void draw_less(RenderTarget& target, const DrawState& state, const P& program,
-               std::span<const MeshVertex> vertices, std::span<const uint32_t> indices) {
-  draw_with_depth_func<DepthFunc::kLess>(target, state, program, vertices, indices);
-}
 
 // Object-space vertices of a mesh. Meshes without normals get one vertex per corner carrying the
 // face normal (what the tracer shades them with), drawn unindexed. Tangents are filled in only
@@ -397,8 +390,7 @@ ShadowMap SceneRasterizer::render_shadow_map(const Matrix4& clip_from_world, flo
     std::vector<uint32_t> scratch_indices;
     auto [vertices, indices] = mesh_at(instance.mesh, time_s, scratch, scratch_indices);
     if (material.alpha_mode == AlphaMode::kOpaque) {
-      DepthOnlyProgram<MeshVertex> program{clip_from_object};
-      draw_less(map.depth, DrawState{}, program, *vertices, *indices);
+      draw_shadow_depth(map.depth, DrawState{}, clip_from_object, nullptr, *vertices, *indices);
       continue;
     }
     // Cut-outs cast cut-out shadows. A depth map cannot hold a partial shadow, so a blended
@@ -406,8 +398,7 @@ ShadowMap SceneRasterizer::render_shadow_map(const Matrix4& clip_from_world, flo
     DrawState state;
     state.alpha_test = true;
     state.alpha_cutoff = material.alpha_mode == AlphaMode::kMask ? material.alpha_cutoff : 0.5f;
-    draw_less(map.depth, state, DepthCoverageProgram{clip_from_object, &material}, *vertices,
-              *indices);
+    draw_shadow_depth(map.depth, state, clip_from_object, &material, *vertices, *indices);
   }
   return map;
 }
@@ -519,13 +510,10 @@ void SceneRasterizer::draw_instance(RenderTarget& target, const InstanceUniforms
   // `sorted`, where given, orders the triangles of this same pose (draw_blended).
   const std::span<const uint32_t> indices = sorted.empty() ? *posed_indices : sorted;
   const bool gouraud = settings_.shading == ShadingMode::kGouraud;
-  if (material.alpha_mode == AlphaMode::kOpaque) {
-    if (gouraud) return draw_less(target, state, SceneGouraudProgram{u}, vertices, indices);
-    return draw_less(target, state, ScenePixelProgram{u}, vertices, indices);
-  }
-  if (gouraud)
-    return draw_less(target, state, WithCoverage<SceneGouraudProgram>{{u}}, vertices, indices);
-  draw_less(target, state, WithCoverage<ScenePixelProgram>{{u}}, vertices, indices);
+  const bool coverage = material.alpha_mode != AlphaMode::kOpaque;
+  if (gouraud) return draw_gouraud_shaded(target, state, u, coverage, vertices, indices);
+  if (coverage) return draw_pixel_shaded_with_coverage(target, state, u, vertices, indices);
+  draw_pixel_shaded(target, state, u, vertices, indices);
 }
 
 void SceneRasterizer::draw_blended(RenderTarget& target, const InstanceUniforms& base,

@@ -18,8 +18,10 @@
 // should be declared OBSCURA_RASTER_INLINE (members defined in the class body are inlined).
 #if defined(__GNUC__)
 #define OBSCURA_RASTER_INLINE [[gnu::always_inline]] inline
+#define OBSCURA_RASTER_OUTLINE [[gnu::noinline]]
 #else
 #define OBSCURA_RASTER_INLINE inline
+#define OBSCURA_RASTER_OUTLINE
 #endif
 
 namespace obscura::raster {
