@@ -258,14 +258,14 @@ void run(benchmark::State& state, const std::string& name, const std::string& sh
   const Rgb clear(0.05f, 0.05f, 0.08f);
   for (auto _ : state) {
     target.clear(clear);
-    draw(target, draw_state, program, w.vertices, w.indices);
+    draw_with_depth_func<DepthFunc::kLess>(target, draw_state, program, w.vertices, w.indices);
     benchmark::DoNotOptimize(target.color_group(0));
     benchmark::ClobberMemory();
   }
   if (const char* dir = std::getenv("OBSCURA_RASTER_BENCH_DUMP")) {
     RenderTarget frame(kWidth, kHeight, 1, /*aovs=*/true);
     frame.clear(clear);
-    draw(frame, draw_state, program, w.vertices, w.indices);
+    draw_with_depth_func<DepthFunc::kLess>(frame, draw_state, program, w.vertices, w.indices);
     dump_frame(frame, std::string(dir) + "/" + name + "_" + shader + "_" +
                           std::to_string(state.range(0)) + ".bin");
   }

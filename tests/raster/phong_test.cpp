@@ -69,7 +69,7 @@ TEST_P(PhongSphere, MatchesAnalyticReflection) {
   target.clear();
   DrawState state;
   state.cull = CullMode::kBack;
-  draw(target, state, program, vertices, indices);
+  draw_with_depth_func<DepthFunc::kLess>(target, state, program, vertices, indices);
 
   glm::dmat4 world_from_clip = glm::inverse(proj * view);
   int checked = 0;
