@@ -218,8 +218,10 @@ void draw_with(RenderTarget& target, const DrawState& state, const P& program,
   scratch.chunk_tiles.resize(chunks.size());
   for (size_t c = 0; c < chunks.size(); ++c) scratch.chunk_tiles[c] = chunks[c].tiles;
 
-  // 3. Tiles: the depth function is a template argument so the pixel loop has no switch.
+  // 3. Tiles: the depth function is a template argument (see draw()), so the pixel loop has no
+  // switch where it matters.
   FragmentSettings settings;
+  settings.depth_func = state.depth_func;
   settings.depth_write = state.depth_write;
   settings.blend = state.blend;
   settings.alpha_test = state.alpha_test;
@@ -241,21 +243,12 @@ template <Program P>
 void draw(RenderTarget& target, const DrawState& state, const P& program,
           std::span<const typename P::Vertex> vertices, std::span<const uint32_t> indices = {}) {
   detail::draw_with(target, state, program, vertices, indices, [&](const detail::TileJob<P>& job) {
-    switch (state.depth_func) {
-#define OBSCURA_RASTER_CASE(F)          \
-  case F:                               \
-    detail::rasterize_tiles<P, F>(job); \
-    break;
-      OBSCURA_RASTER_CASE(DepthFunc::kNever)
-      OBSCURA_RASTER_CASE(DepthFunc::kLess)
-      OBSCURA_RASTER_CASE(DepthFunc::kEqual)
-      OBSCURA_RASTER_CASE(DepthFunc::kLessEqual)
-      OBSCURA_RASTER_CASE(DepthFunc::kGreater)
-      OBSCURA_RASTER_CASE(DepthFunc::kNotEqual)
-      OBSCURA_RASTER_CASE(DepthFunc::kGreaterEqual)
-      OBSCURA_RASTER_CASE(DepthFunc::kAlways)
-#undef OBSCURA_RASTER_CASE
-    }
+    // LESS, what scenes draw with, gets its own loop (and the hierarchical depth test); the
+    // other seven share one that reads the function from the settings.
+    if (state.depth_func == DepthFunc::kLess)
+      detail::rasterize_tiles<P, DepthFunc::kLess>(job);
+    else
+      detail::rasterize_tiles<P, kDepthFuncFromSettings>(job);
   });
 }
 

@@ -73,7 +73,13 @@ struct Wireframe {
   bool operator==(const Wireframe&) const = default;
 };
 
+// Not a comparison of its own: the tile loop compiled with it as its depth function reads
+// FragmentSettings::depth_func per block instead. draw() uses it for the functions other than
+// LESS (the one scenes draw with), so the loop is compiled twice for a program, not eight times.
+inline constexpr DepthFunc kDepthFuncFromSettings = DepthFunc(-1);
+
 struct FragmentSettings {
+  DepthFunc depth_func = DepthFunc::kLess;  // read only by the kDepthFuncFromSettings loop
   bool depth_write = true;
   BlendMode blend = BlendMode::kReplace;
   bool alpha_test = false;  // discard fragments whose coverage is below alpha_cutoff
@@ -461,15 +467,47 @@ class TriangleRasterizer {
         if (live & (1u << i)) write_aovs(index + size_t(i), l1[i], l2[i], w[i]);
   }
 
-  OBSCURA_RASTER_INLINE static simd::Mask8 depth_mask(simd::Float8 z, simd::Float8 stored) {
-    if constexpr (F == DepthFunc::kNever) return simd::Mask8{};
-    if constexpr (F == DepthFunc::kLess) return z < stored;
-    if constexpr (F == DepthFunc::kEqual) return z == stored;
-    if constexpr (F == DepthFunc::kLessEqual) return z <= stored;
-    if constexpr (F == DepthFunc::kGreater) return z > stored;
-    if constexpr (F == DepthFunc::kNotEqual) return z != stored;
-    if constexpr (F == DepthFunc::kGreaterEqual) return z >= stored;
-    if constexpr (F == DepthFunc::kAlways) return simd::splat(int32_t(-1));
+  template <DepthFunc G>
+  OBSCURA_RASTER_INLINE static simd::Mask8 depth_mask_for(simd::Float8 z, simd::Float8 stored) {
+    if constexpr (G == DepthFunc::kNever) return simd::Mask8{};
+    if constexpr (G == DepthFunc::kLess) return z < stored;
+    if constexpr (G == DepthFunc::kEqual) return z == stored;
+    if constexpr (G == DepthFunc::kLessEqual) return z <= stored;
+    if constexpr (G == DepthFunc::kGreater) return z > stored;
+    if constexpr (G == DepthFunc::kNotEqual) return z != stored;
+    if constexpr (G == DepthFunc::kGreaterEqual) return z >= stored;
+    if constexpr (G == DepthFunc::kAlways) return simd::splat(int32_t(-1));
+  }
+
+  OBSCURA_RASTER_INLINE simd::Mask8 depth_mask(simd::Float8 z, simd::Float8 stored) const {
+    if constexpr (F != kDepthFuncFromSettings) return depth_mask_for<F>(z, stored);
+    switch (settings_.depth_func) {
+      case DepthFunc::kNever: return depth_mask_for<DepthFunc::kNever>(z, stored);
+      case DepthFunc::kLess: return depth_mask_for<DepthFunc::kLess>(z, stored);
+      case DepthFunc::kEqual: return depth_mask_for<DepthFunc::kEqual>(z, stored);
+      case DepthFunc::kLessEqual: return depth_mask_for<DepthFunc::kLessEqual>(z, stored);
+      case DepthFunc::kGreater: return depth_mask_for<DepthFunc::kGreater>(z, stored);
+      case DepthFunc::kNotEqual: return depth_mask_for<DepthFunc::kNotEqual>(z, stored);
+      case DepthFunc::kGreaterEqual: return depth_mask_for<DepthFunc::kGreaterEqual>(z, stored);
+      case DepthFunc::kAlways: break;
+    }
+    return depth_mask_for<DepthFunc::kAlways>(z, stored);
+  }
+
+  // The same for one sample.
+  OBSCURA_RASTER_INLINE bool sample_passes_depth(float z, float stored) const {
+    if constexpr (F != kDepthFuncFromSettings) return depth_passes<F>(z, stored);
+    switch (settings_.depth_func) {
+      case DepthFunc::kNever: return false;
+      case DepthFunc::kLess: return depth_passes<DepthFunc::kLess>(z, stored);
+      case DepthFunc::kEqual: return depth_passes<DepthFunc::kEqual>(z, stored);
+      case DepthFunc::kLessEqual: return depth_passes<DepthFunc::kLessEqual>(z, stored);
+      case DepthFunc::kGreater: return depth_passes<DepthFunc::kGreater>(z, stored);
+      case DepthFunc::kNotEqual: return depth_passes<DepthFunc::kNotEqual>(z, stored);
+      case DepthFunc::kGreaterEqual: return depth_passes<DepthFunc::kGreaterEqual>(z, stored);
+      case DepthFunc::kAlways: break;
+    }
+    return true;
   }
 
   // The fragment shader on a run of kBlock pixels (weights l1, l2 per lane), colours out as
@@ -535,7 +573,7 @@ class TriangleRasterizer {
                     sy = float(dy) + offsets_[s].y / float(kSubpixelScale);
         float z = std::clamp(p_.z0 + p_.zx * sx + p_.zy * sy, 0.f, 1.f);
         size_t index = target_.sample_index(x, row, s);
-        if (!depth_passes<F>(z, target_.depth()[index])) continue;
+        if (!sample_passes_depth(z, target_.depth()[index])) continue;
         // The alpha test per sample, so that cut-outs get anti-aliased edges.
         if (CoverageProgram<P> && settings_.alpha_test && discarded(coverage_at(sx, sy))) continue;
         if (!shaded) {
