@@ -482,14 +482,22 @@ class TriangleRasterizer {
   OBSCURA_RASTER_INLINE simd::Mask8 depth_mask(simd::Float8 z, simd::Float8 stored) const {
     if constexpr (F != kDepthFuncFromSettings) return depth_mask_for<F>(z, stored);
     switch (settings_.depth_func) {
-      case DepthFunc::kNever: return depth_mask_for<DepthFunc::kNever>(z, stored);
-      case DepthFunc::kLess: return depth_mask_for<DepthFunc::kLess>(z, stored);
-      case DepthFunc::kEqual: return depth_mask_for<DepthFunc::kEqual>(z, stored);
-      case DepthFunc::kLessEqual: return depth_mask_for<DepthFunc::kLessEqual>(z, stored);
-      case DepthFunc::kGreater: return depth_mask_for<DepthFunc::kGreater>(z, stored);
-      case DepthFunc::kNotEqual: return depth_mask_for<DepthFunc::kNotEqual>(z, stored);
-      case DepthFunc::kGreaterEqual: return depth_mask_for<DepthFunc::kGreaterEqual>(z, stored);
-      case DepthFunc::kAlways: break;
+      case DepthFunc::kNever:
+        return depth_mask_for<DepthFunc::kNever>(z, stored);
+      case DepthFunc::kLess:
+        return depth_mask_for<DepthFunc::kLess>(z, stored);
+      case DepthFunc::kEqual:
+        return depth_mask_for<DepthFunc::kEqual>(z, stored);
+      case DepthFunc::kLessEqual:
+        return depth_mask_for<DepthFunc::kLessEqual>(z, stored);
+      case DepthFunc::kGreater:
+        return depth_mask_for<DepthFunc::kGreater>(z, stored);
+      case DepthFunc::kNotEqual:
+        return depth_mask_for<DepthFunc::kNotEqual>(z, stored);
+      case DepthFunc::kGreaterEqual:
+        return depth_mask_for<DepthFunc::kGreaterEqual>(z, stored);
+      case DepthFunc::kAlways:
+        break;
     }
     return depth_mask_for<DepthFunc::kAlways>(z, stored);
   }
@@ -498,14 +506,22 @@ class TriangleRasterizer {
   OBSCURA_RASTER_INLINE bool sample_passes_depth(float z, float stored) const {
     if constexpr (F != kDepthFuncFromSettings) return depth_passes<F>(z, stored);
     switch (settings_.depth_func) {
-      case DepthFunc::kNever: return false;
-      case DepthFunc::kLess: return depth_passes<DepthFunc::kLess>(z, stored);
-      case DepthFunc::kEqual: return depth_passes<DepthFunc::kEqual>(z, stored);
-      case DepthFunc::kLessEqual: return depth_passes<DepthFunc::kLessEqual>(z, stored);
-      case DepthFunc::kGreater: return depth_passes<DepthFunc::kGreater>(z, stored);
-      case DepthFunc::kNotEqual: return depth_passes<DepthFunc::kNotEqual>(z, stored);
-      case DepthFunc::kGreaterEqual: return depth_passes<DepthFunc::kGreaterEqual>(z, stored);
-      case DepthFunc::kAlways: break;
+      case DepthFunc::kNever:
+        return false;
+      case DepthFunc::kLess:
+        return depth_passes<DepthFunc::kLess>(z, stored);
+      case DepthFunc::kEqual:
+        return depth_passes<DepthFunc::kEqual>(z, stored);
+      case DepthFunc::kLessEqual:
+        return depth_passes<DepthFunc::kLessEqual>(z, stored);
+      case DepthFunc::kGreater:
+        return depth_passes<DepthFunc::kGreater>(z, stored);
+      case DepthFunc::kNotEqual:
+        return depth_passes<DepthFunc::kNotEqual>(z, stored);
+      case DepthFunc::kGreaterEqual:
+        return depth_passes<DepthFunc::kGreaterEqual>(z, stored);
+      case DepthFunc::kAlways:
+        break;
     }
     return true;
   }
