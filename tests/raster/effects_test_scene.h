@@ -51,7 +51,7 @@ inline void draw_rects(const std::vector<Rect>& rects, const FrameParameters& fr
   }
   UnlitProgram program;
   program.scene.clip_from_world = Matrix4f(frame.clip_from_world());
-  draw(target, DrawState{}, program, vertices);
+  draw_with_depth_func<DepthFunc::kLess>(target, DrawState{}, program, vertices);
 }
 
 // The green channel of row `row`.
