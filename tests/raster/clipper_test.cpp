@@ -83,6 +83,7 @@ TEST(Clipper, TriangleCrossingNearPlaneIsCutNotDroppedOrInverted) {
         agree += (ids[y * kW + x] != 0) == hit;
         covered += hit;
       }
+    EXPECT_EQ(agree, kW * kH - ambiguous);
     EXPECT_GT(covered, 1000);
     EXPECT_LT(ambiguous, 20);
   }
