@@ -163,7 +163,8 @@ struct ScenePixelProgram {
 
   // Out of line: the material model is far larger than the tile loop around it, and inlined into
   // each of the loop's copies (scalar and 8-lane, baseline and AVX2) it took minutes to compile.
-  OBSCURA_RASTER_OUTLINE Rgb fragment(const Varyings& a, const Varyings& dx, const Varyings& dy, FragmentInfo info) const {
+  OBSCURA_RASTER_OUTLINE Rgb fragment(const Varyings& a, const Varyings& dx, const Varyings& dy,
+                                      FragmentInfo info) const {
     const SurfaceMaterial& m = *uniforms.material;
     Vector3f v = uniforms.view_direction(a.position);
     // The plane of the triangle from the derivatives of the position; facing the viewer.
