@@ -156,8 +156,8 @@ AovBuffers AovBuffers::from_images(const std::vector<AovImage>& images) {
       if (!(id_value >= -1.0f && id_value <= largest_exact_id) ||
           id_value != float(int32_t(id_value)))
         throw Error("AOV image 'id'", "expected a whole mesh index from -1 to 16777216 at pixel (" +
-                                          std::to_string(x) + ", " + std::to_string(y) +
-                                          "); got " + std::to_string(id_value));
+                                          std::to_string(x) + ", " + std::to_string(y) + "); got " +
+                                          std::to_string(id_value));
       buffers.set_pixel({x, y}, albedo ? albedo->rgb(x, y) : Rgb(),
                         {normal->at(x, y, 0), normal->at(x, y, 1), normal->at(x, y, 2)},
                         depth->at(x, y, 0), range->at(x, y, 0), int32_t(id_value));

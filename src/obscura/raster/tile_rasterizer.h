@@ -16,6 +16,7 @@
 #include <cstring>
 #include <iterator>
 #include <limits>
+#include <type_traits>
 #include <utility>
 
 #include "obscura/color/rgb.h"
@@ -479,51 +480,43 @@ class TriangleRasterizer {
     if constexpr (G == DepthFunc::kAlways) return simd::splat(int32_t(-1));
   }
 
-  OBSCURA_RASTER_INLINE simd::Mask8 depth_mask(simd::Float8 z, simd::Float8 stored) const {
-    if constexpr (F != kDepthFuncFromSettings) return depth_mask_for<F>(z, stored);
-    switch (settings_.depth_func) {
-      case DepthFunc::kNever:
-        return depth_mask_for<DepthFunc::kNever>(z, stored);
-      case DepthFunc::kLess:
-        return depth_mask_for<DepthFunc::kLess>(z, stored);
-      case DepthFunc::kEqual:
-        return depth_mask_for<DepthFunc::kEqual>(z, stored);
-      case DepthFunc::kLessEqual:
-        return depth_mask_for<DepthFunc::kLessEqual>(z, stored);
-      case DepthFunc::kGreater:
-        return depth_mask_for<DepthFunc::kGreater>(z, stored);
-      case DepthFunc::kNotEqual:
-        return depth_mask_for<DepthFunc::kNotEqual>(z, stored);
-      case DepthFunc::kGreaterEqual:
-        return depth_mask_for<DepthFunc::kGreaterEqual>(z, stored);
-      case DepthFunc::kAlways:
-        break;
+  // Calls `test` with std::integral_constant<DepthFunc, G>: G is the loop's depth function F, or
+  // in the kDepthFuncFromSettings loop the settings' function, chosen at each call.
+  template <class Test>
+  OBSCURA_RASTER_INLINE auto with_depth_func(Test&& test) const {
+    using C = DepthFunc;
+    if constexpr (F != kDepthFuncFromSettings) {
+      return test(std::integral_constant<C, F>{});
+    } else {
+      switch (settings_.depth_func) {
+        case C::kNever:
+          return test(std::integral_constant<C, C::kNever>{});
+        case C::kLess:
+          return test(std::integral_constant<C, C::kLess>{});
+        case C::kEqual:
+          return test(std::integral_constant<C, C::kEqual>{});
+        case C::kLessEqual:
+          return test(std::integral_constant<C, C::kLessEqual>{});
+        case C::kGreater:
+          return test(std::integral_constant<C, C::kGreater>{});
+        case C::kNotEqual:
+          return test(std::integral_constant<C, C::kNotEqual>{});
+        case C::kGreaterEqual:
+          return test(std::integral_constant<C, C::kGreaterEqual>{});
+        case C::kAlways:
+          break;
+      }
+      return test(std::integral_constant<C, C::kAlways>{});
     }
-    return depth_mask_for<DepthFunc::kAlways>(z, stored);
+  }
+
+  OBSCURA_RASTER_INLINE simd::Mask8 depth_mask(simd::Float8 z, simd::Float8 stored) const {
+    return with_depth_func([&](auto g) { return depth_mask_for<decltype(g)::value>(z, stored); });
   }
 
   // The same for one sample.
   OBSCURA_RASTER_INLINE bool sample_passes_depth(float z, float stored) const {
-    if constexpr (F != kDepthFuncFromSettings) return depth_passes<F>(z, stored);
-    switch (settings_.depth_func) {
-      case DepthFunc::kNever:
-        return false;
-      case DepthFunc::kLess:
-        return depth_passes<DepthFunc::kLess>(z, stored);
-      case DepthFunc::kEqual:
-        return depth_passes<DepthFunc::kEqual>(z, stored);
-      case DepthFunc::kLessEqual:
-        return depth_passes<DepthFunc::kLessEqual>(z, stored);
-      case DepthFunc::kGreater:
-        return depth_passes<DepthFunc::kGreater>(z, stored);
-      case DepthFunc::kNotEqual:
-        return depth_passes<DepthFunc::kNotEqual>(z, stored);
-      case DepthFunc::kGreaterEqual:
-        return depth_passes<DepthFunc::kGreaterEqual>(z, stored);
-      case DepthFunc::kAlways:
-        break;
-    }
-    return true;
+    return with_depth_func([&](auto g) { return depth_passes<decltype(g)::value>(z, stored); });
   }
 
   // The fragment shader on a run of kBlock pixels (weights l1, l2 per lane), colours out as
